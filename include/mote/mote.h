@@ -1,0 +1,481 @@
+/*
+ * mote.h - a small, fast and accurate 3D software renderer in C99.
+ *
+ * WHAT IT IS
+ *   mote draws triangle meshes (points, wireframe, flat, Gouraud, textured)
+ *   into a colour buffer and a depth buffer that you own. The core (this
+ *   header, src/core) is freestanding: no malloc, no stdio, no OS, no global
+ *   mutable state. It runs on a Cortex-M0+ and on a 64-core server and gives
+ *   the same bytes on both. Host conveniences (scene files, textures, PNG)
+ *   live in <mote/mote_io.h>.
+ *
+ * STEP BY STEP
+ *   1. Describe the target and initialise a device:
+ *        static uint8_t color[W * H * 4];
+ *        static uint32_t depth[W * H];
+ *        mote_device dev;
+ *        mote_device_desc desc = {0};
+ *        desc.width = W; desc.height = H;
+ *        desc.color = color; desc.depth = depth;    (zero = defaults elsewhere)
+ *        mote_result r = mote_device_init(&dev, &desc);
+ *   2. Each frame: mote_begin(&dev, &frame) with a camera and lights (clears),
+ *      mote_draw(&dev, &mesh, &draw) for every mesh, mote_end(&dev).
+ *   3. The image is in your colour buffer (or, in band mode, was handed to
+ *      your flush callback band by band).
+ *
+ * MEMORY
+ *   The caller supplies every byte: the colour buffer, the depth buffer and,
+ *   optionally, an arena for triangle binning. mote_device itself is a plain
+ *   struct you may place anywhere. Nothing is allocated.
+ *   - No arena: each mote_draw rasterises at once (full-frame mode) or is
+ *     recorded (band mode, at most MOTE_MAX_DRAWS draws per frame) and replayed
+ *     per band in mote_end. Mesh data must then stay valid until mote_end.
+ *   - With an arena (desc.arena, desc.arena_size): triangles are set up once,
+ *     binned into tiles, and rasterised in mote_end, tile by tile, through
+ *     desc.parallel_for when given (the host's OpenMP loop is
+ *     mote_parallel_openmp in <mote/mote_io.h>). When the arena fills up, what
+ *     is binned so far is rasterised and binning starts over: slower, never
+ *     wrong. mote_arena_bytes_per_triangle() helps to size it. Mesh data
+ *     and textures must stay valid until mote_end.
+ *   - Band mode (desc.band_height < desc.height): the colour and depth buffers
+ *     hold only band_height rows; mote_end produces the frame band by band and
+ *     calls desc.flush after each. Full frame and bands give the same bytes.
+ *
+ * ERRORS
+ *   Every function that can fail returns a mote_result; mote_result_string()
+ *   names it. Bad geometry never fails a frame: NaN/Inf vertices, indices out
+ *   of range and degenerate triangles are dropped and counted in
+ *   mote_stats. A device that failed to initialise draws nothing.
+ *
+ * CONVENTIONS
+ *   World:      left-handed, y up (Babylon.js), units are yours.
+ *   Camera:     look-at view; perspective with vertical fov (radians),
+ *               aspect = width / height, near/far planes; depth maps
+ *               near -> 0, far -> 1 (z/w, Direct3D style).
+ *   Screen:     origin at the top-left pixel's top-left corner, x right,
+ *               y down; pixel (x, y) has its centre at (x + 0.5, y + 0.5).
+ *   Snapping:   after clipping and the divide, x and y are rounded to the
+ *               nearest point of a grid of 1/2^subpixel_bits pixel (default
+ *               8, as Direct3D 10+; 4 is the minimum). Coverage, culling and
+ *               attribute setup all use the snapped positions.
+ *   Coverage:   a pixel is drawn when its centre is inside the triangle; a
+ *               centre exactly on an edge is inside only for a top edge
+ *               (exactly horizontal, interior below) or a left edge. Two
+ *               triangles sharing an edge never leave a gap and never both
+ *               draw a pixel. Triangles with zero snapped area draw nothing.
+ *   Winding:    front faces are those whose snapped screen-space vertices
+ *               run clockwise (as Babylon.js exports them); see
+ *               mote_draw_desc.front_ccw and .cull.
+ *   Clipping:   in homogeneous space against near, far and a guard band of
+ *               +-MOTE_GUARD_BAND pixels around the viewport, so that the
+ *               fixed-point raster never overflows. Points and lines are
+ *               clipped to the viewport and never write outside it.
+ *   Attributes: colour and UV are perspective-correct by default (Vulkan's
+ *               formula); affine and "exact every 2^k pixels" on request.
+ *               Depth is linear in screen space.
+ *   Lighting:   per light, n.l clamped at 0 (point light: l from the surface
+ *               point to the light; directional: l = -direction), times
+ *               light colour and intensity, summed with the ambient colour,
+ *               clamped to [0,1] per channel, times the material colour.
+ *               Flat: one value per triangle from its geometric normal at
+ *               its centroid; Gouraud: per vertex from vertex normals.
+ *   Colour:     shade S per channel in [0, 2^24] (2^24 = 1.0). Untextured
+ *               channel = (S*255 + 2^23) >> 24; textured = (T*S + 2^23) >> 24
+ *               where T is the texel channel (0..255).
+ *   Textures:   texel (i, j) covers u in [i/w, (i+1)/w); nearest picks
+ *               floor(u*w), bilinear weighs the four texels around
+ *               u*w - 0.5 (weights in 1/256); repeat, mirror or clamp per
+ *               axis. v = 0 addresses the top row unless
+ *               material.v_origin_bottom is set.
+ *   Depth test: a fragment passes when its depth is strictly less than the
+ *               stored one. Depth z/w in [0,1] is D = round(z * (2^24 - 1))
+ *               at the vertices, interpolated linearly in screen space;
+ *               32-bit buffers store D, 16-bit buffers D >> 8.
+ *
+ * LIMITS
+ *   width, height in [1, MOTE_MAX_SIZE]; vertex and index counts in
+ *   [0, 2^31); a triangle is clipped to the guard band so snapped
+ *   coordinates stay within +-2^(MOTE_GUARD_BITS + subpixel_bits); all edge
+ *   and plane arithmetic is 64-bit and cannot overflow inside those bounds.
+ *
+ * WHERE FLOAT IS USED
+ *   The vertex stage (transform, lighting, clipping, perspective divide) and
+ *   triangle setup (one reciprocal per triangle) use single-precision float.
+ *   Everything per pixel (edge walking, interpolation, texturing, depth,
+ *   pixel formats) is integer. On a core without an FPU (Cortex-M0+) the
+ *   float work is done by the compiler's soft-float routines; it is per
+ *   vertex and per triangle, never per pixel.
+ */
+#ifndef MOTE_H
+#define MOTE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdbool.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- compile-time options ---------------------------------------------- */
+
+/* Largest width and height of a device. */
+#ifndef MOTE_MAX_SIZE
+#define MOTE_MAX_SIZE 4096
+#endif
+
+/* Draws that band mode (or a full-frame device without arena) can record per
+ * frame. Each costs about 200 bytes inside mote_device. */
+#ifndef MOTE_MAX_DRAWS
+#define MOTE_MAX_DRAWS 64
+#endif
+
+/* Guard band: geometry is clipped to +-2^MOTE_GUARD_BITS pixels around the
+ * viewport centre before snapping. */
+#ifndef MOTE_GUARD_BITS
+#define MOTE_GUARD_BITS 13
+#endif
+
+/* Lights per frame. */
+#ifndef MOTE_MAX_LIGHTS
+#define MOTE_MAX_LIGHTS 4
+#endif
+
+/* ---- results ----------------------------------------------------------- */
+
+#define MOTE__RESULTS(X)                                                    \
+    X(MOTE_OK, "ok")                                                        \
+    X(MOTE_ERR_INVALID_ARGUMENT, "invalid argument")                        \
+    X(MOTE_ERR_OUT_OF_MEMORY, "out of memory")                              \
+    X(MOTE_ERR_UNSUPPORTED, "unsupported")                                  \
+    X(MOTE_ERR_IO, "input/output error")                                    \
+    X(MOTE_ERR_PARSE, "malformed input")                                    \
+    X(MOTE_ERR_RANGE, "value out of range")                                 \
+    X(MOTE_ERR_LIMIT, "resource limit exceeded")                            \
+    X(MOTE_ERR_TOO_MANY_DRAWS, "too many draws in one frame")               \
+    X(MOTE_ERR_STATE, "call out of order")
+
+typedef enum mote_result {
+#define MOTE__ENUM(name, text) name,
+    MOTE__RESULTS(MOTE__ENUM)
+#undef MOTE__ENUM
+    MOTE_RESULT_COUNT
+} mote_result;
+
+/* A short English name of a result ("out of memory"); never NULL. */
+const char *mote_result_string(mote_result result);
+
+/* ---- pixel formats ----------------------------------------------------- */
+
+typedef enum mote_format {
+    MOTE_FORMAT_DEFAULT = 0,      /* RGBA8888 */
+    MOTE_FORMAT_RGBA8888,         /* bytes R, G, B, A in memory */
+    MOTE_FORMAT_RGB565,           /* uint16_t, native byte order, R in bits 15..11 */
+    MOTE_FORMAT_RGB565_SWAPPED,   /* RGB565 with the two bytes swapped (SPI LCDs) */
+    MOTE_FORMAT_GREY8,            /* one byte, (77 R + 150 G + 29 B + 128) >> 8 */
+    MOTE_FORMAT_COUNT
+} mote_format;
+
+typedef enum mote_depth_format {
+    MOTE_DEPTH_FORMAT_DEFAULT = 0, /* 32-bit */
+    MOTE_DEPTH_FORMAT_32,          /* uint32_t, 24 bits used */
+    MOTE_DEPTH_FORMAT_16,          /* uint16_t */
+    MOTE_DEPTH_FORMAT_NONE,        /* no depth buffer: depth test off */
+    MOTE_DEPTH_FORMAT_COUNT
+} mote_depth_format;
+
+/* Bytes per pixel of a colour format (0 for an invalid one). */
+int mote_format_bytes(mote_format format);
+/* Bytes per pixel of a depth format (0 for NONE or invalid). */
+int mote_depth_format_bytes(mote_depth_format format);
+
+typedef struct mote_rgba { uint8_t r, g, b, a; } mote_rgba;
+
+/* ---- textures ---------------------------------------------------------- */
+
+/* An image the caller owns. Any size from 1x1 to 65536x65536 (power of two
+ * or not). stride 0 means width * bytes per pixel. */
+typedef struct mote_texture {
+    int width, height;
+    mote_format format;           /* RGBA8888, RGB565 or GREY8 */
+    int stride;                   /* bytes per row */
+    const void *pixels;
+} mote_texture;
+
+typedef enum mote_wrap {
+    MOTE_WRAP_DEFAULT = 0,        /* repeat */
+    MOTE_WRAP_REPEAT,
+    MOTE_WRAP_CLAMP,
+    MOTE_WRAP_MIRROR,
+    MOTE_WRAP_COUNT
+} mote_wrap;
+
+typedef enum mote_filter {
+    MOTE_FILTER_DEFAULT = 0,      /* nearest */
+    MOTE_FILTER_NEAREST,
+    MOTE_FILTER_BILINEAR,
+    MOTE_FILTER_COUNT
+} mote_filter;
+
+/* ---- meshes ------------------------------------------------------------ */
+
+typedef struct mote_vertex {
+    float position[3];
+    float normal[3];
+    float uv[2];
+} mote_vertex;
+
+typedef struct mote_material {
+    mote_rgba color;              /* diffuse colour; alpha unused; {0} = white when
+                                     color_set is false */
+    bool color_set;               /* false: white (so a zeroed material is white) */
+    const mote_texture *texture;  /* NULL: untextured */
+    mote_wrap wrap_u, wrap_v;
+    float u_scale, v_scale;       /* 0 = 1 */
+    float u_offset, v_offset;     /* uv' = uv * scale + offset */
+    bool v_origin_bottom;         /* true: v = 0 addresses the bottom row */
+} mote_material;
+
+/* A mesh: vertices, triangles (3 indices each) and a transform.
+ * world = parent's world * translate(position) * rotate * scale(scaling),
+ * where rotate is rotation_quaternion (x, y, z, w) when use_quaternion is
+ * set, else Euler angles applied z, then x, then y (Babylon's yaw-pitch-roll).
+ * scaling {0,0,0} means {1,1,1}. */
+typedef struct mote_mesh {
+    const mote_vertex *vertices;
+    uint32_t vertex_count;
+    const uint32_t *indices;
+    uint32_t index_count;         /* a multiple of 3; extra indices are ignored */
+    float position[3];
+    float rotation[3];
+    float rotation_quaternion[4];
+    bool use_quaternion;
+    float scaling[3];
+    const struct mote_mesh *parent;
+    mote_material material;
+    /* Bounding sphere in the mesh's own space, for whole-mesh frustum
+     * rejection; radius <= 0 means unknown (never rejected). See
+     * mote_mesh_update_bounds. */
+    float bounds_center[3];
+    float bounds_radius;
+} mote_mesh;
+
+/* Computes bounds_center/bounds_radius from the vertices (skips NaN/Inf). */
+void mote_mesh_update_bounds(mote_mesh *mesh);
+
+/* ---- camera and lights ------------------------------------------------- */
+
+typedef struct mote_camera {
+    float position[3];
+    float target[3];
+    float up[3];                  /* {0,0,0} = {0,1,0} */
+    float fov;                    /* vertical, radians; 0 = 0.8 */
+    float znear, zfar;            /* 0 = 0.1, 100 */
+} mote_camera;
+
+typedef enum mote_light_type {
+    MOTE_LIGHT_NONE = 0,
+    MOTE_LIGHT_POINT,             /* the tutorial's light */
+    MOTE_LIGHT_DIRECTIONAL,
+    MOTE_LIGHT_HEMISPHERIC,       /* weight 0.5 + 0.5 n.direction, color..ground */
+    MOTE_LIGHT_TYPE_COUNT
+} mote_light_type;
+
+typedef struct mote_light {
+    mote_light_type type;
+    float position[3];            /* point */
+    float direction[3];           /* directional: where light travels; hemispheric: up */
+    float color[3];               /* {0,0,0} = white */
+    float ground_color[3];        /* hemispheric only */
+    float intensity;              /* 0 = 1 */
+} mote_light;
+
+/* ---- frames and draws -------------------------------------------------- */
+
+typedef struct mote_frame_desc {
+    mote_camera camera;
+    mote_light lights[MOTE_MAX_LIGHTS];
+    int light_count;
+    float ambient[3];             /* added to every lit colour */
+    bool keep_color;              /* true: do not clear the colour buffer */
+    bool keep_depth;              /* true: do not clear the depth buffer */
+} mote_frame_desc;
+
+typedef enum mote_mode {
+    MOTE_MODE_DEFAULT = 0,        /* gouraud, textured when the material has a texture */
+    MOTE_MODE_POINTS,
+    MOTE_MODE_WIREFRAME,
+    MOTE_MODE_FLAT,
+    MOTE_MODE_GOURAUD,
+    MOTE_MODE_TEXTURED,           /* Gouraud x texture (material colour x texture when unlit) */
+    MOTE_MODE_COUNT
+} mote_mode;
+
+typedef enum mote_perspective {
+    MOTE_PERSPECTIVE_DEFAULT = 0, /* correct per pixel */
+    MOTE_PERSPECTIVE_CORRECT,
+    MOTE_PERSPECTIVE_AFFINE,      /* screen-linear: the retro "wobble" */
+    MOTE_PERSPECTIVE_SUBSPAN,     /* correct every 2^subspan_log2 pixels, linear between */
+    MOTE_PERSPECTIVE_COUNT
+} mote_perspective;
+
+typedef enum mote_cull {
+    MOTE_CULL_DEFAULT = 0,        /* back faces */
+    MOTE_CULL_BACK,
+    MOTE_CULL_NONE,
+    MOTE_CULL_FRONT,
+    MOTE_CULL_COUNT
+} mote_cull;
+
+/* Per-draw options; a zeroed struct (or NULL) gives the defaults. */
+typedef struct mote_draw_desc {
+    mote_mode mode;
+    mote_cull cull;
+    bool front_ccw;               /* counter-clockwise screen winding is front */
+    mote_perspective perspective;
+    int subspan_log2;             /* for SUBSPAN: 0 = 3 (8 pixels), at most 6 */
+    mote_filter filter;
+    bool no_depth_test;
+    bool no_depth_write;
+    bool unlit;                   /* colour = material (x texture), no lights */
+    mote_rgba point_color;        /* points and wireframe; {0} = material colour */
+} mote_draw_desc;
+
+/* ---- device ------------------------------------------------------------ */
+
+/* Called by a parallel executor: runs fn(task_arg, i) for i in [0, count),
+ * in any order and on any threads, and returns when all are done. */
+typedef void (*mote_task_fn)(void *task_arg, int index);
+typedef void (*mote_parallel_for_fn)(void *user, int count,
+                                     mote_task_fn fn, void *task_arg);
+
+/* Band mode: called after each band with the band's first row y0, its row
+ * count, and the colour buffer holding those rows (desc.color). */
+typedef void (*mote_flush_fn)(void *user, int y0, int rows,
+                              const void *color, int stride);
+
+/* Testing aid: called for every triangle that reaches the rasteriser, after
+ * clipping, snapping and culling, in submission order, with its snapped
+ * screen vertices (fixed point, subpixel_bits fraction), their depth z/w
+ * and clip w, in the original winding. */
+typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
+                                      const int32_t y[3], const float z[3],
+                                      const float w[3]);
+
+typedef struct mote_device_desc {
+    int width, height;
+    mote_format color_format;
+    void *color;                  /* band_height rows of stride bytes */
+    int color_stride;             /* 0 = width * bytes per pixel */
+    mote_depth_format depth_format;
+    void *depth;                  /* band_height * width depth values; may be NULL
+                                     only with MOTE_DEPTH_FORMAT_NONE */
+    mote_rgba clear_color;
+    float clear_depth;            /* 0 = 1.0 (far) */
+    int subpixel_bits;            /* 0 = 8; 4..8 */
+    int band_height;              /* 0 = height (full frame) */
+    mote_flush_fn flush;
+    void *flush_user;
+    void *arena;                  /* optional binning memory (full frame only) */
+    size_t arena_size;
+    int tile_size;                /* 0 = 64; a power of two from 8 to 256 */
+    mote_parallel_for_fn parallel_for; /* NULL = tiles in order on this thread */
+    void *parallel_user;
+    mote_triangle_hook_fn triangle_hook; /* NULL: none */
+    void *triangle_hook_user;
+} mote_device_desc;
+
+/* Counters of the last frame: what was drawn and what was skipped. */
+typedef struct mote_stats {
+    uint32_t draws, meshes_culled;        /* whole meshes rejected by bounds */
+    uint32_t triangles_in;                /* submitted */
+    uint32_t triangles_invalid;           /* bad index or NaN/Inf */
+    uint32_t triangles_clipped_away;      /* outside near/far/frustum */
+    uint32_t triangles_backface;          /* culled by winding */
+    uint32_t triangles_degenerate;        /* zero snapped area */
+    uint32_t triangles_drawn;             /* set up and rasterised */
+    uint32_t tiles_empty, tiles_drawn;    /* binned mode */
+    uint32_t arena_flushes;               /* binned mode: times the arena filled up */
+    uint64_t pixels_tested, pixels_written;
+} mote_stats;
+
+#include "mote_internal_types.h"  /* mote__draw, mote__bin: sizes only */
+
+typedef struct mote_device {
+    mote_device_desc desc;        /* with defaults filled in */
+    bool ready;                   /* init succeeded */
+    bool in_frame;
+    mote_frame_desc frame;
+    float view_proj[16];          /* column-major, as cglm's mat4 */
+    float view[16];
+    mote_stats stats;
+    /* band mode / no arena: recorded draws */
+    int draw_count;
+    mote__draw draws[MOTE_MAX_DRAWS];
+    mote__bin bin;                /* binned mode state */
+    int band_y0, band_rows;       /* region being drawn in direct mode */
+} mote_device;
+
+/* Checks desc, fills defaults and clears nothing yet. Returns
+ * MOTE_ERR_INVALID_ARGUMENT for a missing buffer, a size outside
+ * [1, MOTE_MAX_SIZE], an unknown format, a band mode without flush, or an
+ * arena in band mode. */
+mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc);
+
+/* The defaults mote_device_init fills in, for inspection. */
+mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc);
+
+/* Starts a frame: sets camera and lights, clears colour and depth (full-frame
+ * mode; band mode clears each band in mote_end). */
+mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame);
+
+/* Draws (or records, or bins) one mesh. draw may be NULL. */
+mote_result mote_draw(mote_device *dev, const mote_mesh *mesh,
+                      const mote_draw_desc *draw);
+
+/* Finishes the frame: rasterises binned tiles or renders the bands. */
+mote_result mote_end(mote_device *dev);
+
+/* Statistics of the current or last frame. */
+const mote_stats *mote_device_stats(const mote_device *dev);
+
+/* Arena bytes one binned triangle needs at most (setup record and bin entry). */
+size_t mote_arena_bytes_per_triangle(void);
+
+/* Bytes a band-mode device needs for its buffers (colour + depth), so that
+ * firmware can size static buffers: mote_band_bytes(320, 16, RGB565, 16). */
+size_t mote_band_bytes(int width, int band_height, mote_format color,
+                       mote_depth_format depth);
+
+/* Reads pixel (x, y) of a full-frame colour buffer as RGBA (alpha 255),
+ * whatever the format. Out-of-range coordinates give {0,0,0,0}. */
+mote_rgba mote_read_pixel(const mote_device *dev, int x, int y);
+
+/* Converts one row of pixels between formats (any to RGBA8888 or from it). */
+void mote_convert_row(const void *src, mote_format src_format,
+                      void *dst, mote_format dst_format, int count);
+
+/* ---- the vertex stage, exposed for tools and tests ------------------- */
+
+/* Column-major 4x4 matrices (cglm layout: m[col][row] as float[16]). */
+void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16]);
+void mote_camera_view_matrix(const mote_camera *camera, float view[16]);
+void mote_camera_projection_matrix(const mote_camera *camera, float aspect,
+                                   float proj[16]);
+
+/* Projects a world-space point to screen pixels (x, y) and depth z in [0,1]
+ * with the device's camera; returns false behind the near plane. */
+bool mote_project(const mote_device *dev, const float world_point[3],
+                  float *x, float *y, float *z);
+
+/* Deterministic sine and cosine (the same bits on every target), used for
+ * all rotations so that host and firmware agree. */
+float mote_sinf(float radians);
+float mote_cosf(float radians);
+float mote_tanf(float radians);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MOTE_H */

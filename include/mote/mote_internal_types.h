@@ -1,0 +1,26 @@
+/*
+ * mote_internal_types.h - the parts of mote's private state that live inside
+ * mote_device, declared here only so that the device can be a plain struct
+ * placed by the caller. Not API: fields may change in any release.
+ */
+#ifndef MOTE_INTERNAL_TYPES_H
+#define MOTE_INTERNAL_TYPES_H
+
+/* A recorded draw (band mode, or full frame without an arena). */
+typedef struct mote__draw {
+    const struct mote_mesh *mesh;
+    struct mote_draw_desc desc;
+} mote__draw;
+
+/* Binned-mode state: a bump allocator over the caller's arena. */
+typedef struct mote__bin {
+    unsigned char *base;
+    size_t size, used, top;       /* bump from the bottom; per-draw scratch from the top */
+    size_t batch_start;           /* arena offset where binned triangles begin */
+    int tiles_x, tiles_y, tile_shift;
+    void *tiles;                  /* mote__tile[tiles_x * tiles_y] */
+    unsigned triangles;           /* binned in this batch */
+    bool enabled;                 /* an arena large enough was given */
+} mote__bin;
+
+#endif

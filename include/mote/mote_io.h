@@ -1,0 +1,110 @@
+/*
+ * mote_io.h - host-side companions of the mote core: .babylon scene files
+ * (cJSON), textures (stb_image), PNG/PPM output (stb_image_write and a
+ * hand-written P6 writer), and the OpenMP tile loop.
+ *
+ * Everything here may allocate; every object it creates has a function that
+ * frees it, and every failing call frees what it allocated before returning.
+ * Messages name the file and the place: "monkey.babylon: meshes[0].indices[57]:
+ * 9999 is out of range (886 vertices)".
+ */
+#ifndef MOTE_IO_H
+#define MOTE_IO_H
+
+#include "mote.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Resource limits for loaders. mote_limits_default() gives the defaults;
+ * a zero field also means "default". */
+typedef struct mote_limits {
+    size_t max_file_bytes;        /* default 256 MiB */
+    uint32_t max_vertices;        /* per mesh, default 16 Mi */
+    uint32_t max_indices;         /* per mesh, default 48 Mi */
+    uint32_t max_meshes;          /* default 65536 */
+    int max_texture_width;        /* default 16384 */
+    int max_texture_height;       /* default 16384 */
+    size_t max_texture_bytes;     /* decoded, default 256 MiB */
+    int max_json_depth;           /* default 64 */
+    bool allow_any_texture_path;  /* false: only inside the scene's folder */
+    bool missing_texture_is_warning; /* true: render untextured, warn */
+} mote_limits;
+
+mote_limits mote_limits_default(void);
+
+/* ---- textures ---------------------------------------------------------- */
+
+/* Loads PNG, JPEG, BMP, TGA, ... into an RGBA8888 texture (its real size).
+ * Dimensions are checked against the limits before decoding. */
+mote_result mote_texture_load(const char *path, const mote_limits *limits,
+                              mote_texture *out, char *message, size_t message_size);
+mote_result mote_texture_load_memory(const void *data, size_t size,
+                                     const mote_limits *limits, mote_texture *out,
+                                     char *message, size_t message_size);
+/* Frees pixels allocated by a loader and zeroes the struct. */
+void mote_texture_free(mote_texture *texture);
+
+/* ---- scenes ------------------------------------------------------------ */
+
+/* A loaded scene: meshes ready for mote_draw (one mesh per sub-mesh, sharing
+ * vertex arrays), their textures, the active camera and the lights. */
+typedef struct mote_scene {
+    mote_mesh *meshes;
+    int mesh_count;
+    mote_texture *textures;       /* meshes[i].material.texture points in here */
+    int texture_count;
+    mote_camera camera;           /* the scene's active camera, if has_camera */
+    bool has_camera;
+    mote_light lights[MOTE_MAX_LIGHTS];
+    int light_count;
+    float ambient[3];
+    mote_rgba clear_color;
+    float bounds_min[3], bounds_max[3]; /* world space, over all meshes */
+    char warning[256];            /* non-fatal notes (downgraded textures, ...) */
+    void *storage_;               /* private: owned allocations */
+} mote_scene;
+
+/* Loads a .babylon file, either layout: the legacy interleaved `vertices`
+ * (stride 6/8/10 by uvCount) or the current `positions`/`normals`/`uvs`.
+ * Textures resolve relative to the scene's folder. limits may be NULL. */
+mote_result mote_scene_load(const char *path, const mote_limits *limits,
+                            mote_scene *out, char *message, size_t message_size);
+/* The same from memory; base_dir resolves texture names (NULL: no textures
+ * are loaded, materials keep their colour); name is used in messages. */
+mote_result mote_scene_load_memory(const char *json, size_t size, const char *name,
+                                   const char *base_dir, const mote_limits *limits,
+                                   mote_scene *out, char *message, size_t message_size);
+void mote_scene_free(mote_scene *scene);
+
+/* Fills a frame (camera, lights, ambient) for the scene: its own camera when
+ * it has one, else a camera that frames the bounding box from the front-top
+ * right; with no lights, a point light above the camera. */
+void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
+
+/* ---- images ------------------------------------------------------------ */
+
+/* Writes the device's full-frame colour buffer, any format, as PNG or binary
+ * PPM (P6). mote_write_image picks by the extension (.png, .ppm). */
+mote_result mote_write_png(const char *path, const mote_device *dev,
+                           char *message, size_t message_size);
+mote_result mote_write_ppm(const char *path, const mote_device *dev,
+                           char *message, size_t message_size);
+mote_result mote_write_image(const char *path, const mote_device *dev,
+                             char *message, size_t message_size);
+/* The same from a plain RGBA8888 buffer. */
+mote_result mote_write_rgba(const char *path, const uint8_t *rgba, int width,
+                            int height, int stride, char *message, size_t message_size);
+
+/* ---- host parallelism -------------------------------------------------- */
+
+/* A mote_parallel_for_fn running tiles on OpenMP threads; user points to an
+ * int thread count (NULL or <= 0: all). Without OpenMP it runs serially. */
+void mote_parallel_openmp(void *user, int count, mote_task_fn fn, void *task_arg);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MOTE_IO_H */

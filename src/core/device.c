@@ -1,0 +1,330 @@
+/*
+ * device.c - the public device API: results, formats, init, the frame
+ * (begin/draw/end) and the three ways of executing it: direct, binned and
+ * band by band.
+ */
+#include "internal.h"
+
+const char *mote_result_string(mote_result result)
+{
+    static const char *const names[] = {
+#define MOTE__NAME(name, text) text,
+        MOTE__RESULTS(MOTE__NAME)
+#undef MOTE__NAME
+    };
+    if ((int)result < 0 || result >= MOTE_RESULT_COUNT)
+        return "unknown result";
+    return names[result];
+}
+
+int mote_format_bytes(mote_format format)
+{
+    switch (format) {
+    case MOTE_FORMAT_DEFAULT:
+    case MOTE_FORMAT_RGBA8888: return 4;
+    case MOTE_FORMAT_RGB565:
+    case MOTE_FORMAT_RGB565_SWAPPED: return 2;
+    case MOTE_FORMAT_GREY8: return 1;
+    default: return 0;
+    }
+}
+
+int mote_depth_format_bytes(mote_depth_format format)
+{
+    switch (format) {
+    case MOTE_DEPTH_FORMAT_DEFAULT:
+    case MOTE_DEPTH_FORMAT_32: return 4;
+    case MOTE_DEPTH_FORMAT_16: return 2;
+    default: return 0;
+    }
+}
+
+size_t mote_band_bytes(int width, int band_height, mote_format color, mote_depth_format depth)
+{
+    if (width <= 0 || band_height <= 0)
+        return 0;
+    return (size_t)width * (size_t)band_height
+         * (size_t)(mote_format_bytes(color) + mote_depth_format_bytes(depth));
+}
+
+mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc)
+{
+    mote_device_desc d = *desc;
+    if (d.color_format == MOTE_FORMAT_DEFAULT)
+        d.color_format = MOTE_FORMAT_RGBA8888;
+    if (d.depth_format == MOTE_DEPTH_FORMAT_DEFAULT)
+        d.depth_format = MOTE_DEPTH_FORMAT_32;
+    if (d.color_stride == 0)
+        d.color_stride = d.width * mote_format_bytes(d.color_format);
+    if (d.clear_depth <= 0.0f || d.clear_depth > 1.0f)
+        d.clear_depth = 1.0f;
+    if (d.subpixel_bits == 0)
+        d.subpixel_bits = 8;
+    if (d.band_height == 0 || d.band_height > d.height)
+        d.band_height = d.height;
+    if (d.tile_size == 0)
+        d.tile_size = 64;
+    return d;
+}
+
+mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
+{
+    if (!dev)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    memset(dev, 0, sizeof *dev);
+    if (!desc)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    mote_device_desc d = mote_device_desc_defaults(desc);
+    if (d.width < 1 || d.height < 1 || d.width > MOTE_MAX_SIZE || d.height > MOTE_MAX_SIZE)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (d.color_format <= MOTE_FORMAT_DEFAULT || d.color_format >= MOTE_FORMAT_COUNT || !d.color)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (d.depth_format <= MOTE_DEPTH_FORMAT_DEFAULT || d.depth_format >= MOTE_DEPTH_FORMAT_COUNT)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (d.depth_format != MOTE_DEPTH_FORMAT_NONE && !d.depth)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (d.color_stride < d.width * mote_format_bytes(d.color_format))
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (d.subpixel_bits < 4 || d.subpixel_bits > 8 || d.band_height < 1)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (d.band_height < d.height && (!d.flush || d.arena))
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (d.tile_size < 8 || d.tile_size > 256 || (d.tile_size & (d.tile_size - 1)))
+        return MOTE_ERR_INVALID_ARGUMENT;
+    dev->desc = d;
+    if (d.arena) {
+        mote__bin *b = &dev->bin;
+        b->base = (unsigned char *)d.arena;
+        b->size = d.arena_size;
+        while ((1 << b->tile_shift) < d.tile_size)
+            b->tile_shift++;
+        b->tiles_x = (d.width + d.tile_size - 1) / d.tile_size;
+        b->tiles_y = (d.height + d.tile_size - 1) / d.tile_size;
+        size_t tiles = (size_t)b->tiles_x * (size_t)b->tiles_y * 16u;
+        /* worth binning only with room for the tile table and some triangles */
+        b->enabled = d.arena_size >= tiles + 64 * mote_arena_bytes_per_triangle() + 4096;
+        if (((uintptr_t)d.arena & 7u) != 0)
+            return MOTE_ERR_INVALID_ARGUMENT;
+    }
+    mote__mat4_identity(dev->view_proj);
+    mote__mat4_identity(dev->view);
+    dev->ready = true;
+    return MOTE_OK;
+}
+
+const mote_stats *mote_device_stats(const mote_device *dev)
+{
+    return &dev->stats;
+}
+
+/* ---- targets and clearing ---------------------------------------------- */
+
+void mote__full_target(const mote_device *dev, mote__target *tg, uint64_t *counter)
+{
+    tg->color = (uint8_t *)dev->desc.color;
+    tg->stride = dev->desc.color_stride;
+    tg->depth = dev->desc.depth;
+    tg->width = dev->desc.width;
+    tg->y0 = 0;
+    tg->format = dev->desc.color_format;
+    tg->depth_format = dev->desc.depth_format;
+    tg->pixels_written = counter;
+}
+
+void mote__clear_rows(const mote_device *dev, const mote__target *tg, int y0, int y1)
+{
+    const mote_device_desc *d = &dev->desc;
+    int w = d->width;
+    if (!dev->frame.keep_color) {
+        uint8_t *row0 = tg->color + (size_t)(y0 - tg->y0) * (size_t)tg->stride;
+        for (int x = 0; x < w; x++)
+            mote__write_rgb(row0, x, d->color_format, d->clear_color.r, d->clear_color.g, d->clear_color.b);
+        if (d->color_format == MOTE_FORMAT_RGBA8888)
+            for (int x = 0; x < w; x++)
+                row0[4 * x + 3] = d->clear_color.a;
+        size_t bytes = (size_t)w * (size_t)mote_format_bytes(d->color_format);
+        for (int y = y0 + 1; y < y1; y++)
+            memcpy(tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride, row0, bytes);
+    }
+    if (!dev->frame.keep_depth && d->depth_format != MOTE_DEPTH_FORMAT_NONE) {
+        uint32_t v = (uint32_t)((double)d->clear_depth * (double)MOTE__DEPTH_MAX + 0.5);
+        size_t n = (size_t)w * (size_t)(y1 - y0), off = (size_t)(y0 - tg->y0) * (size_t)w;
+        if (d->depth_format == MOTE_DEPTH_FORMAT_16) {
+            uint16_t *p = (uint16_t *)d->depth + off;
+            for (size_t i = 0; i < n; i++)
+                p[i] = (uint16_t)(v >> 8);
+        } else {
+            uint32_t *p = (uint32_t *)d->depth + off;
+            for (size_t i = 0; i < n; i++)
+                p[i] = v;
+        }
+    }
+}
+
+/* ---- the frame ----------------------------------------------------------- */
+
+static bool mote__band_mode(const mote_device *dev)
+{
+    return dev->desc.band_height < dev->desc.height;
+}
+
+static bool mote__binned(const mote_device *dev)
+{
+    return dev->bin.enabled && !mote__band_mode(dev);
+}
+
+mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
+{
+    if (!dev || !frame)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (!dev->ready)
+        return MOTE_ERR_STATE;
+    dev->frame = *frame;
+    if (dev->frame.light_count < 0)
+        dev->frame.light_count = 0;
+    if (dev->frame.light_count > MOTE_MAX_LIGHTS)
+        dev->frame.light_count = MOTE_MAX_LIGHTS;
+    float proj[16];
+    mote_camera_view_matrix(&frame->camera, dev->view);
+    mote_camera_projection_matrix(&frame->camera, (float)dev->desc.width / (float)dev->desc.height, proj);
+    mote__mat4_mul(proj, dev->view, dev->view_proj);
+    memset(&dev->stats, 0, sizeof dev->stats);
+    dev->draw_count = 0;
+    dev->in_frame = true;
+    if (!mote__band_mode(dev)) {
+        mote__target tg;
+        uint64_t count = 0;
+        mote__full_target(dev, &tg, &count);
+        mote__clear_rows(dev, &tg, 0, dev->desc.height);
+    }
+    if (mote__binned(dev))
+        mote__bin_reset(dev);
+    return MOTE_OK;
+}
+
+mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *draw)
+{
+    if (!dev || !mesh)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (!dev->ready || !dev->in_frame)
+        return MOTE_ERR_STATE;
+    if ((mesh->vertex_count > 0 && !mesh->vertices) || (mesh->index_count > 0 && !mesh->indices))
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (mote__band_mode(dev)) {
+        if (dev->draw_count >= MOTE_MAX_DRAWS)
+            return MOTE_ERR_TOO_MANY_DRAWS;
+        mote__draw *rec = &dev->draws[dev->draw_count++];
+        rec->mesh = mesh;
+        mote__resolve_draw_desc(draw, mesh, &rec->desc);
+        return MOTE_OK;
+    }
+    mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
+    mote__target tg;
+    uint64_t count = 0;
+    mote__full_target(dev, &tg, &count);
+    mote_draw_desc d;
+    mote__resolve_draw_desc(draw, mesh, &d);
+    bool triangles = d.mode != MOTE_MODE_POINTS && d.mode != MOTE_MODE_WIREFRAME;
+    mote_result r;
+    if (mote__binned(dev) && triangles) {
+        r = mote__process_draw(dev, mesh, &d, MOTE__SINK_BIN, NULL, all);
+    } else {
+        /* points and lines are drawn at once; earlier binned triangles first */
+        if (mote__binned(dev))
+            mote__bin_flush(dev);
+        r = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all);
+    }
+    dev->stats.pixels_written += count;
+    return r;
+}
+
+mote_result mote_end(mote_device *dev)
+{
+    if (!dev)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    if (!dev->ready || !dev->in_frame)
+        return MOTE_ERR_STATE;
+    dev->in_frame = false;
+    if (mote__binned(dev)) {
+        mote__bin_flush(dev);
+        return MOTE_OK;
+    }
+    if (!mote__band_mode(dev))
+        return MOTE_OK;
+    const mote_device_desc *d = &dev->desc;
+    mote_result result = MOTE_OK;
+    for (int y0 = 0; y0 < d->height; y0 += d->band_height) {
+        int y1 = MOTE__MIN(y0 + d->band_height, d->height);
+        mote__target tg;
+        uint64_t count = 0;
+        mote__full_target(dev, &tg, &count);
+        tg.y0 = y0;
+        mote__clear_rows(dev, &tg, y0, y1);
+        mote__rect band = {0, y0, d->width, y1};
+        for (int i = 0; i < dev->draw_count; i++) {
+            mote_result r = mote__process_draw(dev, dev->draws[i].mesh, &dev->draws[i].desc,
+                                               MOTE__SINK_RASTER, &tg, band);
+            if (r != MOTE_OK)
+                result = r;
+        }
+        dev->stats.pixels_written += count;
+        d->flush(d->flush_user, y0, y1 - y0, d->color, d->color_stride);
+    }
+    return result;
+}
+
+/* ---- pixels -------------------------------------------------------------- */
+
+static void mote__read_rgb(const uint8_t *row, int x, mote_format f, uint8_t out[4])
+{
+    switch (f) {
+    case MOTE_FORMAT_RGB565:
+    case MOTE_FORMAT_RGB565_SWAPPED: {
+        uint32_t v = ((const uint16_t *)(const void *)row)[x];
+        if (f == MOTE_FORMAT_RGB565_SWAPPED)
+            v = ((v & 0xff) << 8) | (v >> 8);
+        out[0] = (uint8_t)(((v >> 11) * 527 + 23) >> 6);
+        out[1] = (uint8_t)((((v >> 5) & 63) * 259 + 33) >> 6);
+        out[2] = (uint8_t)(((v & 31) * 527 + 23) >> 6);
+        out[3] = 255;
+        break;
+    }
+    case MOTE_FORMAT_GREY8:
+        out[0] = out[1] = out[2] = row[x];
+        out[3] = 255;
+        break;
+    default:
+        memcpy(out, row + 4 * x, 4);
+        break;
+    }
+}
+
+mote_rgba mote_read_pixel(const mote_device *dev, int x, int y)
+{
+    mote_rgba c = {0, 0, 0, 0};
+    if (!dev || !dev->ready || x < 0 || y < 0 || x >= dev->desc.width || y >= dev->desc.band_height)
+        return c;
+    const uint8_t *row = (const uint8_t *)dev->desc.color + (size_t)y * (size_t)dev->desc.color_stride;
+    uint8_t v[4];
+    mote__read_rgb(row, x, dev->desc.color_format, v);
+    c.r = v[0];
+    c.g = v[1];
+    c.b = v[2];
+    c.a = v[3];
+    return c;
+}
+
+void mote_convert_row(const void *src, mote_format src_format, void *dst, mote_format dst_format, int count)
+{
+    if (src_format == MOTE_FORMAT_DEFAULT)
+        src_format = MOTE_FORMAT_RGBA8888;
+    if (dst_format == MOTE_FORMAT_DEFAULT)
+        dst_format = MOTE_FORMAT_RGBA8888;
+    for (int x = 0; x < count; x++) {
+        uint8_t v[4];
+        mote__read_rgb((const uint8_t *)src, x, src_format, v);
+        mote__write_rgb((uint8_t *)dst, x, dst_format, v[0], v[1], v[2]);
+        if (dst_format == MOTE_FORMAT_RGBA8888)
+            ((uint8_t *)dst)[4 * x + 3] = v[3];
+    }
+}

@@ -1,0 +1,590 @@
+/*
+ * geometry.c - the vertex stage of one draw: transform, light, clip, snap,
+ * cull, and hand each surviving triangle to setup and then to the sink
+ * (rasterise now, or bin for mote_end).
+ */
+#include "internal.h"
+
+/* A transformed vertex as cached per draw. */
+typedef struct mote__tvert {
+    mote__cvert c;
+    float world[3];
+    float normal[3];              /* world-space, normalised */
+    uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
+    uint32_t index;
+} mote__tvert;
+
+#define MOTE__SMALL_CACHE 32      /* direct-mapped cache without an arena */
+
+typedef struct mote__ctx {
+    mote_device *dev;
+    const mote_mesh *mesh;
+    mote_draw_desc d;
+    float mvp[16], world[16], nrm[9];
+    float color[3];               /* material colour 0..1 */
+    float uscale, vscale, uoff, voff;
+    bool lit, flat;
+    mote__raster_state *rs;
+    mote__sink_kind sink;
+    const mote__target *tg;
+    mote__rect region;
+    float guard_x, guard_y;       /* guard band in NDC units */
+    mote__tvert *cache;
+    uint32_t cache_mask;          /* 0: full cache indexed by vertex */
+} mote__ctx;
+
+/* ---- lighting ------------------------------------------------------------ */
+
+static void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
+{
+    const mote_frame_desc *f = &cx->dev->frame;
+    float acc[3] = {f->ambient[0], f->ambient[1], f->ambient[2]};
+    for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
+        const mote_light *l = &f->lights[i];
+        float col[3] = {l->color[0], l->color[1], l->color[2]};
+        if (col[0] == 0.0f && col[1] == 0.0f && col[2] == 0.0f)
+            col[0] = col[1] = col[2] = 1.0f;
+        float k = l->intensity != 0.0f ? l->intensity : 1.0f;
+        float L[3];
+        if (l->type == MOTE_LIGHT_POINT) {
+            L[0] = l->position[0] - p[0];
+            L[1] = l->position[1] - p[1];
+            L[2] = l->position[2] - p[2];
+        } else if (l->type == MOTE_LIGHT_DIRECTIONAL || l->type == MOTE_LIGHT_HEMISPHERIC) {
+            float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
+            L[0] = s * l->direction[0];
+            L[1] = s * l->direction[1];
+            L[2] = s * l->direction[2];
+        } else {
+            continue;
+        }
+        float len = mote__sqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+        float ndl = len > 0.0f ? (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) / len : 0.0f;
+        if (l->type == MOTE_LIGHT_HEMISPHERIC) {
+            float w = 0.5f + 0.5f * ndl;
+            for (int c = 0; c < 3; c++)
+                acc[c] += k * (col[c] * w + l->ground_color[c] * (1.0f - w));
+        } else if (ndl > 0.0f) {
+            for (int c = 0; c < 3; c++)
+                acc[c] += k * col[c] * ndl;
+        }
+    }
+    for (int c = 0; c < 3; c++) {
+        float v = acc[c];
+        v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* also maps NaN to 0 */
+        out[c] = v * cx->color[c];
+    }
+}
+
+static void mote__normalize(float v[3])
+{
+    float len = mote__sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (len > 0.0f) {
+        v[0] /= len;
+        v[1] /= len;
+        v[2] /= len;
+    }
+}
+
+/* ---- vertices ------------------------------------------------------------ */
+
+static const mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
+{
+    mote__tvert *tv = cx->cache_mask ? &cx->cache[index & cx->cache_mask] : &cx->cache[index];
+    if (tv->state != 0 && tv->index == index)
+        return tv;
+    const mote_vertex *in = &cx->mesh->vertices[index];
+    tv->index = index;
+    float out[4];
+    mote__mat4_point(cx->mvp, in->position, out);
+    tv->c.x = out[0];
+    tv->c.y = out[1];
+    tv->c.z = out[2];
+    tv->c.w = out[3];
+    tv->state = (mote__finite(out[0]) && mote__finite(out[1]) && mote__finite(out[2]) && mote__finite(out[3])) ? 1 : 2;
+    if (cx->lit) {
+        float wp[4];
+        mote__mat4_point(cx->world, in->position, wp);
+        for (int k = 0; k < 3; k++) {
+            tv->world[k] = wp[k];
+            tv->normal[k] = cx->nrm[0 * 3 + k] * in->normal[0] + cx->nrm[1 * 3 + k] * in->normal[1]
+                          + cx->nrm[2 * 3 + k] * in->normal[2];
+        }
+        mote__normalize(tv->normal);
+        if (!cx->flat)
+            mote__light(cx, tv->world, tv->normal, tv->c.s);
+    } else {
+        for (int k = 0; k < 3; k++)
+            tv->c.s[k] = cx->color[k];
+    }
+    if (cx->rs->tex != MOTE__TEX_NONE) {
+        float u = in->uv[0] * cx->uscale + cx->uoff;
+        float v = in->uv[1] * cx->vscale + cx->voff;
+        if (cx->mesh->material.v_origin_bottom)
+            v = 1.0f - v;
+        tv->c.u = u * (float)cx->rs->tex_w;
+        tv->c.v = v * (float)cx->rs->tex_h;
+        if (!mote__finite(tv->c.u) || !mote__finite(tv->c.v) || tv->c.u > 1e9f || tv->c.u < -1e9f
+            || tv->c.v > 1e9f || tv->c.v < -1e9f)
+            tv->state = 2;
+    } else {
+        tv->c.u = tv->c.v = 0.0f;
+    }
+    return tv;
+}
+
+/* ---- clipping ------------------------------------------------------------ */
+
+#define MOTE__CLIP_PLANES 6
+#define MOTE__MAX_POLY (3 + MOTE__CLIP_PLANES)
+
+/* Signed distance to plane p (inside >= 0). */
+static float mote__plane_dist(const mote__ctx *cx, const mote__cvert *v, int p)
+{
+    switch (p) {
+    case 0: return v->z;                          /* near: z >= 0 */
+    case 1: return v->w - v->z;                   /* far: z <= w */
+    case 2: return v->x + cx->guard_x * v->w;     /* guard band left */
+    case 3: return cx->guard_x * v->w - v->x;     /* right */
+    case 4: return v->y + cx->guard_y * v->w;     /* bottom */
+    default: return cx->guard_y * v->w - v->y;    /* top */
+    }
+}
+
+static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote__cvert *out)
+{
+    out->x = a->x + (b->x - a->x) * t;
+    out->y = a->y + (b->y - a->y) * t;
+    out->z = a->z + (b->z - a->z) * t;
+    out->w = a->w + (b->w - a->w) * t;
+    for (int k = 0; k < 3; k++)
+        out->s[k] = a->s[k] + (b->s[k] - a->s[k]) * t;
+    out->u = a->u + (b->u - a->u) * t;
+    out->v = a->v + (b->v - a->v) * t;
+}
+
+/* Sutherland-Hodgman in homogeneous space. orig[i] tells whether the edge
+ * from vertex i to i+1 is part of the original triangle (wireframe draws
+ * only those). The intersection is always computed from the inside vertex
+ * toward the outside one, so both triangles sharing an edge get the same
+ * point. Returns the vertex count (0 when nothing is left). */
+static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n, unsigned planes)
+{
+    mote__cvert tmp[MOTE__MAX_POLY];
+    bool torig[MOTE__MAX_POLY];
+    for (int p = 0; p < MOTE__CLIP_PLANES && n > 0; p++) {
+        if (!(planes & (1u << p)))
+            continue;
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            const mote__cvert *a = &poly[i], *b = &poly[(i + 1) % n];
+            float da = mote__plane_dist(cx, a, p), db = mote__plane_dist(cx, b, p);
+            bool ain = da >= 0.0f, bin = db >= 0.0f;
+            if (ain) {
+                tmp[m] = *a;
+                torig[m++] = orig[i];
+            }
+            if (ain != bin && m < MOTE__MAX_POLY) {
+                if (ain)
+                    mote__lerp(a, b, da / (da - db), &tmp[m]);
+                else
+                    mote__lerp(b, a, db / (db - da), &tmp[m]);
+                torig[m++] = ain ? false : orig[i];
+            }
+        }
+        n = m;
+        memcpy(poly, tmp, (size_t)n * sizeof *poly);
+        memcpy(orig, torig, (size_t)n * sizeof *orig);
+    }
+    return n;
+}
+
+/* Which planes a vertex is outside of (bits 0..5), and of the viewport
+ * proper (bits 8..11) for trivial rejection. */
+static unsigned mote__outcode(const mote__ctx *cx, const mote__cvert *v)
+{
+    unsigned c = 0;
+    for (int p = 0; p < MOTE__CLIP_PLANES; p++)
+        if (mote__plane_dist(cx, v, p) < 0.0f)
+            c |= 1u << p;
+    if (v->x > v->w) c |= 1u << 8;
+    if (v->x < -v->w) c |= 1u << 9;
+    if (v->y > v->w) c |= 1u << 10;
+    if (v->y < -v->w) c |= 1u << 11;
+    return c;
+}
+
+/* ---- snapping ------------------------------------------------------------ */
+
+/* floor(v + 0.5): nearest grid point, halves upward */
+static int32_t mote__round_half_up(double v)
+{
+    int64_t t = (int64_t)(v + 0.5);
+    if ((double)t > v + 0.5)
+        t--;
+    return (int32_t)t;
+}
+
+static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, int32_t *Y)
+{
+    if (!(v->w > 0.0f))
+        return false;
+    const mote_device *dev = cx->dev;
+    int F = dev->desc.subpixel_bits;
+    double hw = (double)dev->desc.width * (double)(1 << F) * 0.5;
+    double hh = (double)dev->desc.height * (double)(1 << F) * 0.5;
+    double nx = (double)(v->x / v->w), ny = (double)(v->y / v->w);
+    double sx = nx * hw + hw, sy = hh - ny * hh;
+    /* the guard band bounds these; the clamp only catches float rounding */
+    double lim = (double)((int64_t)1 << (MOTE_GUARD_BITS + 1 + F));
+    if (!(sx > -lim && sx < lim && sy > -lim && sy < lim))
+        return false;
+    *X = mote__round_half_up(sx);
+    *Y = mote__round_half_up(sy);
+    return true;
+}
+
+/* ---- triangles ----------------------------------------------------------- */
+
+static int64_t mote__area2(const int32_t X[3], const int32_t Y[3])
+{
+    return (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
+}
+
+/* true when a triangle of this signed screen area is culled */
+static bool mote__culled(const mote__ctx *cx, int64_t area2)
+{
+    bool clockwise = area2 > 0;   /* y grows downward */
+    bool front = cx->d.front_ccw ? !clockwise : clockwise;
+    if (cx->d.cull == MOTE_CULL_BACK)
+        return !front;
+    if (cx->d.cull == MOTE_CULL_FRONT)
+        return front;
+    return false;
+}
+
+static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], const mote__cvert *v[3])
+{
+    mote_device *dev = cx->dev;
+    if (dev->desc.triangle_hook) {
+        float z[3] = {v[0]->z / v[0]->w, v[1]->z / v[1]->w, v[2]->z / v[2]->w};
+        float w[3] = {v[0]->w, v[1]->w, v[2]->w};
+        dev->desc.triangle_hook(dev->desc.triangle_hook_user, X, Y, z, w);
+    }
+    mote__tri t;
+    if (!mote__setup(&t, cx->rs, X, Y, v, dev->desc.subpixel_bits, dev->desc.width, dev->desc.height)) {
+        dev->stats.triangles_clipped_away++;
+        return;
+    }
+    dev->stats.triangles_drawn++;
+    if (cx->sink == MOTE__SINK_RASTER) {
+        mote__raster_tri(&t, cx->tg, cx->region, dev->desc.subpixel_bits);
+    } else {
+        if (!mote__bin_triangle(dev, &t)) {
+            /* arena full: draw what is binned, then bin this one afresh */
+            mote__bin_flush(dev);
+            dev->stats.arena_flushes++;
+            mote__raster_state *rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
+            if (rs) {
+                *rs = *cx->rs;
+                cx->rs = rs;
+                t.rs = rs;
+            }
+            if (!rs || !mote__bin_triangle(dev, &t)) {
+                /* a single triangle does not fit: draw it directly */
+                mote__target tg;
+                uint64_t count = 0;
+                mote__full_target(dev, &tg, &count);
+                mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
+                mote__raster_tri(&t, &tg, all, dev->desc.subpixel_bits);
+                dev->stats.pixels_written += count;
+            }
+        }
+    }
+}
+
+static void mote__flat_shade(mote__ctx *cx, const mote__tvert *tv[3], float s[3])
+{
+    float e1[3], e2[3], n[3], c[3];
+    for (int k = 0; k < 3; k++) {
+        e1[k] = tv[1]->world[k] - tv[0]->world[k];
+        e2[k] = tv[2]->world[k] - tv[0]->world[k];
+        c[k] = (tv[0]->world[k] + tv[1]->world[k] + tv[2]->world[k]) / 3.0f;
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    /* orient like the vertex normals, which say where outside is */
+    float vn = 0.0f;
+    for (int k = 0; k < 3; k++)
+        vn += n[k] * (tv[0]->normal[k] + tv[1]->normal[k] + tv[2]->normal[k]);
+    if (vn < 0.0f)
+        for (int k = 0; k < 3; k++)
+            n[k] = -n[k];
+    mote__normalize(n);
+    mote__light(cx, c, n, s);
+}
+
+static void mote__triangle(mote__ctx *cx, uint32_t i0, uint32_t i1, uint32_t i2)
+{
+    mote_device *dev = cx->dev;
+    uint32_t nv = cx->mesh->vertex_count;
+    if (i0 >= nv || i1 >= nv || i2 >= nv) {
+        dev->stats.triangles_invalid++;
+        return;
+    }
+    const mote__tvert *tv[3] = {mote__vertex(cx, i0), NULL, NULL};
+    /* copy before the next lookup can evict it from a small cache */
+    mote__cvert poly[MOTE__MAX_POLY];
+    bool orig[MOTE__MAX_POLY] = {true, true, true};
+    mote__tvert keep[3];
+    keep[0] = *tv[0];
+    keep[1] = *mote__vertex(cx, i1);
+    keep[2] = *mote__vertex(cx, i2);
+    for (int k = 0; k < 3; k++)
+        tv[k] = &keep[k];
+    if (tv[0]->state != 1 || tv[1]->state != 1 || tv[2]->state != 1) {
+        dev->stats.triangles_invalid++;
+        return;
+    }
+    for (int k = 0; k < 3; k++)
+        poly[k] = tv[k]->c;
+    if (cx->flat) {
+        float s[3];
+        mote__flat_shade(cx, tv, s);
+        for (int k = 0; k < 3; k++)
+            memcpy(poly[k].s, s, sizeof s);
+    }
+    unsigned oc0 = mote__outcode(cx, &poly[0]), oc1 = mote__outcode(cx, &poly[1]), oc2 = mote__outcode(cx, &poly[2]);
+    if ((oc0 & oc1 & oc2) != 0) {     /* all outside one plane (or one viewport side) */
+        dev->stats.triangles_clipped_away++;
+        return;
+    }
+    int n = 3;
+    unsigned planes = (oc0 | oc1 | oc2) & 0x3fu;
+    if (planes)
+        n = mote__clip(cx, poly, orig, n, planes);
+    if (n < 3) {
+        dev->stats.triangles_clipped_away++;
+        return;
+    }
+    int32_t X[MOTE__MAX_POLY], Y[MOTE__MAX_POLY];
+    for (int k = 0; k < n; k++) {
+        if (!mote__snap(cx, &poly[k], &X[k], &Y[k])) {
+            dev->stats.triangles_invalid++;
+            return;
+        }
+    }
+
+    if (cx->d.mode == MOTE_MODE_WIREFRAME) {
+        int64_t area = 0;
+        for (int k = 0; k < n; k++) {
+            int j = (k + 1) % n;
+            area += (int64_t)X[k] * Y[j] - (int64_t)X[j] * Y[k];
+        }
+        if (area != 0 && mote__culled(cx, area)) {
+            dev->stats.triangles_backface++;
+            return;
+        }
+        mote_rgba col = cx->d.point_color;
+        int F = dev->desc.subpixel_bits;
+        dev->stats.triangles_drawn++;
+        for (int k = 0; k < n; k++) {
+            if (!orig[k])
+                continue;
+            int j = (k + 1) % n;
+            mote__draw_line(cx->tg, cx->region, X[k] >> F, Y[k] >> F, X[j] >> F, Y[j] >> F, col);
+        }
+        return;
+    }
+
+    for (int k = 1; k + 1 < n; k++) {
+        int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
+        int64_t area = mote__area2(tx, ty);
+        if (area == 0) {
+            dev->stats.triangles_degenerate++;
+            continue;
+        }
+        if (mote__culled(cx, area)) {
+            dev->stats.triangles_backface++;
+            continue;
+        }
+        const mote__cvert *vv[3] = {&poly[0], &poly[k], &poly[k + 1]};
+        mote__emit(cx, tx, ty, vv);
+    }
+}
+
+/* ---- the draw -------------------------------------------------------------- */
+
+void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh, mote_draw_desc *out)
+{
+    if (in)
+        *out = *in;
+    else
+        memset(out, 0, sizeof *out);
+    if (out->mode <= MOTE_MODE_DEFAULT || out->mode >= MOTE_MODE_COUNT)
+        out->mode = MOTE_MODE_TEXTURED;
+    if (out->cull <= MOTE_CULL_DEFAULT || out->cull >= MOTE_CULL_COUNT)
+        out->cull = MOTE_CULL_BACK;
+    if (out->perspective <= MOTE_PERSPECTIVE_DEFAULT || out->perspective >= MOTE_PERSPECTIVE_COUNT)
+        out->perspective = MOTE_PERSPECTIVE_CORRECT;
+    if (out->subspan_log2 <= 0)
+        out->subspan_log2 = 3;
+    if (out->subspan_log2 > 6)
+        out->subspan_log2 = 6;
+    if (out->filter <= MOTE_FILTER_DEFAULT || out->filter >= MOTE_FILTER_COUNT)
+        out->filter = MOTE_FILTER_NEAREST;
+    if (out->point_color.r == 0 && out->point_color.g == 0 && out->point_color.b == 0
+        && out->point_color.a == 0) {
+        if (mesh->material.color_set)
+            out->point_color = mesh->material.color;
+        else
+            out->point_color.r = out->point_color.g = out->point_color.b = 255;
+        out->point_color.a = 255;
+    }
+}
+
+static bool mote__texture_ok(const mote_texture *t)
+{
+    return t && t->pixels && t->width > 0 && t->height > 0 && t->width <= 65536 && t->height <= 65536
+        && (t->format == MOTE_FORMAT_RGBA8888 || t->format == MOTE_FORMAT_RGB565
+            || t->format == MOTE_FORMAT_GREY8);
+}
+
+/* Whole-mesh rejection: the bounding sphere against the view frustum. */
+static bool mote__mesh_outside(const mote__ctx *cx)
+{
+    const mote_mesh *m = cx->mesh;
+    if (!(m->bounds_radius > 0.0f))
+        return false;
+    float c[4];
+    mote__mat4_point(cx->mvp, m->bounds_center, c);
+    /* radius in clip space: scale by the largest column norm of mvp's 3x3,
+     * which bounds how far any point of the sphere can move in x, y, z, w */
+    float smax = 0.0f;
+    for (int col = 0; col < 3; col++) {
+        float s = 0.0f;
+        for (int row = 0; row < 4; row++)
+            s += cx->mvp[col * 4 + row] * cx->mvp[col * 4 + row];
+        smax = s > smax ? s : smax;
+    }
+    float r = m->bounds_radius * mote__sqrtf(smax) * 1.7320508f; /* sqrt(3) for the 3 columns */
+    if (!mote__finite(r) || !mote__finite(c[3]))
+        return false;
+    /* outside one plane by more than r * |plane normal| (<= 2 for x+w etc.) */
+    float r2 = 2.0f * r;
+    return c[0] - c[3] > r2 || -c[0] - c[3] > r2 || c[1] - c[3] > r2 || -c[1] - c[3] > r2
+        || -c[2] > r || c[2] - c[3] > r2;
+}
+
+mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
+                               mote__sink_kind sink, const mote__target *tg, mote__rect region)
+{
+    mote__ctx cx;
+    memset(&cx, 0, sizeof cx);
+    cx.dev = dev;
+    cx.mesh = mesh;
+    mote__resolve_draw_desc(desc, mesh, &cx.d);
+    cx.sink = sink;
+    cx.tg = tg;
+    cx.region = region;
+    dev->stats.draws++;
+
+    mote_mesh_world_matrix(mesh, cx.world);
+    mote__mat4_mul(dev->view_proj, cx.world, cx.mvp);
+    mote__normal_matrix(cx.world, cx.nrm);
+    if (mote__mesh_outside(&cx)) {
+        dev->stats.meshes_culled++;
+        return MOTE_OK;
+    }
+    const mote_material *mat = &mesh->material;
+    for (int k = 0; k < 3; k++)
+        cx.color[k] = mat->color_set ? (float)(&mat->color.r)[k] / 255.0f : 1.0f;
+    cx.uscale = mat->u_scale != 0.0f ? mat->u_scale : 1.0f;
+    cx.vscale = mat->v_scale != 0.0f ? mat->v_scale : 1.0f;
+    cx.uoff = mat->u_offset;
+    cx.voff = mat->v_offset;
+    cx.guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);
+    cx.guard_y = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.height * 0.5f);
+
+    mote__raster_state rs_local;
+    memset(&rs_local, 0, sizeof rs_local);
+    mote_mode mode = cx.d.mode;
+    bool tri_mode = mode == MOTE_MODE_FLAT || mode == MOTE_MODE_GOURAUD || mode == MOTE_MODE_TEXTURED;
+    cx.lit = tri_mode && !cx.d.unlit && dev->frame.light_count + 1 > 0;
+    cx.flat = mode == MOTE_MODE_FLAT;
+    if (cx.d.unlit)
+        cx.lit = false;
+    rs_local.gouraud = cx.lit && !cx.flat;
+    rs_local.tex = MOTE__TEX_NONE;
+    if (mode == MOTE_MODE_TEXTURED && mote__texture_ok(mat->texture)) {
+        rs_local.tex = cx.d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR : MOTE__TEX_NEAREST;
+        rs_local.texture = mat->texture;
+        rs_local.tex_w = mat->texture->width;
+        rs_local.tex_h = mat->texture->height;
+        rs_local.wrap_u = (mat->wrap_u > MOTE_WRAP_DEFAULT && mat->wrap_u < MOTE_WRAP_COUNT) ? mat->wrap_u : MOTE_WRAP_REPEAT;
+        rs_local.wrap_v = (mat->wrap_v > MOTE_WRAP_DEFAULT && mat->wrap_v < MOTE_WRAP_COUNT) ? mat->wrap_v : MOTE_WRAP_REPEAT;
+        if (!cx.lit)
+            rs_local.gouraud = false;
+    }
+    /* features that change nothing are dropped before choosing the span */
+    bool varying = rs_local.gouraud || rs_local.tex != MOTE__TEX_NONE;
+    rs_local.persp = !varying ? MOTE__PERSP_CORRECT
+                   : cx.d.perspective == MOTE_PERSPECTIVE_AFFINE ? MOTE__PERSP_AFFINE
+                   : cx.d.perspective == MOTE_PERSPECTIVE_SUBSPAN ? MOTE__PERSP_SUBSPAN
+                   : MOTE__PERSP_CORRECT;
+    rs_local.subspan_log2 = cx.d.subspan_log2;
+    bool has_depth = dev->desc.depth_format != MOTE_DEPTH_FORMAT_NONE;
+    rs_local.depth_test = has_depth && !cx.d.no_depth_test;
+    rs_local.depth_write = has_depth && !cx.d.no_depth_write;
+    rs_local.span = mote__span_select(&rs_local, dev->desc.color_format, dev->desc.depth_format);
+
+    size_t cache_bytes = 0;
+    mote__tvert small_cache[MOTE__SMALL_CACHE];
+    if (sink == MOTE__SINK_BIN) {
+        mote__raster_state *rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
+        if (!rs) {
+            mote__bin_flush(dev);
+            rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
+        }
+        if (!rs)
+            return MOTE_ERR_OUT_OF_MEMORY;
+        *rs = rs_local;
+        cx.rs = rs;
+        cache_bytes = (size_t)mesh->vertex_count * sizeof(mote__tvert);
+        if (mesh->vertex_count > 0 && cache_bytes / sizeof(mote__tvert) == mesh->vertex_count)
+            cx.cache = (mote__tvert *)mote__bin_top_alloc(dev, cache_bytes);
+        if (cx.cache)
+            memset(cx.cache, 0, cache_bytes);
+        else
+            cache_bytes = 0;
+    } else {
+        cx.rs = &rs_local;
+    }
+    if (!cx.cache) {
+        memset(small_cache, 0, sizeof small_cache);
+        cx.cache = small_cache;
+        cx.cache_mask = MOTE__SMALL_CACHE - 1;
+    }
+
+    if (mode == MOTE_MODE_POINTS) {
+        int F = dev->desc.subpixel_bits;
+        for (uint32_t i = 0; i < mesh->vertex_count; i++) {
+            const mote__tvert *tv = mote__vertex(&cx, i);
+            int32_t X, Y;
+            if (tv->state != 1 || mote__outcode(&cx, &tv->c) != 0 || !mote__snap(&cx, &tv->c, &X, &Y))
+                continue;
+            mote__draw_pixel(tg, region, X >> F, Y >> F, cx.d.point_color);
+        }
+    } else {
+        uint32_t tris = mesh->index_count / 3;
+        if (!mesh->indices)
+            tris = 0;
+        dev->stats.triangles_in += tris;
+        for (uint32_t i = 0; i < tris; i++)
+            mote__triangle(&cx, mesh->indices[3 * i], mesh->indices[3 * i + 1], mesh->indices[3 * i + 2]);
+    }
+    if (cache_bytes)
+        mote__bin_top_release(dev, cache_bytes);
+    return MOTE_OK;
+}

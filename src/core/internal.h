@@ -1,0 +1,142 @@
+/*
+ * internal.h - shared declarations of the mote core's stages.
+ *
+ * The pipeline, by file:
+ *   vmath.c     matrices, deterministic trig (vertex stage, float)
+ *   geometry.c  per draw: transform, light, clip, snap, cull -> triangles
+ *   setup.c     per triangle: edge functions and attribute planes (integer)
+ *   raster.c    exact scanline edge walking over a region -> spans
+ *   span.c      the span loops, specialised from one inline body
+ *   bin.c       arena, tile binning, tile execution
+ *   line.c      points and wireframe (Bresenham, exact under clipping)
+ *   device.c    the public device API, formats, results
+ */
+#ifndef MOTE_CORE_INTERNAL_H
+#define MOTE_CORE_INTERNAL_H
+
+#include <mote/mote.h>
+#include <string.h>
+
+#define MOTE__MIN(a, b) ((a) < (b) ? (a) : (b))
+#define MOTE__MAX(a, b) ((a) > (b) ? (a) : (b))
+
+/* Shade and weights fixed-point units (see CONVENTIONS in mote.h). */
+#define MOTE__SHADE_ONE (1 << 24)
+#define MOTE__WEIGHT_BITS 20
+#define MOTE__DEPTH_MAX ((1u << 24) - 1u)
+#define MOTE__DEPTH_FRAC 16
+
+/* ---- vertex stage -------------------------------------------------------- */
+
+void mote__mat4_identity(float m[16]);
+void mote__mat4_mul(const float a[16], const float b[16], float out[16]);
+void mote__mat4_point(const float m[16], const float p[3], float out[4]);
+/* Inverse-transpose of the upper 3x3 (for normals), column-major 3x3. */
+void mote__normal_matrix(const float m[16], float out[9]);
+float mote__sqrtf(float x);
+bool mote__finite(float x);
+
+/* A vertex after the vertex stage: clip position and the attributes that
+ * clipping interpolates. */
+typedef struct mote__cvert {
+    float x, y, z, w;
+    float s[3];                   /* lit colour, 0..1 */
+    float u, v;                   /* texture coordinates in texels */
+} mote__cvert;
+
+/* ---- pixel stage --------------------------------------------------------- */
+
+typedef enum mote__tex_kind { MOTE__TEX_NONE, MOTE__TEX_NEAREST, MOTE__TEX_BILINEAR } mote__tex_kind;
+typedef enum mote__persp_kind { MOTE__PERSP_AFFINE, MOTE__PERSP_CORRECT, MOTE__PERSP_SUBSPAN } mote__persp_kind;
+
+struct mote__tri;
+struct mote__target;
+typedef void (*mote__span_fn)(const struct mote__tri *t, const struct mote__target *tg,
+                              int y, int x0, int x1);
+
+/* What the pixel stage needs of a draw; lives as long as its triangles. */
+typedef struct mote__raster_state {
+    mote__span_fn span;
+    const mote_texture *texture;
+    int tex_w, tex_h;
+    mote_wrap wrap_u, wrap_v;
+    mote__tex_kind tex;
+    mote__persp_kind persp;
+    int subspan_log2;
+    bool gouraud;                 /* false: one shade per triangle */
+    bool depth_test, depth_write;
+} mote__raster_state;
+
+/* A set-up triangle. Planes are evaluated at pixel centres relative to the
+ * origin pixel (ox, oy) so that values stay small; stepping is exact integer
+ * addition, so any region of the triangle gives the same pixels. */
+typedef struct mote__tri {
+    const mote__raster_state *rs;
+    int32_t X[3], Y[3];           /* snapped, original winding */
+    int16_t xmin, ymin, xmax, ymax; /* pixel bounding box, inclusive, clamped to the viewport */
+    int16_t ox, oy;
+    int8_t shift;                 /* brings Q under 2^31 */
+    /* perspective barycentrics: P1 = E1 q1, P2 = E2 q2, Q = sum Ei qi */
+    int64_t p1, p1dx, p1dy, p2, p2dx, p2dy, q, qdx, qdy;
+    int64_t z, zdx, zdy;          /* depth, 24.16 */
+    int32_t s0[3], ds1[3], ds2[3];/* shade at vertex 0 and differences */
+    int64_t u0, du1, du2, v0, dv1, dv2; /* texels, 16.16 */
+} mote__tri;
+
+typedef struct mote__target {
+    uint8_t *color;               /* row y is at color + (y - y0) * stride */
+    int stride;
+    void *depth;                  /* row y at depth + (y - y0) * width elements */
+    int width;
+    int y0;
+    mote_format format;
+    mote_depth_format depth_format;
+    uint64_t *pixels_written;     /* counter owned by the caller of the region */
+} mote__target;
+
+/* Region of the screen being drawn: [x0, x1) x [y0, y1). */
+typedef struct mote__rect { int x0, y0, x1, y1; } mote__rect;
+
+/* setup.c: fills t from snapped vertices and clip-space attributes; false
+ * when the triangle has no pixels. */
+bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
+                 const int32_t Y[3], const mote__cvert *v[3], int subpixel_bits,
+                 int width, int height);
+
+/* raster.c */
+void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,
+                      int subpixel_bits);
+
+/* span.c */
+mote__span_fn mote__span_select(const mote__raster_state *rs, mote_format format,
+                                mote_depth_format depth_format);
+void mote__span_generic(const mote__tri *t, const mote__target *tg, int y, int x0, int x1);
+void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b);
+
+/* line.c: points and lines in screen pixels, clipped to the region. */
+void mote__draw_line(const mote__target *tg, mote__rect r, int x0, int y0, int x1, int y1,
+                     mote_rgba color);
+void mote__draw_pixel(const mote__target *tg, mote__rect r, int x, int y, mote_rgba color);
+
+/* geometry.c: runs a draw through the vertex stage into a sink. */
+typedef enum mote__sink_kind { MOTE__SINK_RASTER, MOTE__SINK_BIN } mote__sink_kind;
+mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh,
+                               const mote_draw_desc *desc, mote__sink_kind sink,
+                               const mote__target *tg, mote__rect region);
+void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh,
+                             mote_draw_desc *out);
+
+/* bin.c */
+void mote__bin_reset(mote_device *dev);
+/* Reserves arena bytes for binned data; NULL when the arena is full. */
+void *mote__bin_alloc(mote_device *dev, size_t bytes);
+bool mote__bin_triangle(mote_device *dev, const mote__tri *t);
+void mote__bin_flush(mote_device *dev);
+void *mote__bin_top_alloc(mote_device *dev, size_t bytes);
+void mote__bin_top_release(mote_device *dev, size_t bytes);
+
+/* device.c */
+void mote__full_target(const mote_device *dev, mote__target *tg, uint64_t *counter);
+void mote__clear_rows(const mote_device *dev, const mote__target *tg, int y0, int y1);
+
+#endif

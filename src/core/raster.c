@@ -1,0 +1,111 @@
+/*
+ * raster.c - exact scanline edge walking.
+ *
+ * For the row of pixel centres at Y = y * 2^F + 2^(F-1), an edge from
+ * (xa, ya) to (xb, yb) with yb > ya crosses at X = xa + (Y - ya)(xb - xa)/dy.
+ * A pixel x is inside on the left edge when its centre is >= X (left edges
+ * own their pixels) and on the right edge when its centre is < X; both give
+ * the same first-pixel formula ceil((N - 2^(F-1) dy) / (dy 2^F)) with
+ * N = xa dy + (Y - ya) dx. Rows are those with ya <= Y < yc, which is the
+ * top-left rule for horizontal edges. The walker steps that ceiling exactly
+ * (quotient and remainder), and starts at any row with one division, so a
+ * region that begins halfway down a triangle draws exactly the same pixels.
+ */
+#include "internal.h"
+
+typedef struct mote__edge {
+    int64_t x;                    /* first pixel index at or right of the crossing */
+    int64_t err;                  /* x * den - num, in [0, den) */
+    int64_t den, qstep, rstep;
+} mote__edge;
+
+static int64_t mote__floor_div(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    if ((a % b != 0) && ((a < 0) != (b < 0)))
+        q--;
+    return q;
+}
+
+static void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
+                            int y, int F)
+{
+    const int64_t one = (int64_t)1 << F, half = one >> 1;
+    int64_t dy = (int64_t)yb - ya, dx = (int64_t)xb - xa;
+    int64_t Y = (int64_t)y * one + half;
+    int64_t num = (int64_t)xa * dy + (Y - ya) * dx - half * dy;
+    e->den = dy * one;
+    /* x = ceil(num / den) */
+    e->x = -mote__floor_div(-num, e->den);
+    e->err = e->x * e->den - num;
+    int64_t step = dx * one;
+    e->qstep = mote__floor_div(step, e->den);
+    e->rstep = step - e->qstep * e->den;
+}
+
+static void mote__edge_step(mote__edge *e)
+{
+    e->x += e->qstep;
+    e->err -= e->rstep;
+    if (e->err < 0) {
+        e->x++;
+        e->err += e->den;
+    }
+}
+
+static int mote__first_row(int32_t Yv, int F)
+{
+    /* smallest y with y * 2^F + 2^(F-1) >= Yv */
+    const int64_t one = (int64_t)1 << F;
+    return (int)-mote__floor_div(-((int64_t)Yv - (one >> 1)), one);
+}
+
+void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
+{
+    /* sort by y (then x, for a fixed order) */
+    int a = 0, b = 1, c = 2, tmp;
+#define MOTE__BEFORE(i, j) (t->Y[i] < t->Y[j] || (t->Y[i] == t->Y[j] && t->X[i] < t->X[j]))
+    if (MOTE__BEFORE(b, a)) { tmp = a; a = b; b = tmp; }
+    if (MOTE__BEFORE(c, b)) { tmp = b; b = c; c = tmp; }
+    if (MOTE__BEFORE(b, a)) { tmp = a; a = b; b = tmp; }
+#undef MOTE__BEFORE
+    const int32_t xa = t->X[a], ya = t->Y[a], xb = t->X[b], yb = t->Y[b], xc = t->X[c], yc = t->Y[c];
+    int64_t cross = (int64_t)(xb - xa) * (yc - ya) - (int64_t)(yb - ya) * (xc - xa);
+    if (cross == 0 || yc == ya)
+        return;
+    bool long_left = cross > 0;
+
+    int rx0 = MOTE__MAX(r.x0, t->xmin), rx1 = MOTE__MIN(r.x1, t->xmax + 1);
+    int ry0 = MOTE__MAX(r.y0, t->ymin), ry1 = MOTE__MIN(r.y1, t->ymax + 1);
+    if (rx0 >= rx1 || ry0 >= ry1)
+        return;
+    int ytop = MOTE__MAX(mote__first_row(ya, F), ry0);
+    int ymid = mote__first_row(yb, F);
+    int ybot = MOTE__MIN(mote__first_row(yc, F), ry1);
+    if (ytop >= ybot)
+        return;
+
+    mote__edge longe, shorte;
+    mote__edge_init(&longe, xa, ya, xc, yc, ytop, F);
+    int y = ytop;
+    for (int part = 0; part < 2; part++) {
+        int yend = part == 0 ? MOTE__MIN(ymid, ybot) : ybot;
+        if (y >= yend)
+            continue;
+        if (part == 0)
+            mote__edge_init(&shorte, xa, ya, xb, yb, y, F);
+        else
+            mote__edge_init(&shorte, xb, yb, xc, yc, y, F);
+        const mote__edge *le = long_left ? &longe : &shorte;
+        const mote__edge *re = long_left ? &shorte : &longe;
+        for (; y < yend; y++) {
+            int64_t x0 = le->x, x1 = re->x;
+            if (x0 < rx0) x0 = rx0;
+            if (x1 > rx1) x1 = rx1;
+            if (x0 < x1)
+                t->rs->span(t, tg, y, (int)x0, (int)x1);
+            mote__edge_step(&longe);
+            mote__edge_step(&shorte);
+        }
+    }
+}

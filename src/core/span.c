@@ -1,0 +1,280 @@
+/*
+ * span.c - the inner loop: one row of one triangle, [x0, x1) on row y.
+ *
+ * There is one body, mote__span_body(), with its features as parameters.
+ * Each specialised variant calls it with constants, so the compiler drops
+ * what a draw does not use (no UV work for an untextured draw, no depth
+ * reads without a depth test); mote__span_generic() passes the same
+ * features at run time and is both the fallback and the test oracle for
+ * every variant (tests/test_spans.c compares them pixel for pixel).
+ *
+ * Define MOTE_SPECIALISE_SPANS 0 to keep only the generic loop (small flash).
+ */
+#include "internal.h"
+
+#ifndef MOTE_SPECIALISE_SPANS
+#define MOTE_SPECIALISE_SPANS 1
+#endif
+
+#if defined(__GNUC__)
+#define MOTE__INLINE static inline __attribute__((always_inline))
+#else
+#define MOTE__INLINE static inline
+#endif
+
+/* Depth buffer selector inside the body. */
+enum { MOTE__D_NONE = 0, MOTE__D_16 = 1, MOTE__D_32 = 2 };
+
+void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)
+{
+    switch (format) {
+    case MOTE_FORMAT_RGB565:
+    case MOTE_FORMAT_RGB565_SWAPPED: {
+        uint32_t v = ((r * 31 + 127) / 255) << 11 | ((g * 63 + 127) / 255) << 5 | ((b * 31 + 127) / 255);
+        if (format == MOTE_FORMAT_RGB565_SWAPPED)
+            v = ((v & 0xff) << 8) | (v >> 8);
+        ((uint16_t *)(void *)row)[x] = (uint16_t)v;
+        break;
+    }
+    case MOTE_FORMAT_GREY8:
+        row[x] = (uint8_t)((77 * r + 150 * g + 29 * b + 128) >> 8);
+        break;
+    default:
+        row[4 * x + 0] = (uint8_t)r;
+        row[4 * x + 1] = (uint8_t)g;
+        row[4 * x + 2] = (uint8_t)b;
+        row[4 * x + 3] = 255;
+        break;
+    }
+}
+
+MOTE__INLINE int mote__wrap(int i, int n, mote_wrap mode)
+{
+    switch (mode) {
+    case MOTE_WRAP_CLAMP:
+        return i < 0 ? 0 : i >= n ? n - 1 : i;
+    case MOTE_WRAP_MIRROR: {
+        int m = i % (2 * n);
+        if (m < 0)
+            m += 2 * n;
+        return m < n ? m : 2 * n - 1 - m;
+    }
+    default:
+        if ((n & (n - 1)) == 0)
+            return i & (n - 1);
+        i %= n;
+        return i < 0 ? i + n : i;
+    }
+}
+
+MOTE__INLINE void mote__texel(const mote_texture *tx, int x, int y, uint32_t c[3])
+{
+    const uint8_t *row = (const uint8_t *)tx->pixels + (size_t)y * (size_t)tx->stride;
+    switch (tx->format) {
+    case MOTE_FORMAT_RGB565: {
+        uint32_t v = ((const uint16_t *)(const void *)row)[x];
+        c[0] = ((v >> 11) * 527 + 23) >> 6;
+        c[1] = (((v >> 5) & 63) * 259 + 33) >> 6;
+        c[2] = ((v & 31) * 527 + 23) >> 6;
+        break;
+    }
+    case MOTE_FORMAT_GREY8:
+        c[0] = c[1] = c[2] = row[x];
+        break;
+    default:
+        c[0] = row[4 * x];
+        c[1] = row[4 * x + 1];
+        c[2] = row[4 * x + 2];
+        break;
+    }
+}
+
+/* Samples the texture at (u, v) in 16.16 texels. */
+MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64_t u, int64_t v,
+                               uint32_t c[3])
+{
+    const mote_texture *tx = rs->texture;
+    if (!bilinear) {
+        int tu = mote__wrap((int)(u >> 16), rs->tex_w, rs->wrap_u);
+        int tv = mote__wrap((int)(v >> 16), rs->tex_h, rs->wrap_v);
+        mote__texel(tx, tu, tv, c);
+        return;
+    }
+    u -= 0x8000;
+    v -= 0x8000;
+    int iu = (int)(u >> 16), iv = (int)(v >> 16);
+    uint32_t fu = (uint32_t)(u >> 8) & 0xff, fv = (uint32_t)(v >> 8) & 0xff;
+    int u0 = mote__wrap(iu, rs->tex_w, rs->wrap_u), u1 = mote__wrap(iu + 1, rs->tex_w, rs->wrap_u);
+    int v0 = mote__wrap(iv, rs->tex_h, rs->wrap_v), v1 = mote__wrap(iv + 1, rs->tex_h, rs->wrap_v);
+    uint32_t a[3], b[3], d[3], e[3];
+    mote__texel(tx, u0, v0, a);
+    mote__texel(tx, u1, v0, b);
+    mote__texel(tx, u0, v1, d);
+    mote__texel(tx, u1, v1, e);
+    for (int k = 0; k < 3; k++)
+        c[k] = (a[k] * (256 - fu) * (256 - fv) + b[k] * fu * (256 - fv) + d[k] * (256 - fu) * fv
+                + e[k] * fu * fv + 32768) >> 16;
+}
+
+/* Perspective weights b1, b2 (2^20 = 1) from the stepped planes. */
+MOTE__INLINE void mote__weights(int64_t p1, int64_t p2, int64_t q, int shift, int64_t *b1, int64_t *b2)
+{
+    uint64_t q32 = (uint64_t)(q >> shift);
+    if (q32 == 0)
+        q32 = 1;
+    uint64_t r = ((uint64_t)1 << 62) / q32;
+    int64_t a = p1 >> shift, b = p2 >> shift;
+    *b1 = a <= 0 ? 0 : (int64_t)(((uint64_t)a * r) >> (62 - MOTE__WEIGHT_BITS));
+    *b2 = b <= 0 ? 0 : (int64_t)(((uint64_t)b * r) >> (62 - MOTE__WEIGHT_BITS));
+}
+
+MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, int y, int x0, int x1,
+                                  const int tex, const int gouraud, const int persp,
+                                  const int dsel, const int dwrite, const mote_format fmt)
+{
+    const mote__raster_state *rs = t->rs;
+    uint8_t *crow = tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride;
+    const int64_t dx0 = x0 - t->ox, dy0 = y - t->oy;
+    const bool weights = gouraud || tex;
+    int64_t z = t->z + t->zdx * dx0 + t->zdy * dy0;
+    int64_t p1 = 0, p2 = 0, q = 0;
+    if (weights) {
+        p1 = t->p1 + t->p1dx * dx0 + t->p1dy * dy0;
+        p2 = t->p2 + t->p2dx * dx0 + t->p2dy * dy0;
+        q = t->q + t->qdx * dx0 + t->qdy * dy0;
+    }
+    uint16_t *d16 = dsel == MOTE__D_16 ? (uint16_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
+    uint32_t *d32 = dsel == MOTE__D_32 ? (uint32_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
+    /* sub-span state: weights at the segment start and per-pixel steps, 2^12 finer */
+    int64_t sb1 = 0, sb2 = 0, sd1 = 0, sd2 = 0;
+    int seg_left = 0;
+    const int seg_len = 1 << rs->subspan_log2;
+    uint32_t written = 0;
+
+    for (int x = x0; x < x1; x++, z += t->zdx, p1 += t->p1dx, p2 += t->p2dx, q += t->qdx) {
+        uint32_t depth = 0;
+        if (dsel != MOTE__D_NONE) {
+            int64_t zz = z >> MOTE__DEPTH_FRAC;
+            depth = zz < 0 ? 0u : zz > (int64_t)MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : (uint32_t)zz;
+            if (dsel == MOTE__D_16)
+                depth >>= 8;
+            if (rs->depth_test) {
+                uint32_t stored = dsel == MOTE__D_16 ? d16[x] : d32[x];
+                if (depth >= stored)
+                    continue;
+            }
+        }
+        int64_t b1 = 0, b2 = 0;
+        if (weights) {
+            if (persp == MOTE__PERSP_SUBSPAN) {
+                if (seg_left == 0) {
+                    int n = MOTE__MIN(seg_len, x1 - 1 - x);
+                    int64_t e1, e2;
+                    mote__weights(p1, p2, q, t->shift, &b1, &b2);
+                    if (n > 0) {
+                        mote__weights(p1 + t->p1dx * n, p2 + t->p2dx * n, q + t->qdx * n, t->shift, &e1, &e2);
+                        sd1 = ((e1 - b1) << 12) / n;
+                        sd2 = ((e2 - b2) << 12) / n;
+                    }
+                    sb1 = b1 << 12;
+                    sb2 = b2 << 12;
+                    seg_left = n > 0 ? n : 1;
+                }
+                b1 = sb1 >> 12;
+                b2 = sb2 >> 12;
+                sb1 += sd1;
+                sb2 += sd2;
+                seg_left--;
+            } else {
+                mote__weights(p1, p2, q, t->shift, &b1, &b2);
+            }
+        }
+        uint32_t s[3];
+        for (int k = 0; k < 3; k++) {
+            int64_t v = t->s0[k];
+            if (gouraud)
+                v += (b1 * t->ds1[k] + b2 * t->ds2[k]) >> MOTE__WEIGHT_BITS;
+            s[k] = v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
+        }
+        uint32_t out[3];
+        if (tex) {
+            int64_t u = t->u0 + ((b1 * t->du1 + b2 * t->du2) >> MOTE__WEIGHT_BITS);
+            int64_t v = t->v0 + ((b1 * t->dv1 + b2 * t->dv2) >> MOTE__WEIGHT_BITS);
+            uint32_t c[3];
+            mote__sample(rs, tex == MOTE__TEX_BILINEAR, u, v, c);
+            for (int k = 0; k < 3; k++)
+                out[k] = (c[k] * s[k] + (1u << 23)) >> 24;
+        } else {
+            for (int k = 0; k < 3; k++)
+                out[k] = (s[k] * 255u + (1u << 23)) >> 24;
+        }
+        mote__write_rgb(crow, x, fmt, out[0], out[1], out[2]);
+        if (dsel != MOTE__D_NONE && dwrite) {
+            if (dsel == MOTE__D_16)
+                d16[x] = (uint16_t)depth;
+            else
+                d32[x] = depth;
+        }
+        written++;
+    }
+    *tg->pixels_written += written;
+}
+
+static int mote__dsel(mote_depth_format f)
+{
+    return f == MOTE_DEPTH_FORMAT_16 ? MOTE__D_16 : f == MOTE_DEPTH_FORMAT_32 ? MOTE__D_32 : MOTE__D_NONE;
+}
+
+void mote__span_generic(const mote__tri *t, const mote__target *tg, int y, int x0, int x1)
+{
+    const mote__raster_state *rs = t->rs;
+    int dsel = (rs->depth_test || rs->depth_write) ? mote__dsel(tg->depth_format) : MOTE__D_NONE;
+    mote__span_body(t, tg, y, x0, x1, rs->tex, rs->gouraud, rs->persp, dsel, rs->depth_write,
+                    tg->format);
+}
+
+#if MOTE_SPECIALISE_SPANS
+/* The specialised table: texture x shading x perspective x depth x format,
+ * with depth test and write both on (the common case). Anything else uses
+ * the generic loop. */
+#define MOTE__FORMATS(X, T, G, P, D) X(T, G, P, D, RGBA8888) X(T, G, P, D, RGB565)
+#define MOTE__DEPTHS(X, T, G, P) MOTE__FORMATS(X, T, G, P, 0) MOTE__FORMATS(X, T, G, P, 1) MOTE__FORMATS(X, T, G, P, 2)
+#define MOTE__PERSPS(X, T, G) MOTE__DEPTHS(X, T, G, 0) MOTE__DEPTHS(X, T, G, 1) MOTE__DEPTHS(X, T, G, 2)
+#define MOTE__SHADES(X, T) MOTE__PERSPS(X, T, 0) MOTE__PERSPS(X, T, 1)
+#define MOTE__ALL(X) MOTE__SHADES(X, 0) MOTE__SHADES(X, 1) MOTE__SHADES(X, 2)
+
+#define MOTE__DEFINE(T, G, P, D, F)                                                        \
+    static void mote__span_##T##G##P##D##_##F(const mote__tri *t, const mote__target *tg,  \
+                                              int y, int x0, int x1)                       \
+    {                                                                                      \
+        mote__span_body(t, tg, y, x0, x1, T, G, P, D, 1, MOTE_FORMAT_##F);                  \
+    }
+MOTE__ALL(MOTE__DEFINE)
+#undef MOTE__DEFINE
+
+#define MOTE__ENTRY(T, G, P, D, F) mote__span_##T##G##P##D##_##F,
+static const mote__span_fn mote__span_table[] = {MOTE__ALL(MOTE__ENTRY)};
+#undef MOTE__ENTRY
+typedef char mote__span_table_size_check[sizeof mote__span_table / sizeof mote__span_table[0] == 3 * 2 * 3 * 3 * 2 ? 1 : -1];
+#endif
+
+mote__span_fn mote__span_select(const mote__raster_state *rs, mote_format format,
+                                mote_depth_format depth_format)
+{
+#if MOTE_SPECIALISE_SPANS
+    int dsel = mote__dsel(depth_format);
+    bool depth_on = rs->depth_test && rs->depth_write;
+    bool depth_off = !rs->depth_test && !rs->depth_write;
+    int f = format == MOTE_FORMAT_RGBA8888 ? 0 : format == MOTE_FORMAT_RGB565 ? 1 : -1;
+    if (f >= 0 && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
+        int d = depth_on ? dsel : MOTE__D_NONE;
+        int idx = ((((int)rs->tex * 2 + (rs->gouraud ? 1 : 0)) * 3 + (int)rs->persp) * 3 + d) * 2 + f;
+        return mote__span_table[idx];
+    }
+#else
+    (void)rs;
+    (void)format;
+    (void)depth_format;
+#endif
+    return mote__span_generic;
+}

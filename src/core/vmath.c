@@ -1,0 +1,312 @@
+/*
+ * vmath.c - the vertex stage's arithmetic: matrices, camera, trig.
+ *
+ * Matrices are column-major float[16] (cglm's mat4 layout, m[col * 4 + row]).
+ * Everything is plain scalar float in a fixed operation order and the build
+ * disables fused multiply-add, so every target computes the same bits; that
+ * is also why sin/cos/tan are our own polynomials rather than libm's.
+ */
+#include "internal.h"
+
+#include <cglm/types.h>
+
+bool mote__finite(float x)
+{
+    return (x - x) == 0.0f;       /* false for NaN and +-Inf */
+}
+
+float mote__sqrtf(float x)
+{
+    /* Newton on an exponent-halved guess; correctly rounded enough for
+     * normalisation and identical on every target. */
+    if (!(x > 0.0f) || !mote__finite(x))
+        return x > 0.0f ? x : 0.0f;
+    union { float f; uint32_t u; } g;
+    g.f = x;
+    g.u = (g.u >> 1) + 0x1fc00000u;
+    float r = g.f;
+    for (int i = 0; i < 4; i++)
+        r = 0.5f * (r + x / r);
+    return r;
+}
+
+/* sin on [-pi/4, pi/4] and cos likewise, minimax-style Taylor terms. */
+static float mote__sin_kernel(float x)
+{
+    float x2 = x * x;
+    return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333310e-3f + x2 * (-1.9840874e-4f + x2 * 2.7525562e-6f))));
+}
+
+static float mote__cos_kernel(float x)
+{
+    float x2 = x * x;
+    return 1.0f + x2 * (-0.5f + x2 * (4.1666638e-2f + x2 * (-1.3888378e-3f + x2 * 2.4390449e-5f)));
+}
+
+/* Reduces x to r in [-pi/4, pi/4] and a quadrant, in double-float steps. */
+static int mote__reduce(float x, float *r)
+{
+    const float two_over_pi = 0.63661977236758134f;
+    const float pio2_hi = 1.5707963705062866f;   /* float(pi/2) */
+    const float pio2_lo = -4.3711388286737929e-8f; /* pi/2 - pio2_hi */
+    if (!mote__finite(x) || x > 1e6f || x < -1e6f) {
+        *r = 0.0f;
+        return 0;
+    }
+    float k = x * two_over_pi;
+    int q = (int)(k >= 0.0f ? k + 0.5f : k - 0.5f);
+    float fq = (float)q;
+    *r = (x - fq * pio2_hi) - fq * pio2_lo;
+    return q & 3;
+}
+
+float mote_sinf(float x)
+{
+    float r;
+    switch (mote__reduce(x, &r)) {
+    case 0: return mote__sin_kernel(r);
+    case 1: return mote__cos_kernel(r);
+    case 2: return -mote__sin_kernel(r);
+    default: return -mote__cos_kernel(r);
+    }
+}
+
+float mote_cosf(float x)
+{
+    float r;
+    switch (mote__reduce(x, &r)) {
+    case 0: return mote__cos_kernel(r);
+    case 1: return -mote__sin_kernel(r);
+    case 2: return -mote__cos_kernel(r);
+    default: return mote__sin_kernel(r);
+    }
+}
+
+float mote_tanf(float x)
+{
+    float c = mote_cosf(x);
+    return c == 0.0f ? 1e30f : mote_sinf(x) / c;
+}
+
+void mote__mat4_identity(float m[16])
+{
+    memset(m, 0, 16 * sizeof(float));
+    m[0] = m[5] = m[10] = m[15] = 1.0f;
+}
+
+void mote__mat4_mul(const float a[16], const float b[16], float out[16])
+{
+    float r[16];
+    for (int c = 0; c < 4; c++)
+        for (int row = 0; row < 4; row++)
+            r[c * 4 + row] = a[0 * 4 + row] * b[c * 4 + 0] + a[1 * 4 + row] * b[c * 4 + 1]
+                           + a[2 * 4 + row] * b[c * 4 + 2] + a[3 * 4 + row] * b[c * 4 + 3];
+    memcpy(out, r, sizeof r);
+}
+
+void mote__mat4_point(const float m[16], const float p[3], float out[4])
+{
+    for (int row = 0; row < 4; row++)
+        out[row] = m[0 * 4 + row] * p[0] + m[1 * 4 + row] * p[1] + m[2 * 4 + row] * p[2] + m[3 * 4 + row];
+}
+
+void mote__normal_matrix(const float m[16], float out[9])
+{
+    /* cofactors of the upper 3x3 = inverse-transpose times the determinant;
+     * the scale does not matter because normals are normalised afterwards. */
+#define M(r, c) m[(c) * 4 + (r)]
+    out[0 * 3 + 0] = M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1);
+    out[0 * 3 + 1] = M(1, 2) * M(2, 0) - M(1, 0) * M(2, 2);
+    out[0 * 3 + 2] = M(1, 0) * M(2, 1) - M(1, 1) * M(2, 0);
+    out[1 * 3 + 0] = M(0, 2) * M(2, 1) - M(0, 1) * M(2, 2);
+    out[1 * 3 + 1] = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
+    out[1 * 3 + 2] = M(0, 1) * M(2, 0) - M(0, 0) * M(2, 1);
+    out[2 * 3 + 0] = M(0, 1) * M(1, 2) - M(0, 2) * M(1, 1);
+    out[2 * 3 + 1] = M(0, 2) * M(1, 0) - M(0, 0) * M(1, 2);
+    out[2 * 3 + 2] = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+#undef M
+}
+
+static void mote__quat_matrix(const float q[4], float m[16])
+{
+    float x = q[0], y = q[1], z = q[2], w = q[3];
+    float n = x * x + y * y + z * z + w * w;
+    float s = n > 0.0f ? 2.0f / n : 0.0f;
+    mote__mat4_identity(m);
+    m[0] = 1.0f - s * (y * y + z * z);
+    m[1] = s * (x * y + z * w);
+    m[2] = s * (x * z - y * w);
+    m[4] = s * (x * y - z * w);
+    m[5] = 1.0f - s * (x * x + z * z);
+    m[6] = s * (y * z + x * w);
+    m[8] = s * (x * z + y * w);
+    m[9] = s * (y * z - x * w);
+    m[10] = 1.0f - s * (x * x + y * y);
+}
+
+/* Babylon's Quaternion.RotationYawPitchRoll(yaw = ry, pitch = rx, roll = rz). */
+static void mote__euler_quat(const float r[3], float q[4])
+{
+    float hr = r[2] * 0.5f, hp = r[0] * 0.5f, hy = r[1] * 0.5f;
+    float sr = mote_sinf(hr), cr = mote_cosf(hr);
+    float sp = mote_sinf(hp), cp = mote_cosf(hp);
+    float sy = mote_sinf(hy), cy = mote_cosf(hy);
+    q[0] = cy * sp * cr + sy * cp * sr;
+    q[1] = sy * cp * cr - cy * sp * sr;
+    q[2] = cy * cp * sr - sy * sp * cr;
+    q[3] = cy * cp * cr + sy * sp * sr;
+}
+
+void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
+{
+    float local[16], q[4];
+    if (mesh->use_quaternion)
+        memcpy(q, mesh->rotation_quaternion, sizeof q);
+    else
+        mote__euler_quat(mesh->rotation, q);
+    mote__quat_matrix(q, local);
+    float s[3];
+    bool unset = mesh->scaling[0] == 0.0f && mesh->scaling[1] == 0.0f && mesh->scaling[2] == 0.0f;
+    for (int i = 0; i < 3; i++)
+        s[i] = unset ? 1.0f : mesh->scaling[i];
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++)
+            local[c * 4 + r] *= s[c];
+    local[12] = mesh->position[0];
+    local[13] = mesh->position[1];
+    local[14] = mesh->position[2];
+    /* Parents are applied iteratively (bounded) so a cyclic chain cannot recurse forever. */
+    const mote_mesh *p = mesh->parent;
+    for (int depth = 0; p && depth < 64; depth++, p = p->parent) {
+        float pm[16], q2[4];
+        if (p->use_quaternion)
+            memcpy(q2, p->rotation_quaternion, sizeof q2);
+        else
+            mote__euler_quat(p->rotation, q2);
+        mote__quat_matrix(q2, pm);
+        bool punset = p->scaling[0] == 0.0f && p->scaling[1] == 0.0f && p->scaling[2] == 0.0f;
+        for (int c = 0; c < 3; c++)
+            for (int r = 0; r < 3; r++)
+                pm[c * 4 + r] *= punset ? 1.0f : p->scaling[c];
+        pm[12] = p->position[0];
+        pm[13] = p->position[1];
+        pm[14] = p->position[2];
+        mote__mat4_mul(pm, local, local);
+    }
+    memcpy(world, local, sizeof local);
+}
+
+static void mote__normalize3(float v[3])
+{
+    float len = mote__sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (len > 0.0f) {
+        v[0] /= len;
+        v[1] /= len;
+        v[2] /= len;
+    }
+}
+
+static void mote__cross3(const float a[3], const float b[3], float out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+void mote_camera_view_matrix(const mote_camera *camera, float view[16])
+{
+    /* Left-handed look-at (Babylon's LookAtLH): z toward the target. */
+    vec3 up = {camera->up[0], camera->up[1], camera->up[2]};
+    if (up[0] == 0.0f && up[1] == 0.0f && up[2] == 0.0f)
+        up[1] = 1.0f;
+    vec3 z = {camera->target[0] - camera->position[0], camera->target[1] - camera->position[1],
+              camera->target[2] - camera->position[2]};
+    mote__normalize3(z);
+    vec3 x, y;
+    mote__cross3(up, z, x);
+    if (x[0] == 0.0f && x[1] == 0.0f && x[2] == 0.0f) {
+        /* up parallel to the view direction: pick another up */
+        vec3 alt = {0.0f, 0.0f, 1.0f};
+        if (z[2] > 0.9f || z[2] < -0.9f) {
+            alt[1] = 1.0f;
+            alt[2] = 0.0f;
+        }
+        mote__cross3(alt, z, x);
+    }
+    mote__normalize3(x);
+    mote__cross3(z, x, y);
+    const float *e = camera->position;
+    mote__mat4_identity(view);
+    for (int i = 0; i < 3; i++) {
+        view[i * 4 + 0] = x[i];
+        view[i * 4 + 1] = y[i];
+        view[i * 4 + 2] = z[i];
+    }
+    view[12] = -(x[0] * e[0] + x[1] * e[1] + x[2] * e[2]);
+    view[13] = -(y[0] * e[0] + y[1] * e[1] + y[2] * e[2]);
+    view[14] = -(z[0] * e[0] + z[1] * e[1] + z[2] * e[2]);
+}
+
+void mote_camera_projection_matrix(const mote_camera *camera, float aspect, float proj[16])
+{
+    /* PerspectiveFovLH, depth 0 at near and 1 at far. Defaults for zeros. */
+    float fov = camera->fov > 0.0f ? camera->fov : 0.8f;
+    float n = camera->znear > 0.0f ? camera->znear : 0.1f;
+    float f = camera->zfar > 0.0f ? camera->zfar : 100.0f;
+    if (fov > 3.1f)
+        fov = 3.1f;
+    if (f <= n)
+        f = n * 2.0f;
+    float ys = 1.0f / mote_tanf(fov * 0.5f);
+    float xs = ys / (aspect > 0.0f ? aspect : 1.0f);
+    memset(proj, 0, 16 * sizeof(float));
+    proj[0] = xs;
+    proj[5] = ys;
+    proj[10] = f / (f - n);
+    proj[11] = 1.0f;
+    proj[14] = -n * f / (f - n);
+}
+
+bool mote_project(const mote_device *dev, const float p[3], float *x, float *y, float *z)
+{
+    float c[4];
+    mote__mat4_point(dev->view_proj, p, c);
+    if (!(c[3] > 0.0f) || c[2] < 0.0f)
+        return false;
+    float W = (float)dev->desc.width, H = (float)dev->desc.height;
+    *x = (c[0] / c[3] + 1.0f) * 0.5f * W;
+    *y = (1.0f - c[1] / c[3]) * 0.5f * H;
+    *z = c[2] / c[3];
+    return true;
+}
+
+void mote_mesh_update_bounds(mote_mesh *mesh)
+{
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    bool any = false;
+    for (uint32_t i = 0; i < mesh->vertex_count; i++) {
+        const float *p = mesh->vertices[i].position;
+        if (!mote__finite(p[0]) || !mote__finite(p[1]) || !mote__finite(p[2]))
+            continue;
+        for (int k = 0; k < 3; k++) {
+            if (!any || p[k] < lo[k]) lo[k] = p[k];
+            if (!any || p[k] > hi[k]) hi[k] = p[k];
+        }
+        any = true;
+    }
+    float r2 = 0.0f;
+    for (int k = 0; k < 3; k++)
+        mesh->bounds_center[k] = 0.5f * (lo[k] + hi[k]);
+    for (uint32_t i = 0; i < mesh->vertex_count; i++) {
+        const float *p = mesh->vertices[i].position;
+        if (!mote__finite(p[0]) || !mote__finite(p[1]) || !mote__finite(p[2]))
+            continue;
+        float d[3] = {p[0] - mesh->bounds_center[0], p[1] - mesh->bounds_center[1],
+                      p[2] - mesh->bounds_center[2]};
+        float dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (dd > r2)
+            r2 = dd;
+    }
+    /* a hair larger so float rounding in the test never rejects a visible mesh */
+    mesh->bounds_radius = any ? mote__sqrtf(r2) * 1.0001f + 1e-6f : 0.0f;
+}

@@ -1,0 +1,35 @@
+# Unity test suite: one executable per tests/test_*.c, linked with the
+# shared helpers in tests/support/ and the reference renderer in tests/ref/.
+# tests/run.sh runs them all and ends with "N passed, M failed".
+
+UNITY_DIR_LOCAL := third_party/unity
+UNITY_OK     := $(UNITY_DIR_LOCAL)/unity.c
+TEST_SRC     := $(sort $(wildcard tests/test_*.c))
+TEST_BIN     := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+TEST_SUPPORT := $(sort $(wildcard tests/support/*.c tests/ref/*.c))
+TEST_SUP_OBJ := $(patsubst tests/%.c,$(BUILD)/tests/obj/%.o,$(TEST_SUPPORT))
+TEST_CFLAGS   = $(CFLAGS) -I$(UNITY_DIR_LOCAL) -Itests -DUNITY_INCLUDE_DOUBLE \
+                -DMOTE_SOURCE_DIR=\"$(CURDIR)\"
+# Extra checks that print a Unity-style summary; other .mk files append.
+TEST_EXTRA   ?=
+
+.PHONY: test test-build
+test: test-build
+	@sh tests/run.sh $(TEST_BIN) $(TEST_EXTRA)
+
+test-build: $(TEST_BIN)
+
+$(UNITY_OK):
+	@sh third_party/get-unity.sh $(UNITY_DIR_LOCAL)
+
+$(BUILD)/tests/obj/unity.o: $(UNITY_OK) | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) -std=c99 -O2 -g -DUNITY_INCLUDE_DOUBLE $(SANFLAGS) -c $< -o $@
+
+$(BUILD)/tests/obj/%.o: tests/%.c $(wildcard tests/*.h tests/*/*.h include/mote/*.h) $(UNITY_OK) | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(TEST_CFLAGS) -c $< -o $@
+
+$(BUILD)/tests/test_%: $(BUILD)/tests/obj/test_%.o $(TEST_SUP_OBJ) $(BUILD)/tests/obj/unity.o $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@

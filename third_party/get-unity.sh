@@ -1,0 +1,54 @@
+#!/bin/sh
+# Puts Unity (unity.c, unity.h, unity_internals.h) into DEST (third_party/unity).
+# Unity is not packaged by Debian, but Debian's cjson source package carries
+# an upstream copy under tests/unity/src. Order of preference:
+#   1. UNITY_DIR, a folder that holds unity.c (your own copy);
+#   2. the orig tarball of the cjson source package, via `apt-get source`,
+#      enabling deb-src lines for the configured Debian mirrors if needed.
+set -eu
+DEST=${1:-third_party/unity}
+[ -f "$DEST/unity.c" ] && exit 0
+mkdir -p "$DEST"
+
+if [ -n "${UNITY_DIR:-}" ]; then
+    if [ -f "$UNITY_DIR/unity.c" ]; then
+        cp "$UNITY_DIR"/unity.c "$UNITY_DIR"/unity.h "$UNITY_DIR"/unity_internals.h "$DEST"/
+        exit 0
+    fi
+    echo "error: UNITY_DIR=$UNITY_DIR holds no unity.c" >&2
+    exit 1
+fi
+
+fail() {
+    echo "error: could not obtain Unity: $1" >&2
+    echo "  either set UNITY_DIR to a folder with unity.c, unity.h, unity_internals.h" >&2
+    echo "  or, as root with network: enable deb-src and run 'apt-get source cjson'" >&2
+    exit 1
+}
+
+command -v apt-get >/dev/null 2>&1 || fail "no apt-get on this machine"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+if ! apt-get source --download-only -qq cjson >/dev/null 2>&1; then
+    [ "$(id -u)" -eq 0 ] || fail "deb-src is not enabled and we are not root"
+    # Add deb-src twins of the configured deb sources (deb822 and one-line styles).
+    for f in /etc/apt/sources.list.d/*.sources; do
+        [ -f "$f" ] || continue
+        grep -q '^Types:.*deb-src' "$f" && continue
+        sed 's/^Types: deb$/Types: deb-src/' "$f" > "/etc/apt/sources.list.d/mote-src-$(basename "$f")"
+    done
+    if [ -f /etc/apt/sources.list ]; then
+        grep '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' \
+            > /etc/apt/sources.list.d/mote-src.list || true
+    fi
+    apt-get update -qq >/dev/null 2>&1 || true
+    apt-get source --download-only -qq cjson >/dev/null 2>&1 || fail "apt-get source cjson failed"
+fi
+tarball=$(ls cjson_*.orig.tar.* 2>/dev/null | head -n 1)
+[ -n "$tarball" ] || fail "the cjson source package has no orig tarball"
+tar xf "$tarball" --wildcards '*/tests/unity/src/unity*' || fail "no tests/unity/src in $tarball"
+src=$(dirname "$(find . -path '*/tests/unity/src/unity.c' | head -n 1)")
+cd - >/dev/null
+cp "$work/$src"/unity.c "$work/$src"/unity.h "$work/$src"/unity_internals.h "$DEST"/
+echo "third_party/get-unity.sh: Unity from $tarball -> $DEST"

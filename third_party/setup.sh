@@ -1,0 +1,36 @@
+#!/bin/sh
+# Installs what mote builds against, from Debian packages, when missing:
+#   cglm (libcglm-dev), cJSON (libcjson-dev), stb (libstb-dev), pkg-config.
+# Extra packages can be asked for with MOTE_EXTRA_PACKAGES="pkg ...".
+# Nothing is downloaded from anywhere else and nothing is committed.
+set -eu
+
+need=""
+command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
+for pair in cglm:libcglm-dev libcjson:libcjson-dev stb:libstb-dev; do
+    mod=${pair%%:*}; pkg=${pair#*:}
+    if ! command -v pkg-config >/dev/null 2>&1 || ! pkg-config --exists "$mod"; then
+        need="$need $pkg"
+    fi
+done
+for pkg in ${MOTE_EXTRA_PACKAGES:-}; do
+    dpkg -s "$pkg" >/dev/null 2>&1 || need="$need $pkg"
+done
+
+[ -z "$need" ] && exit 0
+
+echo "third_party/setup.sh: installing:$need"
+if [ "$(id -u)" -ne 0 ] || ! command -v apt-get >/dev/null 2>&1; then
+    echo "error: missing:$need" >&2
+    echo "  install them as root:  apt-get install$need" >&2
+    exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+if ! apt-get install -y -qq $need >/dev/null 2>&1; then
+    apt-get update -qq
+    apt-get install -y -qq $need || {
+        echo "error: apt-get could not install:$need (no network?)" >&2
+        echo "  install them as root:  apt-get install$need" >&2
+        exit 1
+    }
+fi
