@@ -3,12 +3,12 @@
 # tests/run.sh runs them all and ends with "N passed, M failed".
 
 UNITY_DIR_LOCAL := third_party/unity
-UNITY_OK     := $(UNITY_DIR_LOCAL)/unity.c
+UNITY_OK     := $(UNITY_DIR_LOCAL)/src/unity.c
 TEST_SRC     := $(sort $(wildcard tests/test_*.c))
 TEST_BIN     := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 TEST_SUPPORT := $(sort $(wildcard tests/support/*.c tests/ref/*.c))
 TEST_SUP_OBJ := $(patsubst tests/%.c,$(BUILD)/tests/obj/%.o,$(TEST_SUPPORT))
-TEST_CFLAGS   = $(CFLAGS) -I$(UNITY_DIR_LOCAL) -Itests -DUNITY_INCLUDE_DOUBLE \
+TEST_CFLAGS   = $(CFLAGS) -I$(UNITY_DIR_LOCAL)/src -Itests \
                 -DMOTE_SOURCE_DIR=\"$(CURDIR)\"
 # Extra checks that print a Unity-style summary; other .mk files append.
 TEST_EXTRA   ?=
@@ -24,7 +24,7 @@ $(UNITY_OK):
 
 $(BUILD)/tests/obj/unity.o: $(UNITY_OK) | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) -std=c99 -O2 -g -DUNITY_INCLUDE_DOUBLE $(SANFLAGS) -c $< -o $@
+	$(CC) -std=c99 -O2 -g $(SANFLAGS) -c $< -o $@
 
 $(BUILD)/tests/obj/%.o: tests/%.c $(wildcard tests/*.h tests/*/*.h include/mote/*.h) $(UNITY_OK) | $(DEPS_OK)
 	@mkdir -p $(dir $@)

@@ -1,5 +1,7 @@
 #!/bin/sh
-# Puts Unity (unity.c, unity.h, unity_internals.h) into DEST (third_party/unity).
+# Puts Unity into DEST (third_party/unity): DEST/src/unity.c, unity.h,
+# unity_internals.h, and DEST/examples/unity_config.h (which the cjson copy
+# of unity_internals.h includes as "../examples/unity_config.h").
 # Unity is not packaged by Debian, but Debian's cjson source package carries
 # an upstream copy under tests/unity/src. Order of preference:
 #   1. UNITY_DIR, a folder that holds unity.c (your own copy);
@@ -7,12 +9,15 @@
 #      enabling deb-src lines for the configured Debian mirrors if needed.
 set -eu
 DEST=${1:-third_party/unity}
-[ -f "$DEST/unity.c" ] && exit 0
-mkdir -p "$DEST"
+[ -f "$DEST/src/unity.c" ] && exit 0
+mkdir -p "$DEST/src" "$DEST/examples"
 
 if [ -n "${UNITY_DIR:-}" ]; then
     if [ -f "$UNITY_DIR/unity.c" ]; then
-        cp "$UNITY_DIR"/unity.c "$UNITY_DIR"/unity.h "$UNITY_DIR"/unity_internals.h "$DEST"/
+        cp "$UNITY_DIR"/unity.c "$UNITY_DIR"/unity.h "$UNITY_DIR"/unity_internals.h "$DEST"/src/
+        # the config header is optional upstream: an empty one will do
+        [ -f "$UNITY_DIR/../examples/unity_config.h" ] && cp "$UNITY_DIR/../examples/unity_config.h" "$DEST/examples/" \
+            || : > "$DEST/examples/unity_config.h"
         exit 0
     fi
     echo "error: UNITY_DIR=$UNITY_DIR holds no unity.c" >&2
@@ -47,8 +52,10 @@ if ! apt-get source --download-only -qq cjson >/dev/null 2>&1; then
 fi
 tarball=$(ls cjson_*.orig.tar.* 2>/dev/null | head -n 1)
 [ -n "$tarball" ] || fail "the cjson source package has no orig tarball"
-tar xf "$tarball" --wildcards '*/tests/unity/src/unity*' || fail "no tests/unity/src in $tarball"
+tar xf "$tarball" --wildcards '*/tests/unity/src/unity*' '*/tests/unity/examples/unity_config.h' \
+    || fail "no tests/unity/src in $tarball"
 src=$(dirname "$(find . -path '*/tests/unity/src/unity.c' | head -n 1)")
 cd - >/dev/null
-cp "$work/$src"/unity.c "$work/$src"/unity.h "$work/$src"/unity_internals.h "$DEST"/
+cp "$work/$src"/unity.c "$work/$src"/unity.h "$work/$src"/unity_internals.h "$DEST"/src/
+cp "$work/$src"/../examples/unity_config.h "$DEST"/examples/
 echo "third_party/get-unity.sh: Unity from $tarball -> $DEST"

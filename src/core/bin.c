@@ -38,6 +38,7 @@ size_t mote_arena_bytes_per_triangle(void)
 void mote__bin_reset(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
+    b->tiles = b->base;
     b->used = b->batch_start = mote__tiles_bytes(dev);
     b->top = b->size;
     b->triangles = 0;

@@ -511,10 +511,10 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     memset(&rs_local, 0, sizeof rs_local);
     mote_mode mode = cx.d.mode;
     bool tri_mode = mode == MOTE_MODE_FLAT || mode == MOTE_MODE_GOURAUD || mode == MOTE_MODE_TEXTURED;
-    cx.lit = tri_mode && !cx.d.unlit && dev->frame.light_count + 1 > 0;
-    cx.flat = mode == MOTE_MODE_FLAT;
+    cx.lit = tri_mode && !cx.d.unlit;
     if (cx.d.unlit)
         cx.lit = false;
+    cx.flat = mode == MOTE_MODE_FLAT && cx.lit;   /* unlit flat is one colour anyway */
     rs_local.gouraud = cx.lit && !cx.flat;
     rs_local.tex = MOTE__TEX_NONE;
     if (mode == MOTE_MODE_TEXTURED && mote__texture_ok(mat->texture)) {

@@ -1,0 +1,591 @@
+/*
+ * test_core.c - the tutorial pipeline, stage by stage: projection, lines,
+ * coverage of a triangulated square, depth order, flat and Gouraud values,
+ * texel placement, back-face culling.
+ */
+#include <mote/mote.h>
+#include "core/internal.h"
+#include "unity.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define W 64
+#define H 48
+
+static uint8_t color[W * H * 4];
+static uint32_t depth[W * H];
+static mote_device dev;
+static mote_frame_desc frame;
+
+void setUp(void)
+{
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = W;
+    d.height = H;
+    d.color = color;
+    d.depth = depth;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+    memset(&frame, 0, sizeof frame);
+    frame.camera.target[2] = 1.0f;   /* eye at the origin looking down +z */
+    frame.camera.fov = 1.5707964f;   /* 90 degrees: tan(fov/2) = 1 */
+    frame.camera.znear = 1.0f;
+    frame.camera.zfar = 100.0f;
+}
+
+void tearDown(void) {}
+
+/* A quad in the plane z, corners given in view space, clockwise on screen. */
+static mote_vertex quad_v[4];
+static uint32_t quad_i[6] = {0, 1, 2, 0, 2, 3};
+
+static mote_mesh make_quad(float x0, float y0, float x1, float y1, float z)
+{
+    memset(quad_v, 0, sizeof quad_v);
+    float p[4][3] = {{x0, y1, z}, {x1, y1, z}, {x1, y0, z}, {x0, y0, z}};
+    float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int i = 0; i < 4; i++) {
+        memcpy(quad_v[i].position, p[i], sizeof p[i]);
+        quad_v[i].normal[2] = -1.0f;
+        memcpy(quad_v[i].uv, uv[i], sizeof uv[i]);
+    }
+    mote_mesh m;
+    memset(&m, 0, sizeof m);
+    m.vertices = quad_v;
+    m.vertex_count = 4;
+    m.indices = quad_i;
+    m.index_count = 6;
+    return m;
+}
+
+/* The quad that exactly fills the screen at depth z (fov 90 degrees). */
+static mote_mesh screen_quad(float z)
+{
+    float ax = (float)W / (float)H * z;
+    return make_quad(-ax, -z, ax, z, z);
+}
+
+void projection_should_map_known_points_to_pixels(void)
+{
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    float x, y, z;
+    float centre[3] = {0, 0, 5};
+    TEST_ASSERT_TRUE(mote_project(&dev, centre, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-4f, W / 2.0f, x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-4f, H / 2.0f, y);
+    /* at z = 4 the top of the view is y = 4 and the right edge x = 4 * aspect */
+    float top_right[3] = {4.0f * W / H, 4.0f, 4.0f};
+    TEST_ASSERT_TRUE(mote_project(&dev, top_right, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, (float)W, x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 0.0f, y);
+    float near_pt[3] = {0, 0, 1}, far_pt[3] = {0, 0, 100};
+    TEST_ASSERT_TRUE(mote_project(&dev, near_pt, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.0f, z);
+    TEST_ASSERT_TRUE(mote_project(&dev, far_pt, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, z);
+    float behind[3] = {0, 0, -3};
+    TEST_ASSERT_FALSE(mote_project(&dev, behind, &x, &y, &z));
+}
+
+void projection_should_follow_the_left_handed_look_at(void)
+{
+    /* camera on +x looking back at the origin: in a left-handed world the
+     * right vector is up x forward = (0,1,0) x (-1,0,0) = +z */
+    frame.camera.position[0] = 10.0f;
+    frame.camera.target[2] = 0.0f;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    float x, y, z, p[3] = {0, 0, 1};
+    TEST_ASSERT_TRUE(mote_project(&dev, p, &x, &y, &z));
+    TEST_ASSERT_TRUE(x > W / 2.0f);
+}
+
+/* ---- lines ------------------------------------------------------------- */
+
+static int count_lit(const uint8_t *buf, int w, int h)
+{
+    int n = 0;
+    for (int i = 0; i < w * h; i++)
+        n += buf[4 * i] != 0;
+    return n;
+}
+
+void bresenham_lines_should_hit_both_endpoints_and_stay_connected(void)
+{
+    mote_rgba white = {255, 255, 255, 255};
+    uint64_t counter = 0;
+    mote__target tg = {color, W * 4, NULL, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &counter};
+    mote__rect all = {0, 0, W, H};
+    srand(7);
+    for (int iter = 0; iter < 500; iter++) {
+        memset(color, 0, sizeof color);
+        int x0 = rand() % W, y0 = rand() % H, x1 = rand() % W, y1 = rand() % H;
+        mote__draw_line(&tg, all, x0, y0, x1, y1, white);
+        TEST_ASSERT_EQUAL_UINT8(255, color[4 * (y0 * W + x0)]);
+        TEST_ASSERT_EQUAL_UINT8(255, color[4 * (y1 * W + x1)]);
+        int dx = abs(x1 - x0), dy = abs(y1 - y0);
+        int major = dx > dy ? dx : dy;
+        TEST_ASSERT_EQUAL_INT(major + 1, count_lit(color, W, H));
+        /* every lit pixel has one per major-axis step: connected, no gaps */
+        if (dx >= dy) {
+            for (int x = (x0 < x1 ? x0 : x1); x <= (x0 < x1 ? x1 : x0); x++) {
+                int hits = 0;
+                for (int y = 0; y < H; y++)
+                    hits += color[4 * (y * W + x)] != 0;
+                TEST_ASSERT_EQUAL_INT(1, hits);
+            }
+        }
+    }
+}
+
+void lines_clipped_to_a_region_should_draw_the_same_pixels_inside_it(void)
+{
+    static uint8_t full[W * H * 4];
+    mote_rgba white = {255, 255, 255, 255};
+    uint64_t counter = 0;
+    mote__target tg = {color, W * 4, NULL, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &counter};
+    srand(11);
+    for (int iter = 0; iter < 300; iter++) {
+        /* endpoints far outside the buffer too */
+        int x0 = rand() % 4000 - 2000, y0 = rand() % 4000 - 2000;
+        int x1 = rand() % (3 * W) - W, y1 = rand() % (3 * H) - H;
+        mote__rect all = {0, 0, W, H};
+        memset(full, 0, sizeof full);
+        tg.color = full;
+        mote__draw_line(&tg, all, x0, y0, x1, y1, white);
+        memset(color, 0, sizeof color);
+        tg.color = color;
+        mote__rect parts[4] = {{0, 0, W / 2, H / 2}, {W / 2, 0, W, H / 2}, {0, H / 2, W / 2, H}, {W / 2, H / 2, W, H}};
+        for (int k = 0; k < 4; k++)
+            mote__draw_line(&tg, parts[k], x0, y0, x1, y1, white);
+        TEST_ASSERT_EQUAL_MEMORY(full, color, sizeof color);
+    }
+}
+
+/* ---- coverage ------------------------------------------------------------ */
+
+void a_triangulated_square_should_cover_every_pixel_exactly_once(void)
+{
+    frame.camera.zfar = 100.0f;
+    mote_mesh q = screen_quad(5.0f);
+    q.material.color = (mote_rgba){200, 100, 50, 255};
+    q.material.color_set = true;
+    mote_draw_desc dd = {0};
+    dd.unlit = true;
+    dd.mode = MOTE_MODE_FLAT;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &q, &dd));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    /* every pixel written once: W*H writes in total and all pixels coloured */
+    TEST_ASSERT_EQUAL_UINT64((uint64_t)W * H, mote_device_stats(&dev)->pixels_written);
+    for (int i = 0; i < W * H; i++) {
+        TEST_ASSERT_EQUAL_UINT8(200, color[4 * i]);
+        TEST_ASSERT_EQUAL_UINT8(100, color[4 * i + 1]);
+    }
+}
+
+void a_random_fan_over_the_screen_should_cover_every_pixel_exactly_once(void)
+{
+    /* a fan of triangles around a random interior point, edges at random
+     * sub-pixel positions along the border: no gaps, no double hits */
+    static mote_vertex v[130];
+    static uint32_t idx[128 * 3];
+    srand(3);
+    for (int iter = 0; iter < 20; iter++) {
+        float z = 5.0f, ax = (float)W / H * z;
+        memset(v, 0, sizeof v);
+        v[0].position[0] = ((float)rand() / RAND_MAX - 0.5f) * ax;
+        v[0].position[1] = ((float)rand() / RAND_MAX - 0.5f) * z;
+        v[0].position[2] = z;
+        /* border points clockwise: top edge, right, bottom, left */
+        int n = 0;
+        float t = 0.0f;
+        while (t < 4.0f && n < 128) {
+            float s = t - (float)(int)t;
+            int side = (int)t;
+            float x = side == 0 ? -ax + 2 * ax * s : side == 1 ? ax : side == 2 ? ax - 2 * ax * s : -ax;
+            float y = side == 0 ? z : side == 1 ? z - 2 * z * s : side == 2 ? -z : -z + 2 * z * s;
+            v[1 + n].position[0] = x;
+            v[1 + n].position[1] = y;
+            v[1 + n].position[2] = z;
+            n++;
+            t += 0.05f + 0.2f * (float)rand() / RAND_MAX;
+            if ((int)t != side && side < 4)
+                t = (float)(int)t; /* hit each corner exactly */
+        }
+        for (int k = 0; k < n; k++) {
+            idx[3 * k] = 0;
+            idx[3 * k + 1] = 1 + (uint32_t)k;
+            idx[3 * k + 2] = 1 + (uint32_t)((k + 1) % n);
+        }
+        mote_mesh m;
+        memset(&m, 0, sizeof m);
+        m.vertices = v;
+        m.vertex_count = (uint32_t)n + 1;
+        m.indices = idx;
+        m.index_count = (uint32_t)n * 3;
+        mote_draw_desc dd = {0};
+        dd.unlit = true;
+        dd.cull = MOTE_CULL_NONE;
+        dd.no_depth_test = true;
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &m, &dd));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)W * H, mote_device_stats(&dev)->pixels_written);
+        for (int i = 0; i < W * H; i++)
+            TEST_ASSERT_EQUAL_UINT8(255, color[4 * i]);
+    }
+}
+
+/* ---- depth ---------------------------------------------------------------- */
+
+static void draw_two_crossing_quads(bool reverse, uint8_t *out)
+{
+    static mote_vertex va[4], vb[4];
+    static uint32_t ii[6] = {0, 1, 2, 0, 2, 3};
+    /* A tilts from z=4 (left) to z=8 (right), B from z=8 to z=4: they cross */
+    float pa[4][3] = {{-4, 3, 4}, {4, 3, 8}, {4, -3, 8}, {-4, -3, 4}};
+    float pb[4][3] = {{-4, 3, 8}, {4, 3, 4}, {4, -3, 4}, {-4, -3, 8}};
+    memset(va, 0, sizeof va);
+    memset(vb, 0, sizeof vb);
+    for (int i = 0; i < 4; i++) {
+        memcpy(va[i].position, pa[i], sizeof pa[i]);
+        memcpy(vb[i].position, pb[i], sizeof pb[i]);
+    }
+    mote_mesh a, b;
+    memset(&a, 0, sizeof a);
+    a.vertices = va;
+    a.vertex_count = 4;
+    a.indices = ii;
+    a.index_count = 6;
+    b = a;
+    b.vertices = vb;
+    a.material.color = (mote_rgba){255, 0, 0, 255};
+    a.material.color_set = true;
+    b.material.color = (mote_rgba){0, 0, 255, 255};
+    b.material.color_set = true;
+    mote_draw_desc dd = {0};
+    dd.unlit = true;
+    dd.cull = MOTE_CULL_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    mote_draw(&dev, reverse ? &b : &a, &dd);
+    mote_draw(&dev, reverse ? &a : &b, &dd);
+    mote_end(&dev);
+    memcpy(out, color, sizeof color);
+}
+
+void the_depth_test_should_not_depend_on_draw_order(void)
+{
+    static uint8_t ab[sizeof color], ba[sizeof color];
+    draw_two_crossing_quads(false, ab);
+    draw_two_crossing_quads(true, ba);
+    /* left half: A is nearer (red); right half: B (blue) */
+    TEST_ASSERT_EQUAL_UINT8(255, ab[4 * (H / 2 * W + W / 4)]);
+    TEST_ASSERT_EQUAL_UINT8(255, ab[4 * (H / 2 * W + 3 * W / 4) + 2]);
+    /* the crossing column may tie; everything else must agree */
+    int diff = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            if (memcmp(&ab[4 * (y * W + x)], &ba[4 * (y * W + x)], 4) != 0) {
+                diff++;
+                TEST_ASSERT_INT_WITHIN(1, W / 2, x);
+            }
+    TEST_ASSERT_TRUE(diff <= 2 * H);
+}
+
+/* ---- lighting --------------------------------------------------------------- */
+
+void flat_shading_should_use_the_face_normal_against_the_light(void)
+{
+    mote_mesh q = screen_quad(5.0f);
+    frame.light_count = 1;
+    frame.lights[0].type = MOTE_LIGHT_DIRECTIONAL;
+    /* light travelling away from the camera, 60 degrees off the normal: n.l = 0.5 */
+    frame.lights[0].direction[0] = 0.8660254f;
+    frame.lights[0].direction[2] = 0.5f;
+    mote_draw_desc dd = {0};
+    dd.mode = MOTE_MODE_FLAT;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    mote_draw(&dev, &q, &dd);
+    mote_end(&dev);
+    /* 0.5 * 255 = 127.5 rounds to 128 (CONVENTIONS: (S*255 + 2^23) >> 24) */
+    for (int i = 0; i < W * H; i += 37)
+        TEST_ASSERT_UINT8_WITHIN(1, 128, color[4 * i]);
+    /* a light behind the face gives black, never negative */
+    frame.lights[0].direction[2] = -0.5f;
+    mote_begin(&dev, &frame);
+    mote_draw(&dev, &q, &dd);
+    mote_end(&dev);
+    TEST_ASSERT_EQUAL_UINT8(0, color[4 * (H / 2 * W + W / 2)]);
+}
+
+void gouraud_shading_should_interpolate_vertex_intensities(void)
+{
+    /* one triangle with n.l = 1, 0.5, 0 at its vertices (constant depth, so
+     * perspective-correct equals screen-linear); check the values at pixels
+     * against barycentric interpolation computed here */
+    static mote_vertex v[3];
+    static uint32_t ii[3] = {0, 1, 2};
+    memset(v, 0, sizeof v);
+    float z = 5.0f, ax = (float)W / H * z;
+    float p[3][3] = {{-ax, z, z}, {ax, z, z}, {-ax, -z, z}};
+    float nx[3] = {0.0f, 0.8660254f, 1.0f};
+    for (int i = 0; i < 3; i++) {
+        memcpy(v[i].position, p[i], sizeof p[i]);
+        v[i].normal[0] = nx[i];
+        v[i].normal[2] = -mote__sqrtf(1.0f - nx[i] * nx[i]);
+    }
+    mote_mesh m;
+    memset(&m, 0, sizeof m);
+    m.vertices = v;
+    m.vertex_count = 3;
+    m.indices = ii;
+    m.index_count = 3;
+    frame.light_count = 1;
+    frame.lights[0].type = MOTE_LIGHT_DIRECTIONAL;
+    frame.lights[0].direction[2] = 1.0f;  /* l = (0,0,-1) */
+    mote_draw_desc dd = {0};
+    dd.mode = MOTE_MODE_GOURAUD;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    mote_draw(&dev, &m, &dd);
+    mote_end(&dev);
+    double I[3] = {1.0, 0.5, 0.0};
+    int checked = 0;
+    for (int y = 0; y < H; y += 3)
+        for (int x = 0; x < W; x += 3) {
+            double px = x + 0.5, py = y + 0.5;
+            /* screen vertices (0,0), (W,0), (0,H): barycentrics */
+            double b1 = px / W, b2 = py / H, b0 = 1.0 - b1 - b2;
+            if (b0 <= 0.01)
+                continue;
+            double expect = 255.0 * (b0 * I[0] + b1 * I[1] + b2 * I[2]);
+            TEST_ASSERT_UINT8_WITHIN(1, (uint8_t)(expect + 0.5), color[4 * (y * W + x)]);
+            checked++;
+        }
+    TEST_ASSERT_TRUE(checked > 50);
+}
+
+/* ---- textures --------------------------------------------------------------- */
+
+void each_texel_should_land_on_its_pixels(void)
+{
+    /* a 4x4 texture on the full-screen quad: pixel (x, y) shows texel
+     * (x * 4 / W, y * 4 / H); v = 0 is the top row by default */
+    static uint8_t texels[4 * 4 * 4];
+    for (int i = 0; i < 16; i++) {
+        texels[4 * i] = (uint8_t)(i * 16);
+        texels[4 * i + 1] = (uint8_t)(255 - i * 16);
+        texels[4 * i + 2] = (uint8_t)(i * 7);
+        texels[4 * i + 3] = 255;
+    }
+    mote_texture tex = {4, 4, MOTE_FORMAT_RGBA8888, 16, texels};
+    mote_mesh q = screen_quad(5.0f);
+    q.material.texture = &tex;
+    mote_draw_desc dd = {0};
+    dd.unlit = true;
+    for (int flip = 0; flip < 2; flip++) {
+        q.material.v_origin_bottom = flip != 0;
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+        mote_draw(&dev, &q, &dd);
+        mote_end(&dev);
+        for (int y = 1; y < H; y += 2)
+            for (int x = 1; x < W; x += 2) {
+                int tx = x * 4 / W, ty = y * 4 / H;
+                /* skip pixels whose centre sits on a texel boundary */
+                if ((x * 4) % W == 0 || (y * 4) % H == 0)
+                    continue;
+                if (flip)
+                    ty = 3 - ty;
+                TEST_ASSERT_EQUAL_UINT8(texels[4 * (ty * 4 + tx)], color[4 * (y * W + x)]);
+                TEST_ASSERT_EQUAL_UINT8(texels[4 * (ty * 4 + tx) + 1], color[4 * (y * W + x) + 1]);
+            }
+    }
+}
+
+void uvs_outside_zero_one_should_wrap_around(void)
+{
+    static uint8_t texels[2 * 1 * 4] = {255, 0, 0, 255, 0, 255, 0, 255};
+    mote_texture tex = {2, 1, MOTE_FORMAT_RGBA8888, 8, texels};
+    mote_mesh q = screen_quad(5.0f);
+    q.material.texture = &tex;
+    q.material.u_scale = 3.0f;    /* three repeats: six columns alternating */
+    mote_draw_desc dd = {0};
+    dd.unlit = true;
+    mote_begin(&dev, &frame);
+    mote_draw(&dev, &q, &dd);
+    mote_end(&dev);
+    for (int k = 0; k < 6; k++) {
+        int x = k * W / 6 + W / 12;
+        TEST_ASSERT_EQUAL_UINT8(k % 2 == 0 ? 255 : 0, color[4 * (H / 2 * W + x)]);
+    }
+}
+
+/* ---- culling ---------------------------------------------------------------- */
+
+static mote_vertex cube_v[8];
+static uint32_t cube_i[36];
+
+static mote_mesh make_cube(void)
+{
+    /* faces wound clockwise seen from outside (Babylon's front faces) */
+    static const uint32_t faces[6][4] = {
+        {0, 1, 2, 3}, {5, 4, 7, 6}, {4, 0, 3, 7}, {1, 5, 6, 2}, {4, 5, 1, 0}, {3, 2, 6, 7}};
+    for (int i = 0; i < 8; i++) {
+        cube_v[i].position[0] = (i == 1 || i == 2 || i == 5 || i == 6) ? 1.0f : -1.0f;
+        cube_v[i].position[1] = (i == 0 || i == 1 || i == 4 || i == 5) ? 1.0f : -1.0f;
+        cube_v[i].position[2] = i < 4 ? -1.0f : 1.0f;
+        for (int k = 0; k < 3; k++)
+            cube_v[i].normal[k] = cube_v[i].position[k];
+    }
+    for (int f = 0; f < 6; f++) {
+        uint32_t *o = &cube_i[6 * f];
+        o[0] = faces[f][0];
+        o[1] = faces[f][1];
+        o[2] = faces[f][2];
+        o[3] = faces[f][0];
+        o[4] = faces[f][2];
+        o[5] = faces[f][3];
+    }
+    mote_mesh m;
+    memset(&m, 0, sizeof m);
+    m.vertices = cube_v;
+    m.vertex_count = 8;
+    m.indices = cube_i;
+    m.index_count = 36;
+    return m;
+}
+
+void backface_culling_should_keep_exactly_the_faces_that_face_the_eye(void)
+{
+    mote_mesh cube = make_cube();
+    srand(5);
+    for (int iter = 0; iter < 200; iter++) {
+        /* eyes all around, some close enough for strong perspective */
+        double th = 6.2831853 * rand() / RAND_MAX, ph = 3.1 * rand() / RAND_MAX - 1.55;
+        double dist = 2.2 + 8.0 * rand() / RAND_MAX;
+        float eye[3] = {(float)(dist * cos(ph) * cos(th)), (float)(dist * sin(ph)), (float)(dist * cos(ph) * sin(th))};
+        memcpy(frame.camera.position, eye, sizeof eye);
+        memset(frame.camera.target, 0, sizeof frame.camera.target);
+        frame.camera.znear = 0.1f;
+        frame.camera.fov = 2.0f;  /* wide, so the whole cube is in view */
+        /* seen edge-on, a face's snapped winding may go either way (as on
+         * any rasteriser that culls on snapped positions): keep the eye at
+         * least 0.05 from every face plane */
+        if (fabsf(fabsf(eye[0]) - 1.0f) < 0.05f || fabsf(fabsf(eye[1]) - 1.0f) < 0.05f
+            || fabsf(fabsf(eye[2]) - 1.0f) < 0.05f)
+            continue;
+        /* expected: a triangle is front when the eye is on its outer side */
+        int front = 0;
+        for (int t = 0; t < 12; t++) {
+            const float *a = cube_v[cube_i[3 * t]].position, *b = cube_v[cube_i[3 * t + 1]].position,
+                        *c = cube_v[cube_i[3 * t + 2]].position;
+            double e1[3], e2[3], n[3], out = 0.0, side = 0.0;
+            for (int k = 0; k < 3; k++) {
+                e1[k] = b[k] - a[k];
+                e2[k] = c[k] - a[k];
+            }
+            n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+            n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+            n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+            for (int k = 0; k < 3; k++) {
+                out += n[k] * a[k];            /* > 0: n points outward */
+                side += n[k] * (eye[k] - a[k]);
+            }
+            front += (out > 0.0) == (side > 0.0);
+        }
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+        mote_draw(&dev, &cube, NULL);
+        mote_end(&dev);
+        const mote_stats *s = mote_device_stats(&dev);
+        TEST_ASSERT_EQUAL_UINT32(12, s->triangles_in);
+        TEST_ASSERT_EQUAL_UINT32(12 - front, s->triangles_backface);
+        TEST_ASSERT_EQUAL_UINT32(front, s->triangles_drawn);
+    }
+}
+
+void the_tutorials_view_space_normal_test_would_fail_where_winding_does_not(void)
+{
+    /* eye close to the plane of the +x face, looking at the cube's -x side at
+     * a grazing angle: the view-space normal's z and the real visibility
+     * disagree for the +z face; the winding test gets it right */
+    mote_mesh cube = make_cube();
+    float eye[3] = {0.5f, 0.0f, -4.0f};
+    memcpy(frame.camera.position, eye, sizeof eye);
+    frame.camera.target[0] = -3.0f;
+    frame.camera.target[2] = 0.0f;
+    frame.camera.znear = 0.1f;
+    frame.camera.fov = 2.5f;
+    mote_begin(&dev, &frame);
+    mote_draw(&dev, &cube, NULL);
+    mote_end(&dev);
+    /* only the -z face (z = -1 side) faces this eye: 2 triangles */
+    TEST_ASSERT_EQUAL_UINT32(2, mote_device_stats(&dev)->triangles_drawn);
+}
+
+void invalid_indices_and_nan_vertices_should_drop_triangles_not_the_frame(void)
+{
+    mote_mesh q = screen_quad(5.0f);
+    static uint32_t bad[9] = {0, 1, 2, 0, 2, 99, 0, 2, 3};
+    q.indices = bad;
+    q.index_count = 9;
+    mote_begin(&dev, &frame);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &q, NULL));
+    mote_end(&dev);
+    TEST_ASSERT_EQUAL_UINT32(1, mote_device_stats(&dev)->triangles_invalid);
+    TEST_ASSERT_EQUAL_UINT32(2, mote_device_stats(&dev)->triangles_drawn);
+    quad_v[1].position[0] = NAN;
+    mote_begin(&dev, &frame);
+    mote_draw(&dev, &q, NULL);
+    mote_end(&dev);
+    TEST_ASSERT_EQUAL_UINT32(2, mote_device_stats(&dev)->triangles_invalid);
+    TEST_ASSERT_EQUAL_UINT32(1, mote_device_stats(&dev)->triangles_drawn);
+}
+
+void device_init_should_reject_bad_descriptors(void)
+{
+    mote_device d2;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));
+    d.width = W;
+    d.height = H;
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d)); /* no buffers */
+    d.color = color;
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d)); /* no depth */
+    d.depth_format = MOTE_DEPTH_FORMAT_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&d2, &d));
+    d.width = MOTE_MAX_SIZE + 1;
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));
+    d.width = W;
+    d.band_height = 8;            /* band mode needs a flush callback */
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));
+    d.band_height = 0;
+    d.subpixel_bits = 3;
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));
+    TEST_ASSERT_EQUAL_STRING("invalid argument", mote_result_string(MOTE_ERR_INVALID_ARGUMENT));
+    TEST_ASSERT_EQUAL_STRING("unknown result", mote_result_string((mote_result)999));
+    /* drawing on a device that failed to initialise is refused */
+    TEST_ASSERT_EQUAL(MOTE_ERR_STATE, mote_begin(&d2, &frame));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(projection_should_map_known_points_to_pixels);
+    RUN_TEST(projection_should_follow_the_left_handed_look_at);
+    RUN_TEST(bresenham_lines_should_hit_both_endpoints_and_stay_connected);
+    RUN_TEST(lines_clipped_to_a_region_should_draw_the_same_pixels_inside_it);
+    RUN_TEST(a_triangulated_square_should_cover_every_pixel_exactly_once);
+    RUN_TEST(a_random_fan_over_the_screen_should_cover_every_pixel_exactly_once);
+    RUN_TEST(the_depth_test_should_not_depend_on_draw_order);
+    RUN_TEST(flat_shading_should_use_the_face_normal_against_the_light);
+    RUN_TEST(gouraud_shading_should_interpolate_vertex_intensities);
+    RUN_TEST(each_texel_should_land_on_its_pixels);
+    RUN_TEST(uvs_outside_zero_one_should_wrap_around);
+    RUN_TEST(backface_culling_should_keep_exactly_the_faces_that_face_the_eye);
+    RUN_TEST(the_tutorials_view_space_normal_test_would_fail_where_winding_does_not);
+    RUN_TEST(invalid_indices_and_nan_vertices_should_drop_triangles_not_the_frame);
+    RUN_TEST(device_init_should_reject_bad_descriptors);
+    return UNITY_END();
+}

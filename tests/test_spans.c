@@ -1,0 +1,271 @@
+/*
+ * test_spans.c - every specialised span loop against the generic one, and
+ * the same bytes from every way of executing a frame: direct, binned with
+ * any thread count / tile size / arena size, and band by band.
+ */
+#include <mote/mote.h>
+#include <mote/mote_io.h>
+#include "core/internal.h"
+#include "unity.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define W 97                       /* odd sizes: partial tiles and bands */
+#define H 71
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static uint32_t rng = 12345u;
+static uint32_t next_u32(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    return rng;
+}
+static float frand(float lo, float hi) { return lo + (hi - lo) * (float)(next_u32() & 0xffffff) / 16777216.0f; }
+
+void every_specialised_span_should_match_the_generic_span(void)
+{
+    static uint8_t ca[W * H * 4], cb[W * H * 4];
+    static uint32_t da[W * H], db[W * H];
+    static uint8_t texels[16 * 8 * 4];
+    for (size_t i = 0; i < sizeof texels; i++)
+        texels[i] = (uint8_t)next_u32();
+    mote_texture tex = {16, 8, MOTE_FORMAT_RGBA8888, 64, texels};
+    int variants = 0;
+    for (int fmt = 0; fmt < 2; fmt++)
+    for (int dfmt = 0; dfmt < 3; dfmt++)
+    for (int texk = 0; texk < 3; texk++)
+    for (int g = 0; g < 2; g++)
+    for (int p = 0; p < 3; p++) {
+        mote_format format = fmt ? MOTE_FORMAT_RGB565 : MOTE_FORMAT_RGBA8888;
+        mote_depth_format depthf = dfmt == 0 ? MOTE_DEPTH_FORMAT_NONE : dfmt == 1 ? MOTE_DEPTH_FORMAT_16 : MOTE_DEPTH_FORMAT_32;
+        mote__raster_state rs;
+        memset(&rs, 0, sizeof rs);
+        rs.tex = (mote__tex_kind)texk;
+        rs.texture = &tex;
+        rs.tex_w = 16;
+        rs.tex_h = 8;
+        rs.wrap_u = MOTE_WRAP_REPEAT;
+        rs.wrap_v = MOTE_WRAP_MIRROR;
+        rs.gouraud = g != 0;
+        rs.persp = (mote__persp_kind)p;
+        rs.subspan_log2 = 3;
+        rs.depth_test = rs.depth_write = depthf != MOTE_DEPTH_FORMAT_NONE;
+        mote__span_fn special = mote__span_select(&rs, format, depthf);
+        TEST_ASSERT_NOT_NULL(special);
+        variants += special != mote__span_generic;
+        memset(ca, 0, sizeof ca);
+        memset(cb, 0, sizeof cb);
+        memset(da, 0xff, sizeof da);
+        memset(db, 0xff, sizeof db);
+        uint64_t n = 0;
+        mote__target ta = {ca, W * 4, da, W, 0, format, depthf, &n}, tb = ta;
+        tb.color = cb;
+        tb.depth = db;
+        for (int t = 0; t < 40; t++) {
+            mote__cvert v[3];
+            int32_t X[3], Y[3];
+            for (int k = 0; k < 3; k++) {
+                X[k] = (int32_t)(next_u32() % ((W + 20) << 8)) - (10 << 8);
+                Y[k] = (int32_t)(next_u32() % ((H + 20) << 8)) - (10 << 8);
+                v[k].w = frand(0.2f, 5.0f);
+                v[k].z = frand(0.0f, 1.0f) * v[k].w;
+                v[k].x = v[k].y = 0.0f;
+                for (int c = 0; c < 3; c++)
+                    v[k].s[c] = frand(0.0f, 1.0f);
+                v[k].u = frand(-40.0f, 40.0f);
+                v[k].v = frand(-20.0f, 20.0f);
+            }
+            const mote__cvert *vp[3] = {&v[0], &v[1], &v[2]};
+            mote__tri tri;
+            rs.span = special;
+            if (!mote__setup(&tri, &rs, X, Y, vp, 8, W, H))
+                continue;
+            mote__rect all = {0, 0, W, H};
+            mote__raster_tri(&tri, &ta, all, 8);
+            mote__raster_state gen = rs;
+            gen.span = mote__span_generic;
+            tri.rs = &gen;
+            mote__raster_tri(&tri, &tb, all, 8);
+        }
+        TEST_ASSERT_EQUAL_MEMORY(cb, ca, sizeof ca);
+        TEST_ASSERT_EQUAL_MEMORY(db, da, sizeof da);
+    }
+    /* the table really is used for these combinations */
+    TEST_ASSERT_EQUAL_INT(2 * 3 * 3 * 2 * 3, variants);
+}
+
+/* ---- determinism ------------------------------------------------------------ */
+
+#define NV 600
+#define NT 900
+static mote_vertex verts[NV];
+static uint32_t indices[NT * 3];
+static uint8_t tex_pixels[32 * 32 * 4];
+static mote_texture tex32 = {32, 32, MOTE_FORMAT_RGBA8888, 128, tex_pixels};
+
+static void make_scene(mote_mesh meshes[3])
+{
+    for (int i = 0; i < NV; i++) {
+        for (int k = 0; k < 3; k++) {
+            verts[i].position[k] = frand(-2.0f, 2.0f);
+            verts[i].normal[k] = frand(-1.0f, 1.0f);
+        }
+        verts[i].uv[0] = frand(-1.0f, 2.0f);
+        verts[i].uv[1] = frand(-1.0f, 2.0f);
+    }
+    for (int i = 0; i < NT * 3; i++)
+        indices[i] = next_u32() % NV;
+    for (size_t i = 0; i < sizeof tex_pixels; i++)
+        tex_pixels[i] = (uint8_t)next_u32();
+    for (int m = 0; m < 3; m++) {
+        memset(&meshes[m], 0, sizeof meshes[m]);
+        meshes[m].vertices = verts;
+        meshes[m].vertex_count = NV;
+        meshes[m].indices = indices + m * NT;
+        meshes[m].index_count = NT;
+        meshes[m].position[0] = (float)m - 1.0f;
+        meshes[m].rotation[1] = 0.3f * (float)m;
+        meshes[m].material.texture = m == 1 ? NULL : &tex32;
+        meshes[m].material.color = (mote_rgba){(uint8_t)(100 + 70 * m), 200, 150, 255};
+        meshes[m].material.color_set = true;
+        mote_mesh_update_bounds(&meshes[m]);
+    }
+}
+
+typedef struct band_sink { uint8_t *frame; int stride; } band_sink;
+static void band_flush(void *user, int y0, int rows, const void *color, int stride)
+{
+    band_sink *s = (band_sink *)user;
+    for (int r = 0; r < rows; r++)
+        memcpy(s->frame + (size_t)(y0 + r) * (size_t)s->stride, (const uint8_t *)color + (size_t)r * (size_t)stride,
+               (size_t)s->stride);
+}
+
+/* Renders the scene with the given execution setup into out (RGBA). */
+static void render(const mote_mesh meshes[3], int band, void *arena, size_t arena_size, int tile,
+                   int threads, mote_draw_desc dd, uint8_t *out)
+{
+    static uint8_t color[W * H * 4];
+    static uint32_t depth[W * H];
+    band_sink sink = {out, W * 4};
+    mote_device dev;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = W;
+    d.height = H;
+    d.color = band ? color : out;
+    d.depth = depth;
+    d.clear_color = (mote_rgba){10, 20, 30, 255};
+    d.band_height = band;
+    d.flush = band_flush;
+    d.flush_user = &sink;
+    d.arena = arena;
+    d.arena_size = arena_size;
+    d.tile_size = tile;
+    d.parallel_for = threads ? mote_parallel_openmp : NULL;
+    d.parallel_user = &threads;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+    mote_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.camera.position[2] = -5.0f;
+    f.camera.position[1] = 1.0f;
+    f.camera.znear = 0.5f;
+    f.light_count = 2;
+    f.lights[0].type = MOTE_LIGHT_POINT;
+    f.lights[0].position[1] = 4.0f;
+    f.lights[1].type = MOTE_LIGHT_DIRECTIONAL;
+    f.lights[1].direction[0] = 1.0f;
+    f.lights[1].color[0] = 0.3f;
+    f.lights[1].color[1] = 0.1f;
+    f.lights[1].color[2] = 0.1f;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    for (int m = 0; m < 3; m++)
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[m], &dd));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+}
+
+void frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands(void)
+{
+    static uint8_t ref[W * H * 4], got[W * H * 4];
+    static uint64_t arena_big[(8u << 20) / 8], arena_small[(96u << 10) / 8];
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    mote_mode modes[] = {MOTE_MODE_TEXTURED, MOTE_MODE_FLAT, MOTE_MODE_GOURAUD, MOTE_MODE_WIREFRAME, MOTE_MODE_POINTS};
+    for (size_t mi = 0; mi < sizeof modes / sizeof modes[0]; mi++) {
+        mote_draw_desc dd;
+        memset(&dd, 0, sizeof dd);
+        dd.mode = modes[mi];
+        dd.cull = MOTE_CULL_NONE;
+        dd.filter = mi == 0 ? MOTE_FILTER_BILINEAR : MOTE_FILTER_NEAREST;
+        render(meshes, 0, NULL, 0, 64, 0, dd, ref);
+        /* something was drawn */
+        int lit = 0;
+        for (int i = 0; i < W * H; i++)
+            lit += ref[4 * i] != 10;
+        TEST_ASSERT_TRUE(lit > W * H / 20);
+        int tiles[] = {8, 16, 64, 256};
+        int threads[] = {0, 1, 2, 3, 4};
+        for (int ti = 0; ti < 4; ti++)
+            for (int th = 0; th < 5; th++) {
+                memset(got, 0, sizeof got);
+                render(meshes, 0, arena_big, sizeof arena_big, tiles[ti], threads[th], dd, got);
+                TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+            }
+        /* an arena that fills up several times per frame */
+        memset(got, 0, sizeof got);
+        render(meshes, 0, arena_small, sizeof arena_small, 16, 2, dd, got);
+        TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+        int bands[] = {1, 2, 3, 7, 16, 70};
+        for (int b = 0; b < 6; b++) {
+            memset(got, 0, sizeof got);
+            render(meshes, bands[b], NULL, 0, 64, 0, dd, got);
+            TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+        }
+    }
+}
+
+void a_small_arena_should_flush_and_say_so(void)
+{
+    static uint8_t out[W * H * 4], color[W * H * 4];
+    static uint32_t depth[W * H];
+    static uint64_t arena_small[(96u << 10) / 8];
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    mote_device dev;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = W;
+    d.height = H;
+    d.color = color;
+    d.depth = depth;
+    d.arena = arena_small;
+    d.arena_size = sizeof arena_small;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+    mote_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.camera.position[2] = -5.0f;
+    mote_begin(&dev, &f);
+    mote_draw_desc dd;
+    memset(&dd, 0, sizeof dd);
+    dd.cull = MOTE_CULL_NONE;
+    for (int m = 0; m < 3; m++)
+        mote_draw(&dev, &meshes[m], &dd);
+    mote_end(&dev);
+    TEST_ASSERT_TRUE(mote_device_stats(&dev)->arena_flushes > 0);
+    TEST_ASSERT_TRUE(mote_device_stats(&dev)->tiles_drawn > 0);
+    (void)out;
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(every_specialised_span_should_match_the_generic_span);
+    RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
+    RUN_TEST(a_small_arena_should_flush_and_say_so);
+    return UNITY_END();
+}
