@@ -366,6 +366,43 @@ void gouraud_shading_should_interpolate_vertex_intensities(void)
     TEST_ASSERT_TRUE(checked > 50);
 }
 
+void lighting_should_follow_the_mesh_rotation(void)
+{
+    /* a quad built facing -x, rotated 90 degrees about y to face the camera,
+     * must be lit like the same quad built facing the camera */
+    static mote_vertex v[4];
+    static uint32_t ii[6] = {0, 1, 2, 0, 2, 3};
+    float z = 5.0f, ax = (float)W / H * z;
+    /* rotation about y by +90 degrees maps local (x, y, z) to world
+     * (z, y, -x), so a world corner (X, Y, Z) is local (-Z, Y, X) */
+    float world[4][3] = {{-ax, z, z}, {ax, z, z}, {ax, -z, z}, {-ax, -z, z}};
+    memset(v, 0, sizeof v);
+    for (int i = 0; i < 4; i++) {
+        v[i].position[0] = -world[i][2];
+        v[i].position[1] = world[i][1];
+        v[i].position[2] = world[i][0];
+        v[i].normal[0] = 1.0f;        /* world normal (0, 0, -1) */
+    }
+    mote_mesh m;
+    memset(&m, 0, sizeof m);
+    m.vertices = v;
+    m.vertex_count = 4;
+    m.indices = ii;
+    m.index_count = 6;
+    m.rotation[1] = 1.5707964f;
+    frame.light_count = 1;
+    frame.lights[0].type = MOTE_LIGHT_DIRECTIONAL;
+    frame.lights[0].direction[0] = 0.8660254f;
+    frame.lights[0].direction[2] = 0.5f;
+    mote_draw_desc dd = {0};
+    dd.mode = MOTE_MODE_GOURAUD;
+    mote_begin(&dev, &frame);
+    mote_draw(&dev, &m, &dd);
+    mote_end(&dev);
+    TEST_ASSERT_EQUAL_UINT32(2, mote_device_stats(&dev)->triangles_drawn);
+    TEST_ASSERT_UINT8_WITHIN(1, 128, color[4 * (H / 2 * W + W / 2)]);
+}
+
 /* ---- textures --------------------------------------------------------------- */
 
 void each_texel_should_land_on_its_pixels(void)
@@ -581,6 +618,7 @@ int main(void)
     RUN_TEST(the_depth_test_should_not_depend_on_draw_order);
     RUN_TEST(flat_shading_should_use_the_face_normal_against_the_light);
     RUN_TEST(gouraud_shading_should_interpolate_vertex_intensities);
+    RUN_TEST(lighting_should_follow_the_mesh_rotation);
     RUN_TEST(each_texel_should_land_on_its_pixels);
     RUN_TEST(uvs_outside_zero_one_should_wrap_around);
     RUN_TEST(backface_culling_should_keep_exactly_the_faces_that_face_the_eye);

@@ -107,8 +107,8 @@ static const mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
         mote__mat4_point(cx->world, in->position, wp);
         for (int k = 0; k < 3; k++) {
             tv->world[k] = wp[k];
-            tv->normal[k] = cx->nrm[0 * 3 + k] * in->normal[0] + cx->nrm[1 * 3 + k] * in->normal[1]
-                          + cx->nrm[2 * 3 + k] * in->normal[2];
+            tv->normal[k] = cx->nrm[k * 3 + 0] * in->normal[0] + cx->nrm[k * 3 + 1] * in->normal[1]
+                          + cx->nrm[k * 3 + 2] * in->normal[2];
         }
         mote__normalize(tv->normal);
         if (!cx->flat)

@@ -31,7 +31,8 @@
 void mote__mat4_identity(float m[16]);
 void mote__mat4_mul(const float a[16], const float b[16], float out[16]);
 void mote__mat4_point(const float m[16], const float p[3], float out[4]);
-/* Inverse-transpose of the upper 3x3 (for normals), column-major 3x3. */
+/* Inverse-transpose of the upper 3x3 up to scale (the cofactor matrix, for
+ * normals), row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
 void mote__normal_matrix(const float m[16], float out[9]);
 float mote__sqrtf(float x);
 bool mote__finite(float x);
