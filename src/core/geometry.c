@@ -526,6 +526,9 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         rs_local.wrap_v = (mat->wrap_v > MOTE_WRAP_DEFAULT && mat->wrap_v < MOTE_WRAP_COUNT) ? mat->wrap_v : MOTE_WRAP_REPEAT;
         if (!cx.lit)
             rs_local.gouraud = false;
+        rs_local.pow2_repeat = rs_local.wrap_u == MOTE_WRAP_REPEAT && rs_local.wrap_v == MOTE_WRAP_REPEAT
+                            && (rs_local.tex_w & (rs_local.tex_w - 1)) == 0
+                            && (rs_local.tex_h & (rs_local.tex_h - 1)) == 0;
     }
     /* features that change nothing are dropped before choosing the span */
     bool varying = rs_local.gouraud || rs_local.tex != MOTE__TEX_NONE;

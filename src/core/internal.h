@@ -61,6 +61,7 @@ typedef struct mote__raster_state {
     const mote_texture *texture;
     int tex_w, tex_h;
     mote_wrap wrap_u, wrap_v;
+    bool pow2_repeat;             /* both axes repeat with power-of-two sizes */
     mote__tex_kind tex;
     mote__persp_kind persp;
     int subspan_log2;

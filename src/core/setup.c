@@ -37,6 +37,13 @@ static int32_t mote__floor_shift(int32_t a, int s)
     return a >= 0 ? a >> s : -(int32_t)((-(int64_t)a + (1 << s) - 1) >> s);
 }
 
+/* A shade in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
+static int32_t mote__shade_fixed(float s)
+{
+    int32_t v = (int32_t)(s * (float)MOTE__SHADE_ONE + 0.5f);
+    return v < 0 ? 0 : v > MOTE__SHADE_ONE ? MOTE__SHADE_ONE : v;
+}
+
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                  const int32_t Y[3], const mote__cvert *v[3], int F,
                  int width, int height)
@@ -119,9 +126,9 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
         for (int c = 0; c < 3; c++) {
-            int32_t s0 = (int32_t)(v[0]->s[c] * (float)MOTE__SHADE_ONE + 0.5f);
-            int32_t s1 = (int32_t)(v[1]->s[c] * (float)MOTE__SHADE_ONE + 0.5f);
-            int32_t s2 = (int32_t)(v[2]->s[c] * (float)MOTE__SHADE_ONE + 0.5f);
+            int32_t s0 = mote__shade_fixed(v[0]->s[c]);
+            int32_t s1 = mote__shade_fixed(v[1]->s[c]);
+            int32_t s2 = mote__shade_fixed(v[2]->s[c]);
             t->s0[c] = s0;
             t->ds1[c] = s1 - s0;
             t->ds2[c] = s2 - s0;
@@ -159,7 +166,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         }
     } else {
         for (int c = 0; c < 3; c++) {
-            t->s0[c] = (int32_t)(v[0]->s[c] * (float)MOTE__SHADE_ONE + 0.5f);
+            t->s0[c] = mote__shade_fixed(v[0]->s[c]);
             t->ds1[c] = t->ds2[c] = 0;
         }
     }

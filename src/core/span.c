@@ -25,29 +25,6 @@
 /* Depth buffer selector inside the body. */
 enum { MOTE__D_NONE = 0, MOTE__D_16 = 1, MOTE__D_32 = 2 };
 
-void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)
-{
-    switch (format) {
-    case MOTE_FORMAT_RGB565:
-    case MOTE_FORMAT_RGB565_SWAPPED: {
-        uint32_t v = ((r * 31 + 127) / 255) << 11 | ((g * 63 + 127) / 255) << 5 | ((b * 31 + 127) / 255);
-        if (format == MOTE_FORMAT_RGB565_SWAPPED)
-            v = ((v & 0xff) << 8) | (v >> 8);
-        ((uint16_t *)(void *)row)[x] = (uint16_t)v;
-        break;
-    }
-    case MOTE_FORMAT_GREY8:
-        row[x] = (uint8_t)((77 * r + 150 * g + 29 * b + 128) >> 8);
-        break;
-    default:
-        row[4 * x + 0] = (uint8_t)r;
-        row[4 * x + 1] = (uint8_t)g;
-        row[4 * x + 2] = (uint8_t)b;
-        row[4 * x + 3] = 255;
-        break;
-    }
-}
-
 MOTE__INLINE int mote__wrap(int i, int n, mote_wrap mode)
 {
     switch (mode) {
@@ -95,8 +72,14 @@ MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64
 {
     const mote_texture *tx = rs->texture;
     if (!bilinear) {
-        int tu = mote__wrap((int)(u >> 16), rs->tex_w, rs->wrap_u);
-        int tv = mote__wrap((int)(v >> 16), rs->tex_h, rs->wrap_v);
+        int tu, tv;
+        if (rs->pow2_repeat) {
+            tu = (int)(u >> 16) & (rs->tex_w - 1);
+            tv = (int)(v >> 16) & (rs->tex_h - 1);
+        } else {
+            tu = mote__wrap((int)(u >> 16), rs->tex_w, rs->wrap_u);
+            tv = mote__wrap((int)(v >> 16), rs->tex_h, rs->wrap_v);
+        }
         mote__texel(tx, tu, tv, c);
         return;
     }
@@ -128,6 +111,43 @@ MOTE__INLINE void mote__weights(int64_t p1, int64_t p2, int64_t q, int shift, in
     *b2 = b <= 0 ? 0 : (int64_t)(((uint64_t)b * r) >> (62 - MOTE__WEIGHT_BITS));
 }
 
+/* Packs a colour for a format: one store per pixel in the loop. */
+MOTE__INLINE uint32_t mote__pack(mote_format fmt, uint32_t r, uint32_t g, uint32_t b)
+{
+    if (fmt == MOTE_FORMAT_RGBA8888) {
+        uint8_t px[4] = {(uint8_t)r, (uint8_t)g, (uint8_t)b, 255};
+        uint32_t v;
+        memcpy(&v, px, 4);
+        return v;
+    }
+    if (fmt == MOTE_FORMAT_GREY8)
+        return (77 * r + 150 * g + 29 * b + 128) >> 8;
+    uint32_t v = ((r * 31 + 127) / 255) << 11 | ((g * 63 + 127) / 255) << 5 | ((b * 31 + 127) / 255);
+    return fmt == MOTE_FORMAT_RGB565_SWAPPED ? ((v & 0xff) << 8) | (v >> 8) : v;
+}
+
+MOTE__INLINE void mote__store(uint8_t *row, int x, mote_format fmt, uint32_t v)
+{
+    if (fmt == MOTE_FORMAT_RGBA8888)
+        memcpy(row + 4 * x, &v, 4);
+    else if (fmt == MOTE_FORMAT_GREY8)
+        row[x] = (uint8_t)v;
+    else
+        ((uint16_t *)(void *)row)[x] = (uint16_t)v;
+}
+
+/* (c * s + 2^23) >> 24 for a channel c and a shade s in [-1, 2^24]: in
+ * signed arithmetic so that s = -1 gives 0. */
+MOTE__INLINE uint32_t mote__modulate(uint32_t c, uint32_t s)
+{
+    return (uint32_t)(((int32_t)c * (int32_t)s + (1 << 23)) >> 24);
+}
+
+MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
+{
+    return v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
+}
+
 MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, int y, int x0, int x1,
                                   const int tex, const int gouraud, const int persp,
                                   const int dsel, const int dwrite, const mote_format fmt)
@@ -145,39 +165,51 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
     }
     uint16_t *d16 = dsel == MOTE__D_16 ? (uint16_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
     uint32_t *d32 = dsel == MOTE__D_32 ? (uint32_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
+    /* without Gouraud the shade is the triangle's; without a texture too,
+     * the pixel value is one constant */
+    uint32_t sr = mote__clamp_shade(t->s0[0]), sg = mote__clamp_shade(t->s0[1]), sb = mote__clamp_shade(t->s0[2]);
+    const uint32_t flat_px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
     /* sub-span state: weights at the segment start and per-pixel steps, 2^12 finer */
     int64_t sb1 = 0, sb2 = 0, sd1 = 0, sd2 = 0;
     int seg_left = 0;
     const int seg_len = 1 << rs->subspan_log2;
+    const bool test = rs->depth_test;
     uint32_t written = 0;
+    /* locals, not t->..., in the loop: the colour stores are through a byte
+     * pointer, which may alias *t, and would force reloads every pixel */
+    const int64_t zdx = t->zdx, p1dx = t->p1dx, p2dx = t->p2dx, qdx = t->qdx;
+    const int shift = t->shift;
+    const int32_t s0r = t->s0[0], s0g = t->s0[1], s0b = t->s0[2];
+    const int64_t d1r = t->ds1[0], d1g = t->ds1[1], d1b = t->ds1[2];
+    const int64_t d2r = t->ds2[0], d2g = t->ds2[1], d2b = t->ds2[2];
+    const int64_t u0 = t->u0, du1 = t->du1, du2 = t->du2, v0 = t->v0, dv1 = t->dv1, dv2 = t->dv2;
+    mote__raster_state rsl = *rs;
 
-    for (int x = x0; x < x1; x++, z += t->zdx, p1 += t->p1dx, p2 += t->p2dx, q += t->qdx) {
+    for (int x = x0; x < x1; x++, z += zdx, p1 += p1dx, p2 += p2dx, q += qdx) {
         uint32_t depth = 0;
         if (dsel != MOTE__D_NONE) {
             int64_t zz = z >> MOTE__DEPTH_FRAC;
             depth = zz < 0 ? 0u : zz > (int64_t)MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : (uint32_t)zz;
             if (dsel == MOTE__D_16)
                 depth >>= 8;
-            if (rs->depth_test) {
-                uint32_t stored = dsel == MOTE__D_16 ? d16[x] : d32[x];
-                if (depth >= stored)
-                    continue;
-            }
+            if (test && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x]))
+                continue;
         }
-        int64_t b1 = 0, b2 = 0;
+        uint32_t px = flat_px;
         if (weights) {
+            int64_t b1, b2;
             if (persp == MOTE__PERSP_SUBSPAN) {
                 if (seg_left == 0) {
                     int n = MOTE__MIN(seg_len, x1 - 1 - x);
                     int64_t e1, e2;
-                    mote__weights(p1, p2, q, t->shift, &b1, &b2);
+                    mote__weights(p1, p2, q, shift, &b1, &b2);
                     if (n > 0) {
-                        mote__weights(p1 + t->p1dx * n, p2 + t->p2dx * n, q + t->qdx * n, t->shift, &e1, &e2);
-                        sd1 = ((e1 - b1) << 12) / n;
-                        sd2 = ((e2 - b2) << 12) / n;
+                        mote__weights(p1 + p1dx * n, p2 + p2dx * n, q + qdx * n, shift, &e1, &e2);
+                        sd1 = ((e1 - b1) * 4096) / n;
+                        sd2 = ((e2 - b2) * 4096) / n;
                     }
-                    sb1 = b1 << 12;
-                    sb2 = b2 << 12;
+                    sb1 = b1 * 4096;
+                    sb2 = b2 * 4096;
                     seg_left = n > 0 ? n : 1;
                 }
                 b1 = sb1 >> 12;
@@ -186,29 +218,27 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
                 sb2 += sd2;
                 seg_left--;
             } else {
-                mote__weights(p1, p2, q, t->shift, &b1, &b2);
+                mote__weights(p1, p2, q, shift, &b1, &b2);
+            }
+            if (gouraud) {
+                /* b1, b2 >= 0 and b1 + b2 <= 1 inside the triangle, so this is
+                 * a convex combination of in-range shades, floored: at worst
+                 * -1, which the rounding below still maps to 0 */
+                sr = (uint32_t)(s0r + (int32_t)((b1 * d1r + b2 * d2r) >> MOTE__WEIGHT_BITS));
+                sg = (uint32_t)(s0g + (int32_t)((b1 * d1g + b2 * d2g) >> MOTE__WEIGHT_BITS));
+                sb = (uint32_t)(s0b + (int32_t)((b1 * d1b + b2 * d2b) >> MOTE__WEIGHT_BITS));
+            }
+            if (tex) {
+                int64_t u = u0 + ((b1 * du1 + b2 * du2) >> MOTE__WEIGHT_BITS);
+                int64_t v = v0 + ((b1 * dv1 + b2 * dv2) >> MOTE__WEIGHT_BITS);
+                uint32_t c[3];
+                mote__sample(&rsl, tex == MOTE__TEX_BILINEAR, u, v, c);
+                px = mote__pack(fmt, mote__modulate(c[0], sr), mote__modulate(c[1], sg), mote__modulate(c[2], sb));
+            } else {
+                px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
             }
         }
-        uint32_t s[3];
-        for (int k = 0; k < 3; k++) {
-            int64_t v = t->s0[k];
-            if (gouraud)
-                v += (b1 * t->ds1[k] + b2 * t->ds2[k]) >> MOTE__WEIGHT_BITS;
-            s[k] = v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
-        }
-        uint32_t out[3];
-        if (tex) {
-            int64_t u = t->u0 + ((b1 * t->du1 + b2 * t->du2) >> MOTE__WEIGHT_BITS);
-            int64_t v = t->v0 + ((b1 * t->dv1 + b2 * t->dv2) >> MOTE__WEIGHT_BITS);
-            uint32_t c[3];
-            mote__sample(rs, tex == MOTE__TEX_BILINEAR, u, v, c);
-            for (int k = 0; k < 3; k++)
-                out[k] = (c[k] * s[k] + (1u << 23)) >> 24;
-        } else {
-            for (int k = 0; k < 3; k++)
-                out[k] = (s[k] * 255u + (1u << 23)) >> 24;
-        }
-        mote__write_rgb(crow, x, fmt, out[0], out[1], out[2]);
+        mote__store(crow, x, fmt, px);
         if (dsel != MOTE__D_NONE && dwrite) {
             if (dsel == MOTE__D_16)
                 d16[x] = (uint16_t)depth;
@@ -218,6 +248,11 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
         written++;
     }
     *tg->pixels_written += written;
+}
+
+void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)
+{
+    mote__store(row, x, format, mote__pack(format, r, g, b));
 }
 
 static int mote__dsel(mote_depth_format f)
