@@ -579,6 +579,45 @@ void invalid_indices_and_nan_vertices_should_drop_triangles_not_the_frame(void)
     TEST_ASSERT_EQUAL_UINT32(1, mote_device_stats(&dev)->triangles_drawn);
 }
 
+void meshes_outside_the_frustum_should_be_rejected_whole_and_only_those(void)
+{
+    static uint8_t with_bounds[sizeof color];
+    mote_mesh cube = make_cube();
+    frame.camera.znear = 0.5f;
+    srand(9);
+    int culled = 0, kept = 0;
+    for (int iter = 0; iter < 300; iter++) {
+        cube.position[0] = (float)(rand() % 4000) / 100.0f - 20.0f;
+        cube.position[1] = (float)(rand() % 4000) / 100.0f - 20.0f;
+        cube.position[2] = (float)(rand() % 4000) / 100.0f - 10.0f;
+        cube.rotation[1] = (float)iter;
+        cube.scaling[0] = cube.scaling[1] = cube.scaling[2] = 0.5f + (float)(iter % 5);
+        /* with bounds */
+        mote_mesh_update_bounds(&cube);
+        mote_begin(&dev, &frame);
+        mote_draw(&dev, &cube, NULL);
+        mote_end(&dev);
+        memcpy(with_bounds, color, sizeof color);
+        uint32_t rejected = mote_device_stats(&dev)->meshes_culled;
+        /* without: the same pixels, whatever the rejection decided */
+        cube.bounds_radius = 0.0f;
+        mote_begin(&dev, &frame);
+        mote_draw(&dev, &cube, NULL);
+        mote_end(&dev);
+        TEST_ASSERT_EQUAL_UINT32(0, mote_device_stats(&dev)->meshes_culled);
+        TEST_ASSERT_EQUAL_MEMORY(color, with_bounds, sizeof color);
+        if (rejected) {
+            culled++;
+            TEST_ASSERT_EQUAL_UINT32(0, mote_device_stats(&dev)->triangles_drawn);
+        } else {
+            kept++;
+        }
+    }
+    /* both outcomes occurred, so the test exercised the rejection */
+    TEST_ASSERT_TRUE(culled > 50);
+    TEST_ASSERT_TRUE(kept > 20);
+}
+
 void device_init_should_reject_bad_descriptors(void)
 {
     mote_device d2;
@@ -624,6 +663,7 @@ int main(void)
     RUN_TEST(backface_culling_should_keep_exactly_the_faces_that_face_the_eye);
     RUN_TEST(the_tutorials_view_space_normal_test_would_fail_where_winding_does_not);
     RUN_TEST(invalid_indices_and_nan_vertices_should_drop_triangles_not_the_frame);
+    RUN_TEST(meshes_outside_the_frustum_should_be_rejected_whole_and_only_those);
     RUN_TEST(device_init_should_reject_bad_descriptors);
     return UNITY_END();
 }

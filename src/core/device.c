@@ -253,6 +253,8 @@ mote_result mote_end(mote_device *dev)
         return MOTE_OK;
     const mote_device_desc *d = &dev->desc;
     mote_result result = MOTE_OK;
+    mote_stats first_band;
+    memset(&first_band, 0, sizeof first_band);
     for (int y0 = 0; y0 < d->height; y0 += d->band_height) {
         int y1 = MOTE__MIN(y0 + d->band_height, d->height);
         mote__target tg;
@@ -268,6 +270,14 @@ mote_result mote_end(mote_device *dev)
                 result = r;
         }
         dev->stats.pixels_written += count;
+        /* each band replays every draw: count the triangles once */
+        if (y0 == 0) {
+            first_band = dev->stats;
+        } else {
+            uint64_t px = dev->stats.pixels_written;
+            dev->stats = first_band;
+            dev->stats.pixels_written = px;
+        }
         d->flush(d->flush_user, y0, y1 - y0, d->color, d->color_stride);
     }
     return result;

@@ -451,30 +451,36 @@ static bool mote__texture_ok(const mote_texture *t)
             || t->format == MOTE_FORMAT_GREY8);
 }
 
-/* Whole-mesh rejection: the bounding sphere against the view frustum. */
+/* Whole-mesh rejection: the bounding sphere against the view frustum. For a
+ * plane P (P . clip >= 0 inside) and a point c + d with |d| <= r,
+ * P . clip = P . (M c) + (P M') d where M' is the 3x4 linear part, so the
+ * sphere is outside when P . (M c) < -r |P M'| (Cauchy-Schwarz). */
 static bool mote__mesh_outside(const mote__ctx *cx)
 {
     const mote_mesh *m = cx->mesh;
     if (!(m->bounds_radius > 0.0f))
         return false;
+    static const float planes[6][4] = {
+        {1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1}, {0, 0, 1, 0}, {0, 0, -1, 1}};
     float c[4];
     mote__mat4_point(cx->mvp, m->bounds_center, c);
-    /* radius in clip space: scale by the largest column norm of mvp's 3x3,
-     * which bounds how far any point of the sphere can move in x, y, z, w */
-    float smax = 0.0f;
-    for (int col = 0; col < 3; col++) {
-        float s = 0.0f;
-        for (int row = 0; row < 4; row++)
-            s += cx->mvp[col * 4 + row] * cx->mvp[col * 4 + row];
-        smax = s > smax ? s : smax;
+    for (int p = 0; p < 6; p++) {
+        const float *P = planes[p];
+        float f = P[0] * c[0] + P[1] * c[1] + P[2] * c[2] + P[3] * c[3];
+        float g2 = 0.0f;
+        for (int j = 0; j < 3; j++) {
+            float g = 0.0f;
+            for (int k = 0; k < 4; k++)
+                g += P[k] * cx->mvp[j * 4 + k];
+            g2 += g * g;
+        }
+        float reach = m->bounds_radius * mote__sqrtf(g2);
+        if (!mote__finite(f) || !mote__finite(reach))
+            return false;
+        if (f < -reach * 1.0001f)
+            return true;
     }
-    float r = m->bounds_radius * mote__sqrtf(smax) * 1.7320508f; /* sqrt(3) for the 3 columns */
-    if (!mote__finite(r) || !mote__finite(c[3]))
-        return false;
-    /* outside one plane by more than r * |plane normal| (<= 2 for x+w etc.) */
-    float r2 = 2.0f * r;
-    return c[0] - c[3] > r2 || -c[0] - c[3] > r2 || c[1] - c[3] > r2 || -c[1] - c[3] > r2
-        || -c[2] > r || c[2] - c[3] > r2;
+    return false;
 }
 
 mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
