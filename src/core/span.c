@@ -99,16 +99,24 @@ MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64
                 + e[k] * fu * fv + 32768) >> 16;
 }
 
-/* Perspective weights b1, b2 (2^20 = 1) from the stepped planes. */
-MOTE__INLINE void mote__weights(int64_t p1, int64_t p2, int64_t q, int shift, int64_t *b1, int64_t *b2)
+/* 2^62 / (q >> shift): the one division per pixel. */
+MOTE__INLINE uint64_t mote__recip(int64_t q, int shift)
 {
     uint64_t q32 = (uint64_t)(q >> shift);
-    if (q32 == 0)
-        q32 = 1;
-    uint64_t r = ((uint64_t)1 << 62) / q32;
+    return ((uint64_t)1 << 62) / (q32 ? q32 : 1);
+}
+
+/* Perspective weights b1 = P1/Q, b2 = P2/Q (2^20 = 1), given r = recip(Q). */
+MOTE__INLINE void mote__weights_r(int64_t p1, int64_t p2, int shift, uint64_t r, int64_t *b1, int64_t *b2)
+{
     int64_t a = p1 >> shift, b = p2 >> shift;
     *b1 = a <= 0 ? 0 : (int64_t)(((uint64_t)a * r) >> (62 - MOTE__WEIGHT_BITS));
     *b2 = b <= 0 ? 0 : (int64_t)(((uint64_t)b * r) >> (62 - MOTE__WEIGHT_BITS));
+}
+
+MOTE__INLINE void mote__weights(int64_t p1, int64_t p2, int64_t q, int shift, int64_t *b1, int64_t *b2)
+{
+    mote__weights_r(p1, p2, shift, mote__recip(q, shift), b1, b2);
 }
 
 /* Packs a colour for a format: one store per pixel in the loop. */
@@ -184,6 +192,8 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
     const int64_t d2r = t->ds2[0], d2g = t->ds2[1], d2b = t->ds2[2];
     const int64_t u0 = t->u0, du1 = t->du1, du2 = t->du2, v0 = t->v0, dv1 = t->dv1, dv2 = t->dv2;
     mote__raster_state rsl = *rs;
+    /* affine: all qi are 1, so Q is constant and so is its reciprocal */
+    const uint64_t affine_r = (weights && persp == MOTE__PERSP_AFFINE) ? mote__recip(q, shift) : 0;
 
     for (int x = x0; x < x1; x++, z += zdx, p1 += p1dx, p2 += p2dx, q += qdx) {
         uint32_t depth = 0;
@@ -217,6 +227,8 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
                 sb1 += sd1;
                 sb2 += sd2;
                 seg_left--;
+            } else if (persp == MOTE__PERSP_AFFINE) {
+                mote__weights_r(p1, p2, shift, affine_r, &b1, &b2);
             } else {
                 mote__weights(p1, p2, q, shift, &b1, &b2);
             }
