@@ -12,7 +12,7 @@ const char *mote_result_string(mote_result result)
         MOTE__RESULTS(MOTE__NAME)
 #undef MOTE__NAME
     };
-    if ((int)result < 0 || result >= MOTE_RESULT_COUNT)
+    if ((unsigned)result >= (unsigned)MOTE_RESULT_COUNT)
         return "unknown result";
     return names[result];
 }
@@ -147,7 +147,8 @@ void mote__clear_rows(const mote_device *dev, const mote__target *tg, int y0, in
             memcpy(tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride, row0, bytes);
     }
     if (!dev->frame.keep_depth && d->depth_format != MOTE_DEPTH_FORMAT_NONE) {
-        uint32_t v = (uint32_t)((double)d->clear_depth * (double)MOTE__DEPTH_MAX + 0.5);
+        float fv = d->clear_depth * (float)MOTE__DEPTH_MAX + 0.5f;
+        uint32_t v = fv >= (float)MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : (uint32_t)fv;
         size_t n = (size_t)w * (size_t)(y1 - y0), off = (size_t)(y0 - tg->y0) * (size_t)w;
         if (d->depth_format == MOTE_DEPTH_FORMAT_16) {
             uint16_t *p = (uint16_t *)d->depth + off;

@@ -14,7 +14,12 @@ typedef struct mote__tvert {
     uint32_t index;
 } mote__tvert;
 
-#define MOTE__SMALL_CACHE 32      /* direct-mapped cache without an arena */
+/* Direct-mapped vertex cache used without an arena (a power of two; each
+ * entry is about 90 bytes of stack). */
+#ifndef MOTE_VERTEX_CACHE
+#define MOTE_VERTEX_CACHE 32
+#endif
+#define MOTE__SMALL_CACHE MOTE_VERTEX_CACHE
 
 typedef struct mote__ctx {
     mote_device *dev;
@@ -216,13 +221,39 @@ static unsigned mote__outcode(const mote__ctx *cx, const mote__cvert *v)
 
 /* ---- snapping ------------------------------------------------------------ */
 
-/* floor(v + 0.5): nearest grid point, halves upward */
-static int32_t mote__round_half_up(double v)
+/* round_half_up(n * h + h) exactly, for a float n and an integer h: the
+ * float is split into its 24-bit mantissa and exponent, so the product is
+ * an exact 64-bit integer; no double arithmetic (costly without an FPU) and
+ * the same answer on every target. False when |n * h| is out of range. */
+static bool mote__snap_axis(float n, int64_t h, int64_t lim, int32_t *out)
 {
-    int64_t t = (int64_t)(v + 0.5);
-    if ((double)t > v + 0.5)
-        t--;
-    return (int32_t)t;
+    union { float f; uint32_t u; } b;
+    b.f = n;
+    int exp = (int)((b.u >> 23) & 0xff);
+    int64_t v;                    /* round_half_up(n * h) */
+    if (exp == 0) {
+        v = 0;                    /* zero or denormal */
+    } else {
+        int64_t p = (int64_t)((b.u & 0x7fffffu) | 0x800000u) * h;  /* < 2^24 * 2^20 */
+        int e = exp - 127 - 23;
+        bool neg = (b.u >> 31) != 0;
+        if (e >= 0) {
+            if (e > 16)
+                return false;     /* |n| >= 2^40: far outside the guard band */
+            v = neg ? -(p << e) : (p << e);
+        } else if (-e >= 62) {
+            v = 0;
+        } else {
+            int k = -e;
+            int64_t half = (int64_t)1 << (k - 1);
+            v = neg ? -((p + half - 1) >> k) : (p + half) >> k;
+        }
+    }
+    v += h;
+    if (v <= -lim || v >= lim)
+        return false;
+    *out = (int32_t)v;
+    return true;
 }
 
 static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, int32_t *Y)
@@ -231,17 +262,10 @@ static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, in
         return false;
     const mote_device *dev = cx->dev;
     int F = dev->desc.subpixel_bits;
-    double hw = (double)dev->desc.width * (double)(1 << F) * 0.5;
-    double hh = (double)dev->desc.height * (double)(1 << F) * 0.5;
-    double nx = (double)(v->x / v->w), ny = (double)(v->y / v->w);
-    double sx = nx * hw + hw, sy = hh - ny * hh;
-    /* the guard band bounds these; the clamp only catches float rounding */
-    double lim = (double)((int64_t)1 << (MOTE_GUARD_BITS + 1 + F));
-    if (!(sx > -lim && sx < lim && sy > -lim && sy < lim))
-        return false;
-    *X = mote__round_half_up(sx);
-    *Y = mote__round_half_up(sy);
-    return true;
+    int64_t hw = (int64_t)dev->desc.width << (F - 1), hh = (int64_t)dev->desc.height << (F - 1);
+    /* the guard band bounds these; the limit only catches float rounding */
+    int64_t lim = (int64_t)1 << (MOTE_GUARD_BITS + 1 + F);
+    return mote__snap_axis(v->x / v->w, hw, lim, X) && mote__snap_axis(-(v->y / v->w), hh, lim, Y);
 }
 
 /* ---- triangles ----------------------------------------------------------- */

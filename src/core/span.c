@@ -144,11 +144,13 @@ MOTE__INLINE void mote__store(uint8_t *row, int x, mote_format fmt, uint32_t v)
         ((uint16_t *)(void *)row)[x] = (uint16_t)v;
 }
 
-/* (c * s + 2^23) >> 24 for a channel c and a shade s in [-1, 2^24]: in
- * signed arithmetic so that s = -1 gives 0. */
+/* (c * s + 2^23) >> 24 for a channel c <= 255 and a shade s in [-1, 2^24]
+ * (a Gouraud shade may come out one below zero, see below); unsigned, since
+ * 255 * 2^24 does not fit in int32. */
 MOTE__INLINE uint32_t mote__modulate(uint32_t c, uint32_t s)
 {
-    return (uint32_t)(((int32_t)c * (int32_t)s + (1 << 23)) >> 24);
+    uint32_t sp = (int32_t)s < 0 ? 0u : s;
+    return (c * sp + (1u << 23)) >> 24;
 }
 
 MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
