@@ -10,7 +10,11 @@
  * Overflow: snapped coordinates are within +-2^(GUARD+1+8) = 2^22, so an
  * edge function over the bounding box is below 2^46; qbits is chosen per
  * triangle so that |Q| < 2^62. Depth is linear in screen space; its plane is
- * computed in double (53 bits) and stepped as 24.16 fixed point.
+ * exact to rounding (24.16 fixed point), computed in 64-bit integers.
+ *
+ * The planes' origin is the pixel holding vertex 0, where E1 and E2 are
+ * small (both vanish at vertex 0), so the depth products fit in 64 bits.
+ * No double arithmetic: a core without an FPU pays only for float.
  */
 #include "internal.h"
 
@@ -26,9 +30,38 @@ static int mote__bitlen(uint64_t v)
 
 static int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
 
-static int64_t mote__round_d(double d)
+/* round(f) for a float that fits in int64, halves away from zero */
+static int64_t mote__round_f(float f)
 {
-    return (int64_t)(d >= 0.0 ? d + 0.5 : d - 0.5);
+    int64_t t = (int64_t)f;       /* toward zero */
+    float frac = f - (float)t;
+    if (frac >= 0.5f)
+        t++;
+    else if (frac <= -0.5f)
+        t--;
+    return t;
+}
+
+static int64_t mote__floor_div64(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    if ((a % b != 0) && ((a < 0) != (b < 0)))
+        q--;
+    return q;
+}
+
+/* round(n * 2^16 / d) for |n| < 2^58 and 0 < d < 2^47, saturated to
+ * +-2^44: only slivers far thinner than a pixel reach that, and their depth
+ * gradient then stays small enough that stepping cannot overflow. */
+static int64_t mote__scaled_div(int64_t n, int64_t d)
+{
+    int64_t q = mote__floor_div64(n, d), r = n - q * d;   /* 0 <= r < d */
+    const int64_t cap = (int64_t)1 << 28;  /* 16x the whole depth range per pixel */
+    if (q >= cap)
+        return cap * 65536;
+    if (q < -cap)
+        return -cap * 65536;
+    return q * 65536 + ((r * 65536 + d / 2) / d);
 }
 
 /* floor(a / 2^s) for signed a */
@@ -73,13 +106,15 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     t->xmax = (int16_t)x1;
     t->ymin = (int16_t)y0;
     t->ymax = (int16_t)y1;
-    t->ox = (int16_t)x0;
-    t->oy = (int16_t)y0;
+    /* origin: the pixel holding vertex 0 (in the guard band, so int16 fits) */
+    const int ox = mote__floor_shift(X[0], F), oy = mote__floor_shift(Y[0], F);
+    t->ox = (int16_t)ox;
+    t->oy = (int16_t)oy;
 
     /* Edge function of vertex i (zero on the opposite edge, 2*area at vertex
      * i), at the origin pixel centre, and its steps per pixel. */
     const int64_t sign = area2 > 0 ? 1 : -1;
-    const int64_t cx = (int64_t)x0 * one + half, cy = (int64_t)y0 * one + half;
+    const int64_t cx = (int64_t)ox * one + half, cy = (int64_t)oy * one + half;
     int64_t e[3], edx[3], edy[3], emax = 0;
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3, k = (i + 2) % 3;
@@ -88,8 +123,9 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         edx[i] = -sign * ay * one;
         edy[i] = sign * ax * one;
         /* largest |E| over the box: at one of its corners (E is linear) */
-        int64_t w = (int64_t)(x1 - x0), h = (int64_t)(y1 - y0);
-        int64_t c0 = e[i], c1 = e[i] + edx[i] * w, c2 = e[i] + edy[i] * h, c3 = c1 + edy[i] * h;
+        int64_t ex0 = (int64_t)(x0 - ox), ex1 = (int64_t)(x1 - ox), ey0 = (int64_t)(y0 - oy), ey1 = (int64_t)(y1 - oy);
+        int64_t c0 = e[i] + edx[i] * ex0 + edy[i] * ey0, c1 = e[i] + edx[i] * ex1 + edy[i] * ey0;
+        int64_t c2 = e[i] + edx[i] * ex0 + edy[i] * ey1, c3 = e[i] + edx[i] * ex1 + edy[i] * ey1;
         emax = MOTE__MAX(emax, MOTE__MAX(MOTE__MAX(mote__abs64(c0), mote__abs64(c1)),
                                          MOTE__MAX(mote__abs64(c2), mote__abs64(c3))));
     }
@@ -108,7 +144,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         } else {
             float wmin = MOTE__MIN(v[0]->w, MOTE__MIN(v[1]->w, v[2]->w));
             for (int i = 0; i < 3; i++) {
-                q[i] = mote__round_d((double)((int64_t)1 << qbits) * (double)wmin / (double)v[i]->w);
+                q[i] = mote__round_f((float)((int64_t)1 << qbits) * (wmin / v[i]->w));
                 if (q[i] < 1)
                     q[i] = 1;
             }
@@ -135,32 +171,25 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         }
         if (rs->tex != MOTE__TEX_NONE) {
             /* texels in 16.16; whole periods removed so numbers stay small */
-            double u[3], vv[3];
-            double umin = 1e300, vmin = 1e300;
-            for (int i = 0; i < 3; i++) {
-                u[i] = (double)v[i]->u * 65536.0;
-                vv[i] = (double)v[i]->v * 65536.0;
-                if (u[i] < umin) umin = u[i];
-                if (vv[i] < vmin) vmin = vv[i];
-            }
-            double pu = 0.0, pv = 0.0;
-            if (rs->wrap_u == MOTE_WRAP_REPEAT || rs->wrap_u == MOTE_WRAP_MIRROR) {
-                double period = 65536.0 * rs->tex_w * (rs->wrap_u == MOTE_WRAP_MIRROR ? 2 : 1);
-                pu = period * (double)(int64_t)(umin / period - (umin < 0 ? 1 : 0));
-            }
-            if (rs->wrap_v == MOTE_WRAP_REPEAT || rs->wrap_v == MOTE_WRAP_MIRROR) {
-                double period = 65536.0 * rs->tex_h * (rs->wrap_v == MOTE_WRAP_MIRROR ? 2 : 1);
-                pv = period * (double)(int64_t)(vmin / period - (vmin < 0 ? 1 : 0));
-            }
             int64_t U[3], V[3];
             for (int i = 0; i < 3; i++) {
-                U[i] = mote__round_d(u[i] - pu);
-                V[i] = mote__round_d(vv[i] - pv);
+                U[i] = mote__round_f(v[i]->u * 65536.0f);
+                V[i] = mote__round_f(v[i]->v * 65536.0f);
             }
-            t->u0 = U[0];
+            int64_t umin = MOTE__MIN(U[0], MOTE__MIN(U[1], U[2])), vmin = MOTE__MIN(V[0], MOTE__MIN(V[1], V[2]));
+            int64_t pu = 0, pv = 0;
+            if (rs->wrap_u != MOTE_WRAP_CLAMP) {
+                int64_t period = ((int64_t)rs->tex_w << 16) * (rs->wrap_u == MOTE_WRAP_MIRROR ? 2 : 1);
+                pu = mote__floor_div64(umin, period) * period;
+            }
+            if (rs->wrap_v != MOTE_WRAP_CLAMP) {
+                int64_t period = ((int64_t)rs->tex_h << 16) * (rs->wrap_v == MOTE_WRAP_MIRROR ? 2 : 1);
+                pv = mote__floor_div64(vmin, period) * period;
+            }
+            t->u0 = U[0] - pu;
             t->du1 = U[1] - U[0];
             t->du2 = U[2] - U[0];
-            t->v0 = V[0];
+            t->v0 = V[0] - pv;
             t->dv1 = V[1] - V[0];
             t->dv2 = V[2] - V[0];
         }
@@ -172,17 +201,19 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     }
 
     if (rs->depth_test || rs->depth_write) {
-        double d[3];
+        int64_t d[3];
         for (int i = 0; i < 3; i++) {
-            double z = (double)v[i]->z / (double)v[i]->w;
-            z = z < 0.0 ? 0.0 : z > 1.0 ? 1.0 : z;
-            d[i] = (double)mote__round_d(z * (double)MOTE__DEPTH_MAX);
+            float z = v[i]->z / v[i]->w;
+            z = z < 0.0f ? 0.0f : z > 1.0f ? 1.0f : z;
+            d[i] = mote__round_f(z * (float)MOTE__DEPTH_MAX);
         }
-        const double scale = (double)(1 << MOTE__DEPTH_FRAC) / (double)a2;
-        double d1 = d[1] - d[0], d2 = d[2] - d[0];
-        t->z = mote__round_d(d[0] * (1 << MOTE__DEPTH_FRAC) + ((double)e[1] * d1 + (double)e[2] * d2) * scale);
-        t->zdx = mote__round_d(((double)edx[1] * d1 + (double)edx[2] * d2) * scale);
-        t->zdy = mote__round_d(((double)edy[1] * d1 + (double)edy[2] * d2) * scale);
+        /* D(x, y) = D0 + (E1 (D1 - D0) + E2 (D2 - D0)) / (2 area); E1, E2 at
+         * the origin are below 2^32 (both vanish at vertex 0), steps below
+         * 2^32, depth differences below 2^25: all products fit */
+        int64_t d1 = d[1] - d[0], d2 = d[2] - d[0];
+        t->z = d[0] * 65536 + mote__scaled_div(e[1] * d1 + e[2] * d2, a2);
+        t->zdx = mote__scaled_div(edx[1] * d1 + edx[2] * d2, a2);
+        t->zdy = mote__scaled_div(edy[1] * d1 + edy[2] * d2, a2);
     }
     return true;
 }

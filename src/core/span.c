@@ -16,10 +16,12 @@
 #define MOTE_SPECIALISE_SPANS 1
 #endif
 
-#if defined(__GNUC__)
+/* Specialised variants need the body inlined with constant features; the
+ * generic-only build lets the compiler keep helpers out of line (smaller). */
+#if defined(__GNUC__) && MOTE_SPECIALISE_SPANS
 #define MOTE__INLINE static inline __attribute__((always_inline))
 #else
-#define MOTE__INLINE static inline
+#define MOTE__INLINE static
 #endif
 
 /* Depth buffer selector inside the body. */
