@@ -37,9 +37,10 @@ void setUp(void)
 
 void tearDown(void) {}
 
-/* A quad in the plane z, corners given in view space, clockwise on screen. */
+/* A quad in the plane z, corners given in view space, wound counter-clockwise
+ * on screen (front facing, as Babylon files are). */
 static mote_vertex quad_v[4];
-static uint32_t quad_i[6] = {0, 1, 2, 0, 2, 3};
+static uint32_t quad_i[6] = {0, 2, 1, 0, 3, 2};
 
 static mote_mesh make_quad(float x0, float y0, float x1, float y1, float z)
 {
@@ -114,7 +115,7 @@ static int count_lit(const uint8_t *buf, int w, int h)
 void bresenham_lines_should_hit_both_endpoints_and_stay_connected(void)
 {
     mote_rgba white = {255, 255, 255, 255};
-    uint64_t counter = 0;
+    mote__counts counter = {0, 0};
     mote__target tg = {color, W * 4, NULL, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &counter};
     mote__rect all = {0, 0, W, H};
     srand(7);
@@ -143,7 +144,7 @@ void lines_clipped_to_a_region_should_draw_the_same_pixels_inside_it(void)
 {
     static uint8_t full[W * H * 4];
     mote_rgba white = {255, 255, 255, 255};
-    uint64_t counter = 0;
+    mote__counts counter = {0, 0};
     mote__target tg = {color, W * 4, NULL, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &counter};
     srand(11);
     for (int iter = 0; iter < 300; iter++) {
@@ -326,7 +327,7 @@ void gouraud_shading_should_interpolate_vertex_intensities(void)
      * perspective-correct equals screen-linear); check the values at pixels
      * against barycentric interpolation computed here */
     static mote_vertex v[3];
-    static uint32_t ii[3] = {0, 1, 2};
+    static uint32_t ii[3] = {0, 2, 1};   /* counter-clockwise on screen */
     memset(v, 0, sizeof v);
     float z = 5.0f, ax = (float)W / H * z;
     float p[3][3] = {{-ax, z, z}, {ax, z, z}, {-ax, -z, z}};
@@ -371,7 +372,7 @@ void lighting_should_follow_the_mesh_rotation(void)
     /* a quad built facing -x, rotated 90 degrees about y to face the camera,
      * must be lit like the same quad built facing the camera */
     static mote_vertex v[4];
-    static uint32_t ii[6] = {0, 1, 2, 0, 2, 3};
+    static uint32_t ii[6] = {0, 2, 1, 0, 3, 2};
     float z = 5.0f, ax = (float)W / H * z;
     /* rotation about y by +90 degrees maps local (x, y, z) to world
      * (z, y, -x), so a world corner (X, Y, Z) is local (-Z, Y, X) */
@@ -465,9 +466,9 @@ static uint32_t cube_i[36];
 
 static mote_mesh make_cube(void)
 {
-    /* faces wound clockwise seen from outside (Babylon's front faces) */
+    /* faces wound counter-clockwise seen from outside (Babylon's front faces) */
     static const uint32_t faces[6][4] = {
-        {0, 1, 2, 3}, {5, 4, 7, 6}, {4, 0, 3, 7}, {1, 5, 6, 2}, {4, 5, 1, 0}, {3, 2, 6, 7}};
+        {3, 2, 1, 0}, {6, 7, 4, 5}, {7, 3, 0, 4}, {2, 6, 5, 1}, {0, 1, 5, 4}, {7, 6, 2, 3}};
     for (int i = 0; i < 8; i++) {
         cube_v[i].position[0] = (i == 1 || i == 2 || i == 5 || i == 6) ? 1.0f : -1.0f;
         cube_v[i].position[1] = (i == 0 || i == 1 || i == 4 || i == 5) ? 1.0f : -1.0f;
@@ -563,7 +564,7 @@ void the_tutorials_view_space_normal_test_would_fail_where_winding_does_not(void
 void invalid_indices_and_nan_vertices_should_drop_triangles_not_the_frame(void)
 {
     mote_mesh q = screen_quad(5.0f);
-    static uint32_t bad[9] = {0, 1, 2, 0, 2, 99, 0, 2, 3};
+    static uint32_t bad[9] = {0, 2, 1, 0, 99, 2, 0, 3, 2};
     q.indices = bad;
     q.index_count = 9;
     mote_begin(&dev, &frame);

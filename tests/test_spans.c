@@ -62,7 +62,7 @@ void every_specialised_span_should_match_the_generic_span(void)
         memset(cb, 0, sizeof cb);
         memset(da, 0xff, sizeof da);
         memset(db, 0xff, sizeof db);
-        uint64_t n = 0;
+        mote__counts n = {0, 0};
         mote__target ta = {ca, W * 4, da, W, 0, format, depthf, &n}, tb = ta;
         tb.color = cb;
         tb.depth = db;

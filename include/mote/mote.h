@@ -64,8 +64,9 @@
  *               triangles sharing an edge never leave a gap and never both
  *               draw a pixel. Triangles with zero snapped area draw nothing.
  *   Winding:    front faces are those whose snapped screen-space vertices
- *               run clockwise (as Babylon.js exports them); see
- *               mote_draw_desc.front_ccw and .cull.
+ *               run counter-clockwise as seen on the screen (the tutorial's
+ *               monkey.babylon and Babylon.js exports, checked by the tests
+ *               on that file); see mote_draw_desc.front_face and .cull.
  *   Clipping:   in homogeneous space against near, far and a guard band of
  *               +-MOTE_GUARD_BAND pixels around the viewport, so that the
  *               fixed-point raster never overflows. Points and lines are
@@ -319,6 +320,13 @@ typedef enum mote_perspective {
     MOTE_PERSPECTIVE_COUNT
 } mote_perspective;
 
+typedef enum mote_front_face {
+    MOTE_FRONT_DEFAULT = 0,       /* counter-clockwise on screen */
+    MOTE_FRONT_CCW,
+    MOTE_FRONT_CW,
+    MOTE_FRONT_COUNT
+} mote_front_face;
+
 typedef enum mote_cull {
     MOTE_CULL_DEFAULT = 0,        /* back faces */
     MOTE_CULL_BACK,
@@ -331,7 +339,7 @@ typedef enum mote_cull {
 typedef struct mote_draw_desc {
     mote_mode mode;
     mote_cull cull;
-    bool front_ccw;               /* counter-clockwise screen winding is front */
+    mote_front_face front_face;   /* which screen winding is the front */
     mote_perspective perspective;
     int subspan_log2;             /* for SUBSPAN: 0 = 3 (8 pixels), at most 6 */
     mote_filter filter;

@@ -14,7 +14,7 @@
 
 typedef struct mote__tile {
     uint32_t head, tail;          /* arena offsets of list blocks; 0 = none */
-    uint64_t pixels;
+    mote__counts counts;
 } mote__tile;
 
 typedef struct mote__block {
@@ -121,7 +121,7 @@ static void mote__raster_tile(void *arg, int index)
     mote__rect r = {tx * ts, ty * ts, MOTE__MIN((tx + 1) * ts, dev->desc.width),
                     MOTE__MIN((ty + 1) * ts, dev->desc.height)};
     mote__target tg;
-    uint64_t count = 0;
+    mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
     for (uint32_t off = tile->head; off;) {
         const mote__block *blk = (const mote__block *)(const void *)(b->base + off);
@@ -130,7 +130,7 @@ static void mote__raster_tile(void *arg, int index)
                              dev->desc.subpixel_bits);
         off = blk->next;
     }
-    tile->pixels = count;
+    tile->counts = count;
 }
 
 void mote__bin_flush(mote_device *dev)
@@ -147,7 +147,7 @@ void mote__bin_flush(mote_device *dev)
         for (int i = 0; i < n; i++) {
             if (tiles[i].head) {
                 dev->stats.tiles_drawn++;
-                dev->stats.pixels_written += tiles[i].pixels;
+                mote__add_counts(dev, &tiles[i].counts);
             } else {
                 dev->stats.tiles_empty++;
             }

@@ -56,7 +56,7 @@ mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc)
         d.depth_format = MOTE_DEPTH_FORMAT_32;
     if (d.color_stride == 0)
         d.color_stride = d.width * mote_format_bytes(d.color_format);
-    if (d.clear_depth <= 0.0f || d.clear_depth > 1.0f)
+    if (!(d.clear_depth > 0.0f && d.clear_depth <= 1.0f))   /* also NaN */
         d.clear_depth = 1.0f;
     if (d.subpixel_bits == 0)
         d.subpixel_bits = 8;
@@ -119,7 +119,13 @@ const mote_stats *mote_device_stats(const mote_device *dev)
 
 /* ---- targets and clearing ---------------------------------------------- */
 
-void mote__full_target(const mote_device *dev, mote__target *tg, uint64_t *counter)
+void mote__add_counts(mote_device *dev, const mote__counts *counts)
+{
+    dev->stats.pixels_tested += counts->tested;
+    dev->stats.pixels_written += counts->written;
+}
+
+void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *counts)
 {
     tg->color = (uint8_t *)dev->desc.color;
     tg->stride = dev->desc.color_stride;
@@ -128,7 +134,7 @@ void mote__full_target(const mote_device *dev, mote__target *tg, uint64_t *count
     tg->y0 = 0;
     tg->format = dev->desc.color_format;
     tg->depth_format = dev->desc.depth_format;
-    tg->pixels_written = counter;
+    tg->counts = counts;
 }
 
 void mote__clear_rows(const mote_device *dev, const mote__target *tg, int y0, int y1)
@@ -194,7 +200,7 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     dev->in_frame = true;
     if (!mote__band_mode(dev)) {
         mote__target tg;
-        uint64_t count = 0;
+        mote__counts count = {0, 0};
         mote__full_target(dev, &tg, &count);
         mote__clear_rows(dev, &tg, 0, dev->desc.height);
     }
@@ -221,7 +227,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
     }
     mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
     mote__target tg;
-    uint64_t count = 0;
+    mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
     mote_draw_desc d;
     mote__resolve_draw_desc(draw, mesh, &d);
@@ -235,7 +241,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
             mote__bin_flush(dev);
         r = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all);
     }
-    dev->stats.pixels_written += count;
+    mote__add_counts(dev, &count);
     return r;
 }
 
@@ -259,7 +265,7 @@ mote_result mote_end(mote_device *dev)
     for (int y0 = 0; y0 < d->height; y0 += d->band_height) {
         int y1 = MOTE__MIN(y0 + d->band_height, d->height);
         mote__target tg;
-        uint64_t count = 0;
+        mote__counts count = {0, 0};
         mote__full_target(dev, &tg, &count);
         tg.y0 = y0;
         mote__clear_rows(dev, &tg, y0, y1);
@@ -270,14 +276,15 @@ mote_result mote_end(mote_device *dev)
             if (r != MOTE_OK)
                 result = r;
         }
-        dev->stats.pixels_written += count;
+        mote__add_counts(dev, &count);
         /* each band replays every draw: count the triangles once */
         if (y0 == 0) {
             first_band = dev->stats;
         } else {
-            uint64_t px = dev->stats.pixels_written;
+            mote_stats now = dev->stats;
             dev->stats = first_band;
-            dev->stats.pixels_written = px;
+            dev->stats.pixels_tested = now.pixels_tested;
+            dev->stats.pixels_written = now.pixels_written;
         }
         d->flush(d->flush_user, y0, y1 - y0, d->color, d->color_stride);
     }

@@ -279,7 +279,7 @@ static int64_t mote__area2(const int32_t X[3], const int32_t Y[3])
 static bool mote__culled(const mote__ctx *cx, int64_t area2)
 {
     bool clockwise = area2 > 0;   /* y grows downward */
-    bool front = cx->d.front_ccw ? !clockwise : clockwise;
+    bool front = cx->d.front_face == MOTE_FRONT_CW ? clockwise : !clockwise;
     if (cx->d.cull == MOTE_CULL_BACK)
         return !front;
     if (cx->d.cull == MOTE_CULL_FRONT)
@@ -317,11 +317,11 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
             if (!rs || !mote__bin_triangle(dev, &t)) {
                 /* a single triangle does not fit: draw it directly */
                 mote__target tg;
-                uint64_t count = 0;
+                mote__counts count = {0, 0};
                 mote__full_target(dev, &tg, &count);
                 mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
                 mote__raster_tri(&t, &tg, all, dev->desc.subpixel_bits);
-                dev->stats.pixels_written += count;
+                mote__add_counts(dev, &count);
             }
         }
     }
@@ -552,6 +552,8 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         rs_local.texture = mat->texture;
         rs_local.tex_w = mat->texture->width;
         rs_local.tex_h = mat->texture->height;
+        rs_local.tex_stride = mat->texture->stride > 0 ? mat->texture->stride
+                            : mat->texture->width * mote_format_bytes(mat->texture->format);
         rs_local.wrap_u = (mat->wrap_u > MOTE_WRAP_DEFAULT && mat->wrap_u < MOTE_WRAP_COUNT) ? mat->wrap_u : MOTE_WRAP_REPEAT;
         rs_local.wrap_v = (mat->wrap_v > MOTE_WRAP_DEFAULT && mat->wrap_v < MOTE_WRAP_COUNT) ? mat->wrap_v : MOTE_WRAP_REPEAT;
         if (!cx.lit)

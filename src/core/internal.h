@@ -60,6 +60,7 @@ typedef struct mote__raster_state {
     mote__span_fn span;
     const mote_texture *texture;
     int tex_w, tex_h;
+    int tex_stride;               /* bytes per texture row */
     mote_wrap wrap_u, wrap_v;
     bool pow2_repeat;             /* both axes repeat with power-of-two sizes */
     mote__tex_kind tex;
@@ -85,6 +86,9 @@ typedef struct mote__tri {
     int64_t u0, du1, du2, v0, dv1, dv2; /* texels, 16.16 */
 } mote__tri;
 
+/* Pixels a region tested (reached the depth test) and wrote. */
+typedef struct mote__counts { uint64_t tested, written; } mote__counts;
+
 typedef struct mote__target {
     uint8_t *color;               /* row y is at color + (y - y0) * stride */
     int stride;
@@ -93,7 +97,7 @@ typedef struct mote__target {
     int y0;
     mote_format format;
     mote_depth_format depth_format;
-    uint64_t *pixels_written;     /* counter owned by the caller of the region */
+    mote__counts *counts;         /* owned by the caller of the region */
 } mote__target;
 
 /* Region of the screen being drawn: [x0, x1) x [y0, y1). */
@@ -138,7 +142,8 @@ void *mote__bin_top_alloc(mote_device *dev, size_t bytes);
 void mote__bin_top_release(mote_device *dev, size_t bytes);
 
 /* device.c */
-void mote__full_target(const mote_device *dev, mote__target *tg, uint64_t *counter);
+void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *counts);
+void mote__add_counts(mote_device *dev, const mote__counts *counts);
 void mote__clear_rows(const mote_device *dev, const mote__target *tg, int y0, int y1);
 
 #endif

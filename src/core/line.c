@@ -16,7 +16,8 @@ void mote__draw_pixel(const mote__target *tg, mote__rect r, int x, int y, mote_r
         return;
     uint8_t *row = tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride;
     mote__write_rgb(row, x, tg->format, color.r, color.g, color.b);
-    (*tg->pixels_written)++;
+    tg->counts->tested++;
+    tg->counts->written++;
 }
 
 /* round(n / d) for d > 0, halves toward +infinity */

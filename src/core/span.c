@@ -46,9 +46,10 @@ MOTE__INLINE int mote__wrap(int i, int n, mote_wrap mode)
     }
 }
 
-MOTE__INLINE void mote__texel(const mote_texture *tx, int x, int y, uint32_t c[3])
+MOTE__INLINE void mote__texel(const mote__raster_state *rs, int x, int y, uint32_t c[3])
 {
-    const uint8_t *row = (const uint8_t *)tx->pixels + (size_t)y * (size_t)tx->stride;
+    const mote_texture *tx = rs->texture;
+    const uint8_t *row = (const uint8_t *)tx->pixels + (size_t)y * (size_t)rs->tex_stride;
     switch (tx->format) {
     case MOTE_FORMAT_RGB565: {
         uint32_t v = ((const uint16_t *)(const void *)row)[x];
@@ -72,7 +73,6 @@ MOTE__INLINE void mote__texel(const mote_texture *tx, int x, int y, uint32_t c[3
 MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64_t u, int64_t v,
                                uint32_t c[3])
 {
-    const mote_texture *tx = rs->texture;
     if (!bilinear) {
         int tu, tv;
         if (rs->pow2_repeat) {
@@ -82,7 +82,7 @@ MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64
             tu = mote__wrap((int)(u >> 16), rs->tex_w, rs->wrap_u);
             tv = mote__wrap((int)(v >> 16), rs->tex_h, rs->wrap_v);
         }
-        mote__texel(tx, tu, tv, c);
+        mote__texel(rs, tu, tv, c);
         return;
     }
     u -= 0x8000;
@@ -92,10 +92,10 @@ MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64
     int u0 = mote__wrap(iu, rs->tex_w, rs->wrap_u), u1 = mote__wrap(iu + 1, rs->tex_w, rs->wrap_u);
     int v0 = mote__wrap(iv, rs->tex_h, rs->wrap_v), v1 = mote__wrap(iv + 1, rs->tex_h, rs->wrap_v);
     uint32_t a[3], b[3], d[3], e[3];
-    mote__texel(tx, u0, v0, a);
-    mote__texel(tx, u1, v0, b);
-    mote__texel(tx, u0, v1, d);
-    mote__texel(tx, u1, v1, e);
+    mote__texel(rs, u0, v0, a);
+    mote__texel(rs, u1, v0, b);
+    mote__texel(rs, u0, v1, d);
+    mote__texel(rs, u1, v1, e);
     for (int k = 0; k < 3; k++)
         c[k] = (a[k] * (256 - fu) * (256 - fv) + b[k] * fu * (256 - fv) + d[k] * (256 - fu) * fv
                 + e[k] * fu * fv + 32768) >> 16;
@@ -263,7 +263,8 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
         }
         written++;
     }
-    *tg->pixels_written += written;
+    tg->counts->tested += (uint64_t)(x1 - x0);
+    tg->counts->written += written;
 }
 
 void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)

@@ -1,0 +1,1528 @@
+/*
+ * babylon.c - .babylon scene files (cJSON) to mote meshes, materials,
+ * textures, camera and lights. Both layouts are read: the tutorial's legacy
+ * interleaved `vertices` and the current `positions`/`normals`/`uvs` (inline
+ * or through `geometryId`). See ACCURACY.md, "The .babylon format".
+ *
+ * Every value is checked before it is used: types, finite floats, index
+ * ranges, counts against the limits before anything is allocated. Errors
+ * name the file and the JSON path. All allocations made for the scene are
+ * recorded in a store that mote_scene_free releases; temporaries go in a
+ * second store released at the end of every load, failed or not.
+ *
+ * Decisions (tested in tests/test_loader_errors.c):
+ * - A mesh with no vertex data loads as a 0-vertex mesh (it may be a
+ *   parent); empty arrays are fine and give 0 triangles.
+ * - Duplicate material ids: the first wins, with a warning.
+ * - A materialId (or multi-material slot) naming nothing: default white
+ *   material, with a warning. A parentId naming nothing is an error.
+ * - Materials and multi-materials count against limits.max_meshes too.
+ */
+#include "io_internal.h"
+
+#include <cJSON.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- owned allocations ------------------------------------------------- */
+
+typedef struct mote__store {
+    void **ptrs;
+    size_t count, cap;
+} mote__store;
+
+static void mote__store_release(mote__store *s)
+{
+    for (size_t i = 0; i < s->count; i++)
+        mote__io_free(s->ptrs[i]);
+    mote__io_free(s->ptrs);
+    s->ptrs = NULL;
+    s->count = s->cap = 0;
+}
+
+/* Zeroed memory recorded in s; NULL when out of memory (nothing leaks). */
+static void *mote__store_alloc(mote__store *s, size_t count, size_t size)
+{
+    if (size && count > SIZE_MAX / size)
+        return NULL;
+    if (s->count == s->cap) {
+        size_t ncap = s->cap ? s->cap * 2 : 32;
+        void **np = mote__io_malloc(ncap * sizeof *np);
+        if (!np)
+            return NULL;
+        if (s->count)
+            memcpy(np, s->ptrs, s->count * sizeof *np);
+        mote__io_free(s->ptrs);
+        s->ptrs = np;
+        s->cap = ncap;
+    }
+    void *p = mote__io_calloc(count ? count : 1, size ? size : 1);
+    if (p)
+        s->ptrs[s->count++] = p;
+    return p;
+}
+
+/* ---- loader state ------------------------------------------------------ */
+
+typedef struct mote__mat {
+    const char *id;
+    mote_material material;
+} mote__mat;
+
+typedef struct mote__multi {
+    const char *id;
+    int *slots;                   /* material index per slot, -1: default */
+    int slot_count;
+} mote__multi;
+
+typedef struct mote__sub {
+    uint32_t index_start, index_count;
+    uint32_t material_index;
+} mote__sub;
+
+typedef struct mote__node {
+    const char *id;
+    const char *parent_id;
+    const char *material_id;
+    char where[48];               /* "meshes[3]" or "transformNodes[0]" */
+    int parent;                   /* node index, -1: none */
+    int state;                    /* cycle search: 0 new, 1 on the path, 2 done */
+    int first_mesh, mesh_count;
+    float position[3], rotation[3], quat[4], scaling[3];
+    bool use_quat;
+    bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
+    mote_vertex *verts;
+    uint32_t nv;
+    uint32_t *idx;
+    uint32_t ni;
+    mote__sub *subs;
+    int sub_count;
+} mote__node;
+
+/* An id -> index map: a count, then sorted (id, index) pairs; the first of
+ * equal ids wins. */
+typedef struct mote__idmap {
+    const char *id;
+    int index;
+} mote__idmap;
+
+typedef struct mote__ld {
+    char name[128];
+    const char *base_dir;
+    mote_limits lim;
+    char *msg;
+    size_t msg_size;
+    mote_scene *scene;
+    mote__store *keep;            /* becomes scene->storage_ */
+    mote__store tmp;
+    const cJSON *root;
+    mote__mat *mats;
+    int mat_count;
+    mote__idmap *mat_map;
+    mote__multi *multis;
+    int multi_count;
+    mote__idmap *multi_map;
+    const cJSON *vertex_data;     /* geometries.vertexData */
+    mote__node *nodes;
+    int node_count;
+    mote__idmap *node_map;
+    int texture_cap;
+    char **texture_paths;         /* resolved path of scene->textures[i] */
+} mote__ld;
+
+typedef mote_result R;
+#define MOTE__TRY(expr)               \
+    do {                              \
+        mote_result r__ = (expr);     \
+        if (r__ != MOTE_OK)           \
+            return r__;               \
+    } while (0)
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+static R mote__fail(mote__ld *ld, R code, const char *fmt, ...)
+{
+    char what[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return mote__io_error(ld->msg, ld->msg_size, code, "%s: %s", ld->name, what);
+}
+
+static R mote__oom(mote__ld *ld, const char *at)
+{
+    return mote__fail(ld, MOTE_ERR_OUT_OF_MEMORY, "%s: out of memory", at);
+}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static void mote__warn(mote__ld *ld, const char *fmt, ...)
+{
+    char *w = ld->scene->warning;
+    size_t n = strlen(w), cap = sizeof ld->scene->warning;
+    if (n + 3 >= cap)
+        return;
+    if (n) {
+        memcpy(w + n, "; ", 3);
+        n += 2;
+    }
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(w + n, cap - n, fmt, ap);
+    va_end(ap);
+}
+
+/* A name from the file, safe to print (no control bytes, bounded). */
+typedef struct mote__q {
+    char s[72];
+} mote__q;
+
+static mote__q mote__quote(const char *s)
+{
+    mote__q q;
+    mote__io_clean_name(q.s, sizeof q.s, s ? s : "");
+    return q;
+}
+
+/* ---- JSON value helpers ------------------------------------------------ */
+
+static size_t mote__array_len(const cJSON *a)
+{
+    size_t n = 0;
+    for (const cJSON *e = a ? a->child : NULL; e; e = e->next)
+        n++;
+    return n;
+}
+
+static const char *mote__type_name(const cJSON *v)
+{
+    if (cJSON_IsNumber(v)) return "a number";
+    if (cJSON_IsString(v)) return "a string";
+    if (cJSON_IsArray(v)) return "an array";
+    if (cJSON_IsObject(v)) return "an object";
+    if (cJSON_IsBool(v)) return "a boolean";
+    if (cJSON_IsNull(v)) return "null";
+    return "something else";
+}
+
+/* An optional member of an object; NULL when absent or null. */
+static const cJSON *mote__get(const cJSON *obj, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    return cJSON_IsNull(v) ? NULL : v;
+}
+
+static R mote__to_float(mote__ld *ld, const cJSON *v, const char *at, float *out)
+{
+    if (!cJSON_IsNumber(v))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected a number, found %s", at,
+                          mote__type_name(v));
+    double d = v->valuedouble;
+    if (!isfinite(d) || fabs(d) > (double)FLT_MAX)
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: %g is not a finite float", at, d);
+    *out = (float)d;
+    return MOTE_OK;
+}
+
+/* A whole number in [lo, hi]. */
+static R mote__to_uint(mote__ld *ld, const cJSON *v, const char *at, double lo, double hi,
+                       uint32_t *out)
+{
+    if (!cJSON_IsNumber(v))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an integer, found %s", at,
+                          mote__type_name(v));
+    double d = v->valuedouble;
+    if (!isfinite(d) || d != floor(d))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: %g is not an integer", at, d);
+    if (d < lo || d > hi)
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: %.17g is out of range [%.17g, %.17g]", at,
+                          d, lo, hi);
+    *out = (uint32_t)d;
+    return MOTE_OK;
+}
+
+/* key -> n floats; absent keeps *out. n_alt: a second accepted length
+ * (colours may carry alpha), 0 for none. */
+static R mote__vec(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                   int n, int n_alt, float *out)
+{
+    const cJSON *a = mote__get(obj, key);
+    if (!a)
+        return MOTE_OK;
+    char at[160];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    size_t len = mote__array_len(a);
+    if (!cJSON_IsArray(a) || (len != (size_t)n && (n_alt == 0 || len != (size_t)n_alt))) {
+        if (n_alt)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of %d or %d numbers",
+                              at, n, n_alt);
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of %d numbers", at, n);
+    }
+    float tmp[4];
+    int k = 0;
+    for (const cJSON *e = a->child; e; e = e->next, k++) {
+        char at2[176];
+        snprintf(at2, sizeof at2, "%s[%d]", at, k);
+        MOTE__TRY(mote__to_float(ld, e, at2, &tmp[k]));
+    }
+    memcpy(out, tmp, (size_t)n * sizeof *out);
+    return MOTE_OK;
+}
+
+static R mote__num(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                   float *out)
+{
+    const cJSON *v = mote__get(obj, key);
+    if (!v)
+        return MOTE_OK;
+    char at[160];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    return mote__to_float(ld, v, at, out);
+}
+
+/* key -> string or NULL; anything else is an error. */
+static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                   const char **out)
+{
+    const cJSON *v = mote__get(obj, key);
+    *out = NULL;
+    if (!v)
+        return MOTE_OK;
+    if (!cJSON_IsString(v) || !v->valuestring)
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s.%s: expected a string, found %s", where,
+                          key, mote__type_name(v));
+    *out = v->valuestring;
+    return MOTE_OK;
+}
+
+/* key -> array or NULL (absent); anything else is an error. */
+static R mote__arr(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                   const cJSON **out)
+{
+    const cJSON *v = mote__get(obj, key);
+    *out = NULL;
+    if (!v)
+        return MOTE_OK;
+    if (!cJSON_IsArray(v))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s%s%s: expected an array, found %s", where,
+                          where[0] ? "." : "", key, mote__type_name(v));
+    *out = v;
+    return MOTE_OK;
+}
+
+static R mote__obj_at(mote__ld *ld, const cJSON *v, const char *at)
+{
+    if (!cJSON_IsObject(v))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an object, found %s", at,
+                          mote__type_name(v));
+    return MOTE_OK;
+}
+
+/* ---- id maps ----------------------------------------------------------- */
+
+static int mote__idmap_cmp(const void *a, const void *b)
+{
+    const mote__idmap *x = a, *y = b;
+    int c = strcmp(x->id, y->id);
+    if (c)
+        return c;
+    return (x->index > y->index) - (x->index < y->index);
+}
+
+/* Builds a map of the non-NULL ids; *dup_index: the second holder of the
+ * first duplicated id (or -1). */
+static mote__idmap *mote__idmap_build(mote__ld *ld, const char *const *ids, size_t stride,
+                                      int n, int *dup_index)
+{
+    mote__idmap *head = mote__store_alloc(&ld->tmp, (size_t)n + 1, sizeof *head);
+    if (!head)
+        return NULL;
+    mote__idmap *m = head + 1; /* head->index: the entry count */
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        const char *id = *(const char *const *)((const char *)ids + (size_t)i * stride);
+        if (id) {
+            m[k].id = id;
+            m[k].index = i;
+            k++;
+        }
+    }
+    qsort(m, (size_t)k, sizeof *m, mote__idmap_cmp);
+    *dup_index = -1;
+    for (int i = 1; i < k; i++)
+        if (strcmp(m[i - 1].id, m[i].id) == 0 && (*dup_index < 0 || m[i].index < *dup_index))
+            *dup_index = m[i].index;
+    head->id = "";
+    head->index = k;
+    return head;
+}
+
+static int mote__idmap_find(const mote__idmap *m, const char *id)
+{
+    if (!m || !id)
+        return -1;
+    int lo = 0, hi = m[0].index; /* m[0] holds the count */
+    m++;
+    while (lo < hi) { /* first entry >= id */
+        int mid = lo + (hi - lo) / 2;
+        if (strcmp(m[mid].id, id) < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return (lo < m[-1].index && strcmp(m[lo].id, id) == 0) ? m[lo].index : -1;
+}
+
+/* ---- textures ---------------------------------------------------------- */
+
+static bool mote__path_escapes(const char *name, const char **why)
+{
+    if (!name[0]) {
+        *why = "is empty";
+        return true;
+    }
+    if (name[0] == '/' || name[0] == '\\' ||
+        (((name[0] | 0x20) >= 'a' && (name[0] | 0x20) <= 'z') && name[1] == ':')) {
+        *why = "is an absolute path";
+        return true;
+    }
+    const char *p = name;
+    while (*p) {
+        const char *q = p;
+        while (*q && *q != '/' && *q != '\\')
+            q++;
+        if (q - p == 2 && p[0] == '.' && p[1] == '.') {
+            *why = "leaves the scene's folder with '..'";
+            return true;
+        }
+        p = *q ? q + 1 : q;
+    }
+    return false;
+}
+
+/* Loads (once per resolved path) the texture a material names. */
+static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
+                                mote_material *m)
+{
+    MOTE__TRY(mote__obj_at(ld, tex, at));
+    const char *name;
+    MOTE__TRY(mote__str(ld, tex, "name", at, &name));
+    if (!name)
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s.name: expected a string (the image file)",
+                          at);
+    m->u_scale = 1.0f;
+    m->v_scale = 1.0f;
+    MOTE__TRY(mote__num(ld, tex, "uScale", at, &m->u_scale));
+    MOTE__TRY(mote__num(ld, tex, "vScale", at, &m->v_scale));
+    MOTE__TRY(mote__num(ld, tex, "uOffset", at, &m->u_offset));
+    MOTE__TRY(mote__num(ld, tex, "vOffset", at, &m->v_offset));
+    static const char *const wrap_keys[2] = {"wrapU", "wrapV"};
+    for (int k = 0; k < 2; k++) {
+        const cJSON *w = mote__get(tex, wrap_keys[k]);
+        mote_wrap mode = MOTE_WRAP_REPEAT;
+        if (cJSON_IsBool(w)) {
+            mode = cJSON_IsTrue(w) ? MOTE_WRAP_REPEAT : MOTE_WRAP_CLAMP;
+        } else if (w) {
+            char at2[176];
+            snprintf(at2, sizeof at2, "%s.%s", at, wrap_keys[k]);
+            uint32_t v;
+            MOTE__TRY(mote__to_uint(ld, w, at2, 0, 2, &v));
+            mode = v == 0 ? MOTE_WRAP_CLAMP : v == 1 ? MOTE_WRAP_REPEAT : MOTE_WRAP_MIRROR;
+        }
+        if (k == 0)
+            m->wrap_u = mode;
+        else
+            m->wrap_v = mode;
+    }
+    mote__q qn = mote__quote(name);
+    if (!ld->lim.allow_any_texture_path) {
+        const char *why = "";
+        if (mote__path_escapes(name, &why))
+            return mote__fail(ld, MOTE_ERR_RANGE,
+                              "%s.name: \"%s\" %s (textures must be inside the scene's "
+                              "folder; see limits.allow_any_texture_path)",
+                              at, qn.s, why);
+    }
+    if (!ld->base_dir)
+        return MOTE_OK; /* colours only */
+    bool absolute = name[0] == '/' || name[0] == '\\';
+    size_t blen = strlen(ld->base_dir), nlen = strlen(name);
+    char *path = mote__store_alloc(&ld->tmp, blen + nlen + 2, 1);
+    if (!path)
+        return mote__oom(ld, at);
+    if (absolute || blen == 0) {
+        memcpy(path, name, nlen + 1);
+    } else {
+        memcpy(path, ld->base_dir, blen);
+        path[blen] = '/';
+        memcpy(path + blen + 1, name, nlen + 1);
+    }
+#ifndef _WIN32
+    for (char *c = path + (absolute ? 0 : blen + 1); *c; c++)
+        if (*c == '\\')
+            *c = '/'; /* exporters on Windows write folder\\image.png */
+#endif
+    mote_scene *sc = ld->scene;
+    for (int i = 0; i < sc->texture_count; i++)
+        if (strcmp(ld->texture_paths[i], path) == 0) {
+            m->texture = &sc->textures[i];
+            return MOTE_OK;
+        }
+    if (sc->texture_count >= ld->texture_cap)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: too many textures", at);
+    char why[256];
+    mote_texture *t = &sc->textures[sc->texture_count];
+    R r = mote_texture_load(path, &ld->lim, t, why, sizeof why);
+    if (r == MOTE_ERR_OUT_OF_MEMORY)
+        return mote__fail(ld, r, "%s.name: %s", at, why);
+    if (r != MOTE_OK) {
+        if (ld->lim.missing_texture_is_warning) {
+            mote__warn(ld, "%s: %s (drawn untextured)", at, why);
+            return MOTE_OK;
+        }
+        return mote__fail(ld, r, "%s.name: %s", at, why);
+    }
+    ld->texture_paths[sc->texture_count++] = path;
+    m->texture = t;
+    return MOTE_OK;
+}
+
+/* ---- materials --------------------------------------------------------- */
+
+static uint8_t mote__unit_byte(float c)
+{
+    if (!(c > 0.0f))
+        return 0;
+    if (c >= 1.0f)
+        return 255;
+    return (uint8_t)(c * 255.0f + 0.5f);
+}
+
+static R mote__materials(mote__ld *ld)
+{
+    const cJSON *list;
+    MOTE__TRY(mote__arr(ld, ld->root, "materials", "", &list));
+    size_t n = mote__array_len(list);
+    if (n > ld->lim.max_meshes)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "materials: %zu materials, more than the limit "
+                          "of %u", n, (unsigned)ld->lim.max_meshes);
+    ld->mats = mote__store_alloc(&ld->tmp, n, sizeof *ld->mats);
+    if (!ld->mats)
+        return mote__oom(ld, "materials");
+    /* textures live in the scene, one per material at most: allocate once
+     * so that the pointers materials keep stay valid */
+    ld->scene->textures = mote__store_alloc(ld->keep, n, sizeof(mote_texture));
+    ld->texture_paths = mote__store_alloc(&ld->tmp, n, sizeof(char *));
+    if (!ld->scene->textures || !ld->texture_paths)
+        return mote__oom(ld, "materials");
+    ld->texture_cap = (int)n;
+    int i = 0;
+    for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
+        char at[64];
+        snprintf(at, sizeof at, "materials[%d]", i);
+        MOTE__TRY(mote__obj_at(ld, m, at));
+        mote__mat *mm = &ld->mats[i];
+        MOTE__TRY(mote__str(ld, m, "id", at, &mm->id));
+        if (!mm->id)
+            MOTE__TRY(mote__str(ld, m, "name", at, &mm->id));
+        if (!mm->id)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        ld->mat_count = i + 1;
+    }
+    int dup;
+    ld->mat_map = mote__idmap_build(ld, &ld->mats[0].id, sizeof *ld->mats, ld->mat_count, &dup);
+    if (!ld->mat_map)
+        return mote__oom(ld, "materials");
+    if (dup >= 0)
+        mote__warn(ld, "materials[%d]: id \"%s\" is used before; the first one is kept", dup,
+                   mote__quote(ld->mats[dup].id).s);
+    i = 0;
+    for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
+        char at[64];
+        snprintf(at, sizeof at, "materials[%d]", i);
+        mote__mat *mm = &ld->mats[i];
+        if (mote__idmap_find(ld->mat_map, mm->id) != i)
+            continue; /* a duplicate: never used, do not load its texture */
+        static const char *const color_keys[4] = {"diffuse", "diffuseColor", "albedo",
+                                                  "albedoColor"};
+        for (int k = 0; k < 4; k++) {
+            float c[4] = {1, 1, 1, 1};
+            if (!mote__get(m, color_keys[k]))
+                continue;
+            MOTE__TRY(mote__vec(ld, m, color_keys[k], at, 3, 4, c));
+            mm->material.color.r = mote__unit_byte(c[0]);
+            mm->material.color.g = mote__unit_byte(c[1]);
+            mm->material.color.b = mote__unit_byte(c[2]);
+            mm->material.color.a = 255;
+            mm->material.color_set = true;
+            break;
+        }
+        static const char *const tex_keys[2] = {"diffuseTexture", "albedoTexture"};
+        for (int k = 0; k < 2; k++) {
+            const cJSON *t = mote__get(m, tex_keys[k]);
+            if (!t)
+                continue;
+            char at2[96];
+            snprintf(at2, sizeof at2, "%s.%s", at, tex_keys[k]);
+            MOTE__TRY(mote__material_texture(ld, t, at2, &mm->material));
+            break;
+        }
+    }
+    return MOTE_OK;
+}
+
+static R mote__multi_materials(mote__ld *ld)
+{
+    const cJSON *list;
+    MOTE__TRY(mote__arr(ld, ld->root, "multiMaterials", "", &list));
+    size_t n = mote__array_len(list);
+    if (n > ld->lim.max_meshes)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "multiMaterials: %zu entries, more than the "
+                          "limit of %u", n, (unsigned)ld->lim.max_meshes);
+    ld->multis = mote__store_alloc(&ld->tmp, n, sizeof *ld->multis);
+    if (!ld->multis)
+        return mote__oom(ld, "multiMaterials");
+    int i = 0;
+    for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
+        char at[64];
+        snprintf(at, sizeof at, "multiMaterials[%d]", i);
+        MOTE__TRY(mote__obj_at(ld, m, at));
+        mote__multi *mm = &ld->multis[i];
+        MOTE__TRY(mote__str(ld, m, "id", at, &mm->id));
+        if (!mm->id)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        const cJSON *slots;
+        MOTE__TRY(mote__arr(ld, m, "materials", at, &slots));
+        size_t count = mote__array_len(slots);
+        if (count > ld->lim.max_meshes)
+            return mote__fail(ld, MOTE_ERR_LIMIT, "%s.materials: %zu slots, more than the "
+                              "limit of %u", at, count, (unsigned)ld->lim.max_meshes);
+        mm->slots = mote__store_alloc(&ld->tmp, count, sizeof *mm->slots);
+        if (!mm->slots)
+            return mote__oom(ld, at);
+        mm->slot_count = (int)count;
+        int k = 0;
+        for (const cJSON *s = slots ? slots->child : NULL; s; s = s->next, k++) {
+            mm->slots[k] = -1;
+            if (cJSON_IsNull(s))
+                continue;
+            if (!cJSON_IsString(s))
+                return mote__fail(ld, MOTE_ERR_PARSE,
+                                  "%s.materials[%d]: expected a material id, found %s", at,
+                                  k, mote__type_name(s));
+            mm->slots[k] = mote__idmap_find(ld->mat_map, s->valuestring);
+            if (mm->slots[k] < 0)
+                mote__warn(ld, "%s.materials[%d]: \"%s\" names no material", at, k,
+                           mote__quote(s->valuestring).s);
+        }
+        ld->multi_count = i + 1;
+    }
+    int dup;
+    ld->multi_map = mote__idmap_build(ld, &ld->multis[0].id, sizeof *ld->multis,
+                                      ld->multi_count, &dup);
+    if (!ld->multi_map)
+        return mote__oom(ld, "multiMaterials");
+    if (dup >= 0)
+        mote__warn(ld, "multiMaterials[%d]: id \"%s\" is used before; the first one is kept",
+                   dup, mote__quote(ld->multis[dup].id).s);
+    return MOTE_OK;
+}
+
+/* ---- geometry ---------------------------------------------------------- */
+
+enum { MOTE__POS, MOTE__NRM, MOTE__UV, MOTE__LEGACY };
+
+static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex *v,
+                    int what, size_t stride)
+{
+    size_t k = 0;
+    for (const cJSON *e = arr->child; e; e = e->next, k++) {
+        float f;
+        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble) ||
+            fabs(e->valuedouble) > (double)FLT_MAX) {
+            char at2[192];
+            snprintf(at2, sizeof at2, "%s[%zu]", at, k);
+            MOTE__TRY(mote__to_float(ld, e, at2, &f));
+        }
+        f = (float)e->valuedouble;
+        mote_vertex *vx = &v[k / stride];
+        size_t c = k % stride;
+        switch (what) {
+        case MOTE__POS: vx->position[c] = f; break;
+        case MOTE__NRM: vx->normal[c] = f; break;
+        case MOTE__UV: vx->uv[c] = f; break;
+        default:
+            if (c < 3)
+                vx->position[c] = f;
+            else if (c < 6)
+                vx->normal[c - 3] = f;
+            else if (c < 8)
+                vx->uv[c - 6] = f;
+            break; /* uv2 is checked, not kept */
+        }
+    }
+    return MOTE_OK;
+}
+
+static R mote__indices(mote__ld *ld, const cJSON *arr, const char *at, mote__node *nd,
+                       uint32_t *max_index)
+{
+    size_t n = mote__array_len(arr);
+    *max_index = 0;
+    if (n > ld->lim.max_indices || n > (size_t)INT32_MAX)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: %zu indices, more than the limit of %u", at,
+                          n, (unsigned)ld->lim.max_indices);
+    if (n % 3)
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: %zu indices is not a multiple of 3", at, n);
+    nd->idx = mote__store_alloc(ld->keep, n, sizeof *nd->idx);
+    if (!nd->idx)
+        return mote__oom(ld, at);
+    nd->ni = (uint32_t)n;
+    size_t k = 0;
+    for (const cJSON *e = arr->child; e; e = e->next, k++) {
+        double d = cJSON_IsNumber(e) ? e->valuedouble : -1.0;
+        if (!(d >= 0.0 && d <= 4294967294.0 && d == floor(d))) {
+            char at2[192];
+            snprintf(at2, sizeof at2, "%s[%zu]", at, k);
+            if (!cJSON_IsNumber(e))
+                return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an integer, found %s",
+                                  at2, mote__type_name(e));
+            if (!isfinite(d) || d != floor(d))
+                return mote__fail(ld, MOTE_ERR_PARSE, "%s: %g is not an integer", at2, d);
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: %.17g is out of range", at2, d);
+        }
+        nd->idx[k] = (uint32_t)d;
+        if (nd->idx[k] > *max_index)
+            *max_index = nd->idx[k];
+    }
+    return MOTE_OK;
+}
+
+static R mote__check_indices(mote__ld *ld, const char *at, const mote__node *nd)
+{
+    for (uint32_t k = 0; k < nd->ni; k++)
+        if (nd->idx[k] >= nd->nv)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s[%u]: %u is out of range (%u vertices)",
+                              at, (unsigned)k, (unsigned)nd->idx[k], (unsigned)nd->nv);
+    return MOTE_OK;
+}
+
+static R mote__alloc_vertices(mote__ld *ld, const char *at, size_t nv, mote__node *nd)
+{
+    if (nv > ld->lim.max_vertices || nv > (size_t)INT32_MAX)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: %zu vertices, more than the limit of %u",
+                          at, nv, (unsigned)ld->lim.max_vertices);
+    nd->verts = mote__store_alloc(ld->keep, nv, sizeof *nd->verts);
+    if (!nd->verts)
+        return mote__oom(ld, at);
+    nd->nv = (uint32_t)nv;
+    return MOTE_OK;
+}
+
+/* Smooth normals where a file has none: the sum of the faces' normals as
+ * Babylon's VertexData.ComputeNormals orients them (left-handed, clockwise
+ * front faces), normalised. */
+static void mote__smooth_normals(mote__node *nd)
+{
+    for (uint32_t t = 0; t + 2 < nd->ni; t += 3) {
+        const float *p1 = nd->verts[nd->idx[t]].position;
+        const float *p2 = nd->verts[nd->idx[t + 1]].position;
+        const float *p3 = nd->verts[nd->idx[t + 2]].position;
+        float a[3], b[3], n[3];
+        for (int k = 0; k < 3; k++) {
+            a[k] = p1[k] - p2[k];
+            b[k] = p3[k] - p2[k];
+        }
+        n[0] = a[1] * b[2] - a[2] * b[1];
+        n[1] = a[2] * b[0] - a[0] * b[2];
+        n[2] = a[0] * b[1] - a[1] * b[0];
+        float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (!(len > 0.0f) || !isfinite(len))
+            continue;
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++)
+                nd->verts[nd->idx[t + j]].normal[k] += n[k] / len;
+    }
+    for (uint32_t i = 0; i < nd->nv; i++) {
+        float *n = nd->verts[i].normal;
+        float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (len > 0.0f && isfinite(len))
+            for (int k = 0; k < 3; k++)
+                n[k] /= len;
+    }
+}
+
+/* The legacy interleaved layout: position, normal, uv (uvCount >= 1) and
+ * uv2 (uvCount 2) per vertex. */
+static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *verts,
+                               const char *where, mote__node *nd)
+{
+    char at[96], iat[96];
+    snprintf(at, sizeof at, "%s.vertices", where);
+    snprintf(iat, sizeof iat, "%s.indices", where);
+    const cJSON *ind;
+    MOTE__TRY(mote__arr(ld, mesh, "indices", where, &ind));
+    uint32_t max_index = 0;
+    if (ind)
+        MOTE__TRY(mote__indices(ld, ind, iat, nd, &max_index));
+    size_t len = mote__array_len(verts);
+    size_t stride = 0;
+    const cJSON *uvc = mote__get(mesh, "uvCount");
+    if (uvc) {
+        char uat[96];
+        snprintf(uat, sizeof uat, "%s.uvCount", where);
+        uint32_t u;
+        MOTE__TRY(mote__to_uint(ld, uvc, uat, 0, 2, &u));
+        stride = 6 + 2 * (size_t)u;
+        if (len % stride)
+            return mote__fail(ld, MOTE_ERR_RANGE,
+                              "%s: %zu floats is not a multiple of %zu (uvCount %u)", at, len,
+                              stride, (unsigned)u);
+    } else {
+        /* no uvCount: the stride must be the only one that fits the length
+         * and the largest index */
+        int fits = 0;
+        for (size_t s = 6; s <= 10; s += 2)
+            if (len % s == 0 && (nd->ni == 0 || max_index < len / s)) {
+                fits++;
+                stride = s;
+            }
+        if (len == 0)
+            fits = 1, stride = 6;
+        if (fits != 1)
+            return mote__fail(ld, MOTE_ERR_PARSE,
+                              "%s: no uvCount, and %zu floats fit %s stride (6, 8 or 10)", at,
+                              len, fits ? "more than one" : "no");
+    }
+    MOTE__TRY(mote__alloc_vertices(ld, at, len / stride, nd));
+    MOTE__TRY(mote__fill(ld, verts, at, nd->verts, MOTE__LEGACY, stride));
+    nd->legacy = true;
+    return mote__check_indices(ld, iat, nd);
+}
+
+/* The current layout, from the mesh itself or from a geometries.vertexData
+ * entry (src, named src_where in messages). */
+static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *where,
+                                mote__node *nd)
+{
+    const cJSON *pos, *nrm, *uvs, *ind;
+    MOTE__TRY(mote__arr(ld, src, "positions", where, &pos));
+    MOTE__TRY(mote__arr(ld, src, "normals", where, &nrm));
+    MOTE__TRY(mote__arr(ld, src, "uvs", where, &uvs));
+    MOTE__TRY(mote__arr(ld, src, "indices", where, &ind));
+    char at[96], iat[96];
+    snprintf(iat, sizeof iat, "%s.indices", where);
+    uint32_t max_index;
+    if (ind)
+        MOTE__TRY(mote__indices(ld, ind, iat, nd, &max_index));
+    size_t len = mote__array_len(pos);
+    snprintf(at, sizeof at, "%s.positions", where);
+    if (len % 3)
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: %zu floats is not a multiple of 3", at,
+                          len);
+    size_t nv = len / 3;
+    MOTE__TRY(mote__alloc_vertices(ld, at, nv, nd));
+    if (pos)
+        MOTE__TRY(mote__fill(ld, pos, at, nd->verts, MOTE__POS, 3));
+    if (nrm) {
+        snprintf(at, sizeof at, "%s.normals", where);
+        size_t n = mote__array_len(nrm);
+        if (n != nv * 3)
+            return mote__fail(ld, MOTE_ERR_RANGE,
+                              "%s: %zu floats, expected 3 per vertex (%zu vertices)", at, n,
+                              nv);
+        MOTE__TRY(mote__fill(ld, nrm, at, nd->verts, MOTE__NRM, 3));
+    }
+    if (uvs) {
+        snprintf(at, sizeof at, "%s.uvs", where);
+        size_t n = mote__array_len(uvs);
+        if (n != nv * 2)
+            return mote__fail(ld, MOTE_ERR_RANGE,
+                              "%s: %zu floats, expected 2 per vertex (%zu vertices)", at, n,
+                              nv);
+        MOTE__TRY(mote__fill(ld, uvs, at, nd->verts, MOTE__UV, 2));
+    }
+    MOTE__TRY(mote__check_indices(ld, iat, nd));
+    if (!nrm)
+        mote__smooth_normals(nd);
+    return MOTE_OK;
+}
+
+static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
+{
+    const cJSON *subs;
+    MOTE__TRY(mote__arr(ld, mesh, "subMeshes", where, &subs));
+    size_t n = mote__array_len(subs);
+    if (n > ld->lim.max_meshes)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s.subMeshes: %zu entries, more than the limit "
+                          "of %u", where, n, (unsigned)ld->lim.max_meshes);
+    if (n == 0)
+        return MOTE_OK;
+    nd->subs = mote__store_alloc(&ld->tmp, n, sizeof *nd->subs);
+    if (!nd->subs)
+        return mote__oom(ld, where);
+    int k = 0;
+    for (const cJSON *s = subs->child; s; s = s->next, k++) {
+        char at[96], at2[128];
+        snprintf(at, sizeof at, "%s.subMeshes[%d]", where, k);
+        MOTE__TRY(mote__obj_at(ld, s, at));
+        static const char *const keys[5] = {"materialIndex", "verticesStart", "verticesCount",
+                                             "indexStart", "indexCount"};
+        uint32_t v[5] = {0, 0, nd->nv, 0, nd->ni};
+        for (int j = 0; j < 5; j++) {
+            const cJSON *e = mote__get(s, keys[j]);
+            snprintf(at2, sizeof at2, "%s.%s", at, keys[j]);
+            if (!e) {
+                if (j == 4)
+                    return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
+                continue;
+            }
+            MOTE__TRY(mote__to_uint(ld, e, at2, 0, 4294967295.0, &v[j]));
+        }
+        if ((uint64_t)v[1] + v[2] > nd->nv)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: vertices %u..%llu are out of range "
+                              "(%u vertices)", at, (unsigned)v[1],
+                              (unsigned long long)v[1] + v[2], (unsigned)nd->nv);
+        if ((uint64_t)v[3] + v[4] > nd->ni)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: indices %u..%llu are out of range "
+                              "(%u indices)", at, (unsigned)v[3],
+                              (unsigned long long)v[3] + v[4], (unsigned)nd->ni);
+        if (v[3] % 3 || v[4] % 3)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: indexStart %u and indexCount %u must "
+                              "be multiples of 3", at, (unsigned)v[3], (unsigned)v[4]);
+        nd->subs[k].material_index = v[0];
+        nd->subs[k].index_start = v[3];
+        nd->subs[k].index_count = v[4];
+    }
+    nd->sub_count = k;
+    return MOTE_OK;
+}
+
+/* One entry of meshes[] or transformNodes[]. */
+static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
+{
+    MOTE__TRY(mote__obj_at(ld, mesh, where));
+    MOTE__TRY(mote__str(ld, mesh, "id", where, &nd->id));
+    if (!nd->id)
+        MOTE__TRY(mote__str(ld, mesh, "name", where, &nd->id));
+    MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
+    MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
+    MOTE__TRY(mote__vec(ld, mesh, "position", where, 3, 0, nd->position));
+    MOTE__TRY(mote__vec(ld, mesh, "rotation", where, 3, 0, nd->rotation));
+    nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
+    MOTE__TRY(mote__vec(ld, mesh, "scaling", where, 3, 0, nd->scaling));
+    if (mote__get(mesh, "rotationQuaternion")) {
+        MOTE__TRY(mote__vec(ld, mesh, "rotationQuaternion", where, 4, 0, nd->quat));
+        nd->use_quat = true;
+    }
+    const cJSON *verts, *pos;
+    MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
+    MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
+    const char *geometry_id;
+    MOTE__TRY(mote__str(ld, mesh, "geometryId", where, &geometry_id));
+    if (verts && pos)
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: has both \"vertices\" and \"positions\"",
+                          where);
+    if (verts) {
+        MOTE__TRY(mote__legacy_geometry(ld, mesh, verts, where, nd));
+    } else if (pos) {
+        MOTE__TRY(mote__current_geometry(ld, mesh, where, nd));
+    } else if (geometry_id) {
+        int k = 0;
+        const cJSON *g = ld->vertex_data ? ld->vertex_data->child : NULL;
+        for (; g; g = g->next, k++) {
+            const cJSON *gid = cJSON_GetObjectItemCaseSensitive(g, "id");
+            if (cJSON_IsString(gid) && strcmp(gid->valuestring, geometry_id) == 0)
+                break;
+        }
+        if (!g)
+            return mote__fail(ld, MOTE_ERR_RANGE,
+                              "%s.geometryId: \"%s\" names no geometries.vertexData entry",
+                              where, mote__quote(geometry_id).s);
+        char gat[64];
+        snprintf(gat, sizeof gat, "geometries.vertexData[%d]", k);
+        MOTE__TRY(mote__current_geometry(ld, g, gat, nd));
+    } else {
+        const cJSON *ind;
+        MOTE__TRY(mote__arr(ld, mesh, "indices", where, &ind));
+        if (ind && ind->child) {
+            char iat[96];
+            snprintf(iat, sizeof iat, "%s.indices", where);
+            uint32_t max_index;
+            MOTE__TRY(mote__indices(ld, ind, iat, nd, &max_index));
+            MOTE__TRY(mote__check_indices(ld, iat, nd));
+        }
+    }
+    return mote__submeshes(ld, mesh, where, nd);
+}
+
+static R mote__nodes(mote__ld *ld)
+{
+    const cJSON *meshes, *tnodes, *geos = mote__get(ld->root, "geometries");
+    MOTE__TRY(mote__arr(ld, ld->root, "meshes", "", &meshes));
+    MOTE__TRY(mote__arr(ld, ld->root, "transformNodes", "", &tnodes));
+    if (geos) {
+        MOTE__TRY(mote__obj_at(ld, geos, "geometries"));
+        MOTE__TRY(mote__arr(ld, geos, "vertexData", "geometries", &ld->vertex_data));
+    }
+    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes);
+    if (nm + nt > ld->lim.max_meshes)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u",
+                          nm + nt, (unsigned)ld->lim.max_meshes);
+    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt, sizeof *ld->nodes);
+    if (!ld->nodes)
+        return mote__oom(ld, "meshes");
+    ld->node_count = (int)(nm + nt);
+    int i = 0;
+    for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
+        mote__node *nd = &ld->nodes[i];
+        snprintf(nd->where, sizeof nd->where, "meshes[%d]", i);
+        MOTE__TRY(mote__node_read(ld, m, nd->where, nd));
+    }
+    int t = 0;
+    for (const cJSON *m = tnodes ? tnodes->child : NULL; m; m = m->next, i++, t++) {
+        mote__node *nd = &ld->nodes[i];
+        snprintf(nd->where, sizeof nd->where, "transformNodes[%d]", t);
+        MOTE__TRY(mote__node_read(ld, m, nd->where, nd));
+        if (nd->nv || nd->ni || nd->sub_count)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: a transform node has no geometry",
+                              nd->where);
+    }
+    return MOTE_OK;
+}
+
+/* parentId -> node index; then every chain must end (no cycle) within the
+ * depth the core follows. */
+static R mote__parents(mote__ld *ld)
+{
+    int dup;
+    ld->node_map = mote__idmap_build(ld, &ld->nodes[0].id, sizeof *ld->nodes, ld->node_count,
+                                     &dup);
+    if (!ld->node_map)
+        return mote__oom(ld, "meshes");
+    for (int i = 0; i < ld->node_count; i++) {
+        mote__node *nd = &ld->nodes[i];
+        nd->parent = -1;
+        if (!nd->parent_id)
+            continue;
+        nd->parent = mote__idmap_find(ld->node_map, nd->parent_id);
+        if (nd->parent < 0)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
+                              "transform node", nd->where, mote__quote(nd->parent_id).s);
+    }
+    for (int i = 0; i < ld->node_count; i++) {
+        /* walk up marking the path; meeting the path again is a cycle */
+        int j = i;
+        while (j >= 0 && ld->nodes[j].state == 0) {
+            ld->nodes[j].state = 1;
+            j = ld->nodes[j].parent;
+        }
+        if (j >= 0 && ld->nodes[j].state == 1)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" makes a cycle",
+                              ld->nodes[j].where, mote__quote(ld->nodes[j].parent_id).s);
+        for (j = i; j >= 0 && ld->nodes[j].state == 1; j = ld->nodes[j].parent)
+            ld->nodes[j].state = 2;
+    }
+    /* the core follows at most 64 parents */
+    for (int i = 0; i < ld->node_count; i++) {
+        int depth = 0;
+        for (int j = ld->nodes[i].parent; j >= 0; j = ld->nodes[j].parent)
+            if (++depth > 64)
+                return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than 64 parents",
+                                  ld->nodes[i].where);
+    }
+    return MOTE_OK;
+}
+
+/* The material of one sub-mesh: a material, a multi-material slot, or the
+ * default (white) with a warning when the id names nothing. */
+static mote_material mote__resolve_material(mote__ld *ld, const mote__node *nd,
+                                            uint32_t material_index)
+{
+    mote_material none;
+    memset(&none, 0, sizeof none);
+    if (!nd->material_id)
+        return none;
+    int m = mote__idmap_find(ld->mat_map, nd->material_id);
+    if (m >= 0)
+        return ld->mats[m].material;
+    int mm = mote__idmap_find(ld->multi_map, nd->material_id);
+    if (mm < 0) {
+        mote__warn(ld, "%s.materialId: \"%s\" names no material", nd->where,
+                   mote__quote(nd->material_id).s);
+        return none;
+    }
+    const mote__multi *multi = &ld->multis[mm];
+    if (material_index >= (uint32_t)multi->slot_count) {
+        mote__warn(ld, "%s: materialIndex %u is past the %d materials of \"%s\"", nd->where,
+                   (unsigned)material_index, multi->slot_count, mote__quote(multi->id).s);
+        return none;
+    }
+    int slot = multi->slots[material_index];
+    return slot >= 0 ? ld->mats[slot].material : none;
+}
+
+static R mote__build_meshes(mote__ld *ld)
+{
+    size_t total = 0;
+    for (int i = 0; i < ld->node_count; i++) {
+        mote__node *nd = &ld->nodes[i];
+        nd->first_mesh = (int)total;
+        nd->mesh_count = nd->sub_count > 0 ? nd->sub_count : 1;
+        total += (size_t)nd->mesh_count;
+    }
+    if (total > ld->lim.max_meshes)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes with their sub-meshes, more "
+                          "than the limit of %u", total, (unsigned)ld->lim.max_meshes);
+    mote_scene *sc = ld->scene;
+    /* one allocation, never moved: parents point into it */
+    sc->meshes = mote__store_alloc(ld->keep, total, sizeof *sc->meshes);
+    if (!sc->meshes)
+        return mote__oom(ld, "meshes");
+    sc->mesh_count = (int)total;
+    for (int i = 0; i < ld->node_count; i++) {
+        const mote__node *nd = &ld->nodes[i];
+        for (int s = 0; s < nd->mesh_count; s++) {
+            mote_mesh *m = &sc->meshes[nd->first_mesh + s];
+            m->vertices = nd->verts;
+            m->vertex_count = nd->nv;
+            m->indices = nd->idx;
+            m->index_count = nd->ni;
+            uint32_t material_index = 0;
+            if (nd->sub_count > 0) {
+                m->indices = nd->idx + nd->subs[s].index_start;
+                m->index_count = nd->subs[s].index_count;
+                material_index = nd->subs[s].material_index;
+            }
+            memcpy(m->position, nd->position, sizeof m->position);
+            memcpy(m->rotation, nd->rotation, sizeof m->rotation);
+            memcpy(m->rotation_quaternion, nd->quat, sizeof m->rotation_quaternion);
+            m->use_quaternion = nd->use_quat;
+            memcpy(m->scaling, nd->scaling, sizeof m->scaling);
+            m->parent = nd->parent >= 0 ? &sc->meshes[ld->nodes[nd->parent].first_mesh] : NULL;
+            m->material = mote__resolve_material(ld, nd, material_index);
+            /* legacy files (the tutorial's) address the top row with v = 0;
+             * current exporters rely on Babylon.js's invertY */
+            m->material.v_origin_bottom = !nd->legacy;
+            mote_mesh_update_bounds(m);
+        }
+    }
+    /* world-space box over every vertex (once per node: sub-meshes share) */
+    bool any = false;
+    for (int i = 0; i < ld->node_count; i++) {
+        const mote__node *nd = &ld->nodes[i];
+        if (nd->nv == 0)
+            continue;
+        float w[16];
+        mote_mesh_world_matrix(&sc->meshes[nd->first_mesh], w);
+        for (uint32_t v = 0; v < nd->nv; v++) {
+            const float *p = nd->verts[v].position;
+            float q[3];
+            for (int k = 0; k < 3; k++)
+                q[k] = w[k] * p[0] + w[4 + k] * p[1] + w[8 + k] * p[2] + w[12 + k];
+            if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]))
+                continue;
+            for (int k = 0; k < 3; k++) {
+                if (!any || q[k] < sc->bounds_min[k]) sc->bounds_min[k] = q[k];
+                if (!any || q[k] > sc->bounds_max[k]) sc->bounds_max[k] = q[k];
+            }
+            any = true;
+        }
+    }
+    return MOTE_OK;
+}
+
+/* ---- camera, lights, scene colours ------------------------------------ */
+
+static R mote__camera(mote__ld *ld)
+{
+    const cJSON *cams;
+    MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
+    if (!cams || !cams->child)
+        return MOTE_OK;
+    const char *active;
+    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "", &active));
+    if (!active)
+        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "", &active));
+    const cJSON *cam = cams->child;
+    int index = 0;
+    if (active) {
+        int k = 0;
+        const cJSON *c = cams->child;
+        for (; c; c = c->next, k++) {
+            const cJSON *id = cJSON_GetObjectItemCaseSensitive(c, "id");
+            if (cJSON_IsString(id) && strcmp(id->valuestring, active) == 0)
+                break;
+        }
+        if (c) {
+            cam = c;
+            index = k;
+        } else {
+            mote__warn(ld, "activeCamera \"%s\" names no camera; the first one is used",
+                       mote__quote(active).s);
+        }
+    }
+    char at[48];
+    snprintf(at, sizeof at, "cameras[%d]", index);
+    MOTE__TRY(mote__obj_at(ld, cam, at));
+    mote_camera *c = &ld->scene->camera;
+    memset(c, 0, sizeof *c);
+    MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
+    if (mote__get(cam, "target")) {
+        MOTE__TRY(mote__vec(ld, cam, "target", at, 3, 0, c->target));
+    } else {
+        /* target = position + forward (+z) turned by the yaw-pitch-roll
+         * rotation, the same rotation the core applies to meshes */
+        mote_mesh turn;
+        memset(&turn, 0, sizeof turn);
+        MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, turn.rotation));
+        float w[16];
+        mote_mesh_world_matrix(&turn, w);
+        for (int k = 0; k < 3; k++)
+            c->target[k] = c->position[k] + w[8 + k];
+    }
+    MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
+    c->fov = 0.8f;
+    c->znear = 0.1f;
+    c->zfar = 100.0f;
+    MOTE__TRY(mote__num(ld, cam, "fov", at, &c->fov));
+    MOTE__TRY(mote__num(ld, cam, "minZ", at, &c->znear));
+    MOTE__TRY(mote__num(ld, cam, "maxZ", at, &c->zfar));
+    if (!(c->fov > 0.0f && c->fov < 3.14159f))
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s.fov: %g is not in (0, pi)", at, c->fov);
+    if (!(c->znear > 0.0f) || !(c->zfar > c->znear))
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need 0 < minZ < maxZ",
+                          at, c->znear, c->zfar);
+    ld->scene->has_camera = true;
+    return MOTE_OK;
+}
+
+static R mote__lights(mote__ld *ld)
+{
+    const cJSON *lights;
+    MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
+    int i = 0;
+    mote_scene *sc = ld->scene;
+    for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
+        char at[48], at2[64];
+        snprintf(at, sizeof at, "lights[%d]", i);
+        MOTE__TRY(mote__obj_at(ld, l, at));
+        const cJSON *type = mote__get(l, "type");
+        uint32_t t = 0;
+        snprintf(at2, sizeof at2, "%s.type", at);
+        if (!type)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
+        MOTE__TRY(mote__to_uint(ld, type, at2, 0, 3, &t));
+        mote_light L;
+        memset(&L, 0, sizeof L);
+        float data[3] = {0, 0, 0};
+        MOTE__TRY(mote__vec(ld, l, "data", at, 3, 0, data));
+        bool has_data = mote__get(l, "data") != NULL;
+        if (t == 0 || t == 2) { /* spot lights are drawn as point lights */
+            L.type = MOTE_LIGHT_POINT;
+            memcpy(L.position, data, sizeof data);
+            MOTE__TRY(mote__vec(ld, l, "position", at, 3, 0, L.position));
+        } else if (t == 1) {
+            L.type = MOTE_LIGHT_DIRECTIONAL;
+            L.direction[1] = -1.0f;
+            if (has_data)
+                memcpy(L.direction, data, sizeof data);
+            MOTE__TRY(mote__vec(ld, l, "direction", at, 3, 0, L.direction));
+        } else {
+            L.type = MOTE_LIGHT_HEMISPHERIC;
+            L.direction[1] = 1.0f;
+            if (has_data)
+                memcpy(L.direction, data, sizeof data);
+            MOTE__TRY(mote__vec(ld, l, "direction", at, 3, 0, L.direction));
+            MOTE__TRY(mote__vec(ld, l, "groundColor", at, 3, 0, L.ground_color));
+        }
+        float color[3] = {1, 1, 1}, intensity = 1.0f;
+        MOTE__TRY(mote__vec(ld, l, "diffuse", at, 3, 0, color));
+        MOTE__TRY(mote__num(ld, l, "intensity", at, &intensity));
+        memcpy(L.color, color, sizeof color);
+        L.intensity = intensity;
+        /* the core reads 0 as "default": a black or zero-intensity light
+         * gets a colour so small that it adds nothing */
+        if ((color[0] == 0.0f && color[1] == 0.0f && color[2] == 0.0f) ||
+            intensity == 0.0f) {
+            L.color[0] = 1e-30f;
+            L.color[1] = L.color[2] = 0.0f;
+            L.intensity = 1.0f;
+        }
+        if (sc->light_count >= MOTE_MAX_LIGHTS) {
+            mote__warn(ld, "%s: more than %d lights; this one is ignored", at,
+                       MOTE_MAX_LIGHTS);
+            continue;
+        }
+        sc->lights[sc->light_count++] = L;
+    }
+    return MOTE_OK;
+}
+
+static R mote__scene_colors(mote__ld *ld)
+{
+    mote_scene *sc = ld->scene;
+    MOTE__TRY(mote__vec(ld, ld->root, "ambientColor", "scene", 3, 0, sc->ambient));
+    float c[4] = {0, 0, 0, 1};
+    MOTE__TRY(mote__vec(ld, ld->root, "clearColor", "scene", 3, 4, c));
+    sc->clear_color.r = mote__unit_byte(c[0]);
+    sc->clear_color.g = mote__unit_byte(c[1]);
+    sc->clear_color.b = mote__unit_byte(c[2]);
+    sc->clear_color.a = 255;
+    return MOTE_OK;
+}
+
+/* ---- parsing ----------------------------------------------------------- */
+
+/* Nesting depth checked on the text before cJSON (which recurses) sees it. */
+static R mote__check_depth(mote__ld *ld, const char *json, size_t size, bool *unclosed)
+{
+    int depth = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < size; i++) {
+        char c = json[i];
+        if (in_string) {
+            if (c == '\\')
+                i++;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > ld->lim.max_json_depth)
+                return mote__fail(ld, MOTE_ERR_LIMIT,
+                                  "byte %zu: nesting deeper than the limit of %d levels", i,
+                                  ld->lim.max_json_depth);
+        } else if (c == ']' || c == '}') {
+            depth--;
+        }
+    }
+    *unclosed = in_string || depth > 0;
+    return MOTE_OK;
+}
+
+static R mote__parse(mote__ld *ld, const char *json, size_t size, cJSON **out)
+{
+    *out = NULL;
+    bool unclosed = false;
+    MOTE__TRY(mote__check_depth(ld, json, size, &unclosed));
+    if (size == 0)
+        return mote__fail(ld, MOTE_ERR_PARSE, "empty file");
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithLengthOpts(json, size, &end, 0);
+    if (!root) {
+        size_t at = end && end >= json && end <= json + size ? (size_t)(end - json) : size;
+        size_t line = 1;
+        for (size_t i = 0; i < at && i < size; i++)
+            line += json[i] == '\n';
+        if (at >= size || unclosed)
+            return mote__fail(ld, MOTE_ERR_PARSE, "line %zu: unexpected end of the JSON text "
+                              "(truncated?)", line);
+        return mote__fail(ld, MOTE_ERR_PARSE, "line %zu, byte %zu: malformed JSON", line, at);
+    }
+    size_t at = end ? (size_t)(end - json) : size;
+    while (at < size && (json[at] == ' ' || json[at] == '\t' || json[at] == '\r' ||
+                         json[at] == '\n' || json[at] == '\0'))
+        at++;
+    if (at < size) {
+        cJSON_Delete(root);
+        return mote__fail(ld, MOTE_ERR_PARSE, "byte %zu: text after the end of the JSON value",
+                          at);
+    }
+    if (!cJSON_IsObject(root)) {
+        cJSON_Delete(root);
+        return mote__fail(ld, MOTE_ERR_PARSE, "expected a JSON object at the top level");
+    }
+    *out = root;
+    return MOTE_OK;
+}
+
+static R mote__load(mote__ld *ld, const char *json, size_t size)
+{
+    cJSON *root;
+    MOTE__TRY(mote__parse(ld, json, size, &root));
+    ld->root = root;
+    R r = mote__materials(ld);
+    if (r == MOTE_OK) r = mote__multi_materials(ld);
+    if (r == MOTE_OK) r = mote__nodes(ld);
+    if (r == MOTE_OK) r = mote__parents(ld);
+    if (r == MOTE_OK) r = mote__build_meshes(ld);
+    if (r == MOTE_OK) r = mote__camera(ld);
+    if (r == MOTE_OK) r = mote__lights(ld);
+    if (r == MOTE_OK) r = mote__scene_colors(ld);
+    cJSON_Delete(root);
+    ld->root = NULL;
+    return r;
+}
+
+static void mote__free_storage(mote_scene *scene)
+{
+    mote__store *keep = scene->storage_;
+    if (scene->textures)
+        for (int i = 0; i < scene->texture_count; i++)
+            mote_texture_free(&scene->textures[i]);
+    if (keep) {
+        mote__store_release(keep);
+        mote__io_free(keep);
+    }
+}
+
+void mote_scene_free(mote_scene *scene)
+{
+    if (!scene)
+        return;
+    mote__free_storage(scene);
+    memset(scene, 0, sizeof *scene);
+}
+
+mote_result mote_scene_load_memory(const char *json, size_t size, const char *name,
+                                   const char *base_dir, const mote_limits *limits,
+                                   mote_scene *out, char *message, size_t message_size)
+{
+    if (message && message_size)
+        message[0] = '\0';
+    if (!out)
+        return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
+                              "scene: no output scene given");
+    memset(out, 0, sizeof *out);
+    if (!json && size > 0)
+        return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
+                              "scene: no JSON text given");
+    mote__ld ld;
+    memset(&ld, 0, sizeof ld);
+    mote__io_clean_name(ld.name, sizeof ld.name, name ? name : "scene");
+    ld.base_dir = base_dir;
+    ld.lim = mote__io_limits(limits);
+    ld.msg = message;
+    ld.msg_size = message_size;
+    ld.scene = out;
+    if (size > ld.lim.max_file_bytes)
+        return mote__fail(&ld, MOTE_ERR_LIMIT, "%zu bytes, more than the limit of %zu", size,
+                          ld.lim.max_file_bytes);
+    ld.keep = mote__io_calloc(1, sizeof *ld.keep);
+    if (!ld.keep)
+        return mote__oom(&ld, "scene");
+    out->storage_ = ld.keep;
+    R r = mote__load(&ld, json ? json : "", size);
+    mote__store_release(&ld.tmp);
+    if (r != MOTE_OK) {
+        mote_scene_free(out);
+        return r;
+    }
+    return MOTE_OK;
+}
+
+mote_result mote_scene_load(const char *path, const mote_limits *limits, mote_scene *out,
+                            char *message, size_t message_size)
+{
+    if (out)
+        memset(out, 0, sizeof *out);
+    if (!path || !out)
+        return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
+                              "scene: no path or no output scene given");
+    mote_limits lim = mote__io_limits(limits);
+    char *data = NULL;
+    size_t size = 0;
+    R r = mote__io_read_file(path, lim.max_file_bytes, &data, &size, message, message_size);
+    if (r != MOTE_OK)
+        return r;
+    /* split "dir/name.babylon": textures resolve in dir, messages say name */
+    const char *slash = strrchr(path, '/');
+#ifdef _WIN32
+    const char *bslash = strrchr(path, '\\');
+    if (bslash && (!slash || bslash > slash))
+        slash = bslash;
+#endif
+    const char *base = slash ? slash + 1 : path;
+    size_t dir_len = slash ? (size_t)(slash - path) : 1;
+    char *dir = mote__io_malloc(dir_len + 1);
+    if (!dir) {
+        mote__io_free(data);
+        return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
+                              "%s: out of memory", base);
+    }
+    if (slash)
+        memcpy(dir, path, dir_len);
+    else
+        dir[0] = '.';
+    if (slash && dir_len == 0)
+        dir[dir_len++] = '/'; /* "/scene.babylon" lives in "/" */
+    dir[dir_len] = '\0';
+    r = mote_scene_load_memory(data, size, base, dir, &lim, out, message, message_size);
+    mote__io_free(dir);
+    mote__io_free(data);
+    return r;
+}
+
+/* ---- framing ----------------------------------------------------------- */
+
+void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame)
+{
+    if (!frame)
+        return;
+    memset(frame, 0, sizeof *frame);
+    if (!scene)
+        return;
+    float c[3], d[3], r2 = 0.0f;
+    for (int k = 0; k < 3; k++) {
+        c[k] = 0.5f * (scene->bounds_min[k] + scene->bounds_max[k]);
+        d[k] = 0.5f * (scene->bounds_max[k] - scene->bounds_min[k]);
+        r2 += d[k] * d[k];
+    }
+    float radius = sqrtf(r2);
+    if (!(radius > 1e-6f) || !isfinite(radius))
+        radius = 1.0f;
+    if (scene->has_camera) {
+        frame->camera = scene->camera;
+    } else {
+        /* front-top-right of the box, far enough that the bounding sphere
+         * fits the narrower of the two fields of view, with a margin */
+        const float fov = 0.8f;
+        float dir[3] = {1.0f, 0.6f, -1.4f};
+        float len = sqrtf(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        float half = 0.5f * fov;
+        float s = mote_sinf(half);
+        if (aspect > 0.0f && aspect < 1.0f) {
+            /* sin(atan(t * aspect)) for the horizontal half angle */
+            float th = mote_tanf(half) * aspect;
+            float sh = th / sqrtf(1.0f + th * th);
+            if (sh < s)
+                s = sh;
+        }
+        float dist = radius / s * 1.1f;
+        mote_camera *cam = &frame->camera;
+        for (int k = 0; k < 3; k++) {
+            cam->position[k] = c[k] + dir[k] / len * dist;
+            cam->target[k] = c[k];
+        }
+        cam->fov = fov;
+        cam->znear = dist - radius * 1.5f;
+        if (cam->znear < dist * 0.01f)
+            cam->znear = dist * 0.01f;
+        cam->zfar = dist + radius * 2.0f;
+    }
+    int n = scene->light_count;
+    if (n > MOTE_MAX_LIGHTS)
+        n = MOTE_MAX_LIGHTS;
+    for (int i = 0; i < n; i++)
+        frame->lights[i] = scene->lights[i];
+    frame->light_count = n;
+    if (n == 0) {
+        mote_light *l = &frame->lights[0];
+        l->type = MOTE_LIGHT_POINT;
+        memcpy(l->position, frame->camera.position, sizeof l->position);
+        l->position[1] += radius;
+        l->color[0] = l->color[1] = l->color[2] = 1.0f;
+        l->intensity = 1.0f;
+        frame->light_count = 1;
+    }
+    memcpy(frame->ambient, scene->ambient, sizeof frame->ambient);
+}

@@ -1,0 +1,135 @@
+/*
+ * texture.c - images to RGBA8888 textures through stb_image (the
+ * implementation comes from Debian's libstb). The header is read first with
+ * stbi_info_from_memory so that a file claiming 100000 x 100000 pixels is
+ * refused before anything is decoded.
+ */
+#include "io_internal.h"
+
+#include <limits.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <stb_image.h>
+
+/* PNG width and height straight from the IHDR chunk: stb_image refuses to
+ * even describe images over 2^30 bytes, and such a header deserves a limit
+ * error rather than "unknown image type". */
+static bool mote__png_size(const unsigned char *d, size_t size, uint32_t *w, uint32_t *h)
+{
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size < 24 || memcmp(d, sig, 8) != 0 || memcmp(d + 12, "IHDR", 4) != 0)
+        return false;
+    *w = (uint32_t)d[16] << 24 | (uint32_t)d[17] << 16 | (uint32_t)d[18] << 8 | d[19];
+    *h = (uint32_t)d[20] << 24 | (uint32_t)d[21] << 16 | (uint32_t)d[22] << 8 | d[23];
+    return true;
+}
+
+mote_result mote_texture_load_memory(const void *data, size_t size,
+                                     const mote_limits *limits, mote_texture *out,
+                                     char *message, size_t message_size)
+{
+    if (!out)
+        return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
+                              "texture: no output texture given");
+    memset(out, 0, sizeof *out);
+    if (!data && size > 0)
+        return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
+                              "texture: no data given");
+    mote_limits lim = mote__io_limits(limits);
+    if (size == 0)
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE, "texture: empty image");
+    if (size > (size_t)INT_MAX)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %zu bytes is more than stb_image can read", size);
+    uint32_t pw, ph;
+    if (mote__png_size(data, size, &pw, &ph) &&
+        (pw > (uint32_t)lim.max_texture_width || ph > (uint32_t)lim.max_texture_height))
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %lu x %lu is larger than the limit of %d x %d",
+                              (unsigned long)pw, (unsigned long)ph, lim.max_texture_width,
+                              lim.max_texture_height);
+    int w = 0, h = 0, comp = 0;
+    if (!stbi_info_from_memory(data, (int)size, &w, &h, &comp))
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                              "texture: not a readable image (%s)", stbi_failure_reason());
+    if (w <= 0 || h <= 0)
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                              "texture: image has no pixels (%d x %d)", w, h);
+    if (w > lim.max_texture_width || h > lim.max_texture_height)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %d x %d is larger than the limit of %d x %d", w, h,
+                              lim.max_texture_width, lim.max_texture_height);
+    if ((size_t)w > SIZE_MAX / 4 / (size_t)h || (size_t)w * 4 > (size_t)INT_MAX)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %d x %d overflows the size of a buffer", w, h);
+    size_t bytes = (size_t)w * (size_t)h * 4;
+    if (bytes > lim.max_texture_bytes)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %d x %d needs %zu bytes, more than the limit of %zu",
+                              w, h, bytes, lim.max_texture_bytes);
+    if (mote__io_should_fail())
+        return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
+                              "texture: out of memory decoding %d x %d", w, h);
+    int dw = 0, dh = 0, dc = 0;
+    stbi_uc *pixels = stbi_load_from_memory(data, (int)size, &dw, &dh, &dc, 4);
+    if (!pixels) {
+        const char *why = stbi_failure_reason();
+        bool oom = why && strstr(why, "outofmem") != NULL;
+        return mote__io_error(message, message_size,
+                              oom ? MOTE_ERR_OUT_OF_MEMORY : MOTE_ERR_PARSE,
+                              "texture: cannot decode the image (%s)", why ? why : "unknown");
+    }
+    if (dw != w || dh != h) {
+        /* the header and the decoder disagree: do not trust either */
+        stbi_image_free(pixels);
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                              "texture: decoded %d x %d but the header says %d x %d", dw,
+                              dh, w, h);
+    }
+    mote__io_track(1);
+    out->width = w;
+    out->height = h;
+    out->format = MOTE_FORMAT_RGBA8888;
+    out->stride = w * 4;
+    out->pixels = pixels;
+    return MOTE_OK;
+}
+
+mote_result mote_texture_load(const char *path, const mote_limits *limits,
+                              mote_texture *out, char *message, size_t message_size)
+{
+    if (!out || !path)
+        return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
+                              "texture: no path or no output texture given");
+    memset(out, 0, sizeof *out);
+    mote_limits lim = mote__io_limits(limits);
+    char *data = NULL;
+    size_t size = 0;
+    mote_result r = mote__io_read_file(path, lim.max_file_bytes, &data, &size, message,
+                                       message_size);
+    if (r != MOTE_OK)
+        return r;
+    char inner[256];
+    r = mote_texture_load_memory(data, size, &lim, out, inner, sizeof inner);
+    mote__io_free(data);
+    if (r != MOTE_OK) {
+        char name[160];
+        mote__io_clean_name(name, sizeof name, path);
+        /* "texture: why" becomes "path: why" */
+        const char *why = strncmp(inner, "texture: ", 9) == 0 ? inner + 9 : inner;
+        mote__io_error(message, message_size, r, "%s: %s", name, why);
+    }
+    return r;
+}
+
+void mote_texture_free(mote_texture *texture)
+{
+    if (!texture)
+        return;
+    if (texture->pixels) {
+        stbi_image_free((void *)(uintptr_t)texture->pixels);
+        mote__io_track(-1);
+    }
+    memset(texture, 0, sizeof *texture);
+}
