@@ -1,0 +1,421 @@
+/*
+ * mote-render - renders a .babylon scene to a PNG or PPM image, and times it.
+ *
+ *   mote-render SCENE -o OUT.png|OUT.ppm [--size WxH] [--mode MODE] [--no-cull]
+ *               [--camera ex,ey,ez:tx,ty,tz] [--fov RADIANS] [--rotate rx,ry,rz]
+ *               [--frames N] [--threads T] [--spin DEGREES]
+ *               [--perspective correct|affine|subspan] [--filter nearest|bilinear]
+ *               [--subpixel-bits N]
+ *
+ * The device bins triangles into an arena and rasterises the tiles on OpenMP
+ * threads (mote_parallel_openmp). With --frames N it renders one warm-up
+ * frame and then N timed frames (begin, draws, end: no loading, no writing),
+ * turning the scene --spin degrees about the world y axis each frame, and
+ * prints "ms/frame: median X (min Y, max Z)". The image written is always
+ * the unturned frame, so it does not depend on --frames or --spin.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <mote/mote.h>
+#include <mote/mote_io.h>
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+typedef struct options {
+    const char *scene_path;
+    const char *out_path;
+    int width, height;
+    mote_draw_desc draw;
+    bool has_camera;
+    float eye[3], target[3];
+    float fov;                    /* 0: the scene's (or the default) */
+    float rotate[3];
+    int frames;                   /* 0: no timing */
+    int threads;                  /* 0: all */
+    float spin_degrees;
+    int subpixel_bits;            /* 0: default */
+} options;
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: mote-render SCENE.babylon -o OUT.png|OUT.ppm [options]\n"
+            "  --size WxH              image size (default 640x480)\n"
+            "  --mode MODE             points|wireframe|flat|gouraud|textured\n"
+            "                          (default: gouraud, textured where a material has a texture)\n"
+            "  --no-cull               draw back faces too\n"
+            "  --camera EX,EY,EZ:TX,TY,TZ  eye and target (default: the scene's camera,\n"
+            "                          else one that frames the scene)\n"
+            "  --fov RADIANS           vertical field of view\n"
+            "  --rotate RX,RY,RZ       add to every mesh's rotation (radians)\n"
+            "  --frames N              time N frames after a warm-up and print ms/frame\n"
+            "  --spin DEGREES          turn the scene about y by this much per timed frame\n"
+            "  --threads T             rasteriser threads (default: all)\n"
+            "  --perspective P         correct|affine|subspan (default correct)\n"
+            "  --filter F              nearest|bilinear (default nearest)\n"
+            "  --subpixel-bits N       snapping grid, 4..8 (default 8)\n"
+            "  --help                  this text\n");
+}
+
+static int fail(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "mote-render: ");
+    vfprintf(stderr, fmt, ap);
+    fprintf(stderr, "\n");
+    va_end(ap);
+    return 1;
+}
+
+/* Parses exactly `count` comma-separated floats; false on anything else. */
+static bool parse_floats(const char *s, float *v, int count)
+{
+    for (int i = 0; i < count; i++) {
+        char *end;
+        errno = 0;
+        double d = strtod(s, &end);
+        if (end == s || errno != 0 || d != d || d > 1e30 || d < -1e30)
+            return false;
+        v[i] = (float)d;
+        s = end;
+        if (i + 1 < count) {
+            if (*s != ',')
+                return false;
+            s++;
+        }
+    }
+    return *s == '\0';
+}
+
+static bool parse_int(const char *s, int lo, int hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi)
+        return false;
+    *out = (int)v;
+    return true;
+}
+
+static bool parse_size(const char *s, int *w, int *h)
+{
+    char buf[64];
+    const char *x = strchr(s, 'x');
+    if (!x || (size_t)(x - s) >= sizeof buf)
+        return false;
+    memcpy(buf, s, (size_t)(x - s));
+    buf[x - s] = '\0';
+    return parse_int(buf, 1, MOTE_MAX_SIZE, w) && parse_int(x + 1, 1, MOTE_MAX_SIZE, h);
+}
+
+/* Picks the index of `s` in a NULL-terminated list; -1 when absent. */
+static int pick(const char *s, const char *const *names)
+{
+    for (int i = 0; names[i]; i++)
+        if (strcmp(s, names[i]) == 0)
+            return i;
+    return -1;
+}
+
+static bool has_suffix(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && strcmp(s + n - k, suffix) == 0;
+}
+
+/* Returns 0 on success, 1 on a bad argument (message printed), 2 for --help. */
+static int parse_args(int argc, char **argv, options *o)
+{
+    static const char *const modes[] = {"points", "wireframe", "flat", "gouraud",
+                                        "textured", NULL};
+    static const mote_mode mode_values[] = {MOTE_MODE_POINTS, MOTE_MODE_WIREFRAME,
+                                            MOTE_MODE_FLAT, MOTE_MODE_GOURAUD,
+                                            MOTE_MODE_TEXTURED};
+    static const char *const persp[] = {"correct", "affine", "subspan", NULL};
+    static const mote_perspective persp_values[] = {MOTE_PERSPECTIVE_CORRECT,
+                                                    MOTE_PERSPECTIVE_AFFINE,
+                                                    MOTE_PERSPECTIVE_SUBSPAN};
+    static const char *const filters[] = {"nearest", "bilinear", NULL};
+    static const mote_filter filter_values[] = {MOTE_FILTER_NEAREST, MOTE_FILTER_BILINEAR};
+
+    memset(o, 0, sizeof *o);
+    o->width = 640;
+    o->height = 480;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+            return 2;
+        if (strcmp(a, "--no-cull") == 0) {
+            o->draw.cull = MOTE_CULL_NONE;
+            continue;
+        }
+        if (a[0] != '-' || a[1] == '\0') {
+            if (o->scene_path)
+                return fail("more than one scene given (\"%s\"); see --help", a);
+            o->scene_path = a;
+            continue;
+        }
+        /* every other option takes a value */
+        if (i + 1 >= argc)
+            return fail("%s needs a value; see --help", a);
+        const char *v = argv[++i];
+        int k;
+        if (strcmp(a, "-o") == 0) {
+            o->out_path = v;
+        } else if (strcmp(a, "--size") == 0) {
+            if (!parse_size(v, &o->width, &o->height))
+                return fail("--size \"%s\": expected WxH, each 1..%d", v, MOTE_MAX_SIZE);
+        } else if (strcmp(a, "--mode") == 0) {
+            if ((k = pick(v, modes)) < 0)
+                return fail("--mode \"%s\": expected points, wireframe, flat, gouraud "
+                            "or textured", v);
+            o->draw.mode = mode_values[k];
+        } else if (strcmp(a, "--camera") == 0) {
+            const char *colon = strchr(v, ':');
+            char eye[128];
+            if (!colon || (size_t)(colon - v) >= sizeof eye)
+                return fail("--camera \"%s\": expected ex,ey,ez:tx,ty,tz", v);
+            memcpy(eye, v, (size_t)(colon - v));
+            eye[colon - v] = '\0';
+            if (!parse_floats(eye, o->eye, 3) || !parse_floats(colon + 1, o->target, 3))
+                return fail("--camera \"%s\": expected ex,ey,ez:tx,ty,tz", v);
+            o->has_camera = true;
+        } else if (strcmp(a, "--fov") == 0) {
+            if (!parse_floats(v, &o->fov, 1) || !(o->fov > 0.0f && o->fov < 3.14159f))
+                return fail("--fov \"%s\": expected radians in (0, pi)", v);
+        } else if (strcmp(a, "--rotate") == 0) {
+            if (!parse_floats(v, o->rotate, 3))
+                return fail("--rotate \"%s\": expected rx,ry,rz in radians", v);
+        } else if (strcmp(a, "--frames") == 0) {
+            if (!parse_int(v, 1, 1000000, &o->frames))
+                return fail("--frames \"%s\": expected a count from 1 to 1000000", v);
+        } else if (strcmp(a, "--threads") == 0) {
+            if (!parse_int(v, 1, 4096, &o->threads))
+                return fail("--threads \"%s\": expected a count from 1 to 4096", v);
+        } else if (strcmp(a, "--spin") == 0) {
+            if (!parse_floats(v, &o->spin_degrees, 1))
+                return fail("--spin \"%s\": expected degrees", v);
+        } else if (strcmp(a, "--perspective") == 0) {
+            if ((k = pick(v, persp)) < 0)
+                return fail("--perspective \"%s\": expected correct, affine or subspan", v);
+            o->draw.perspective = persp_values[k];
+        } else if (strcmp(a, "--filter") == 0) {
+            if ((k = pick(v, filters)) < 0)
+                return fail("--filter \"%s\": expected nearest or bilinear", v);
+            o->draw.filter = filter_values[k];
+        } else if (strcmp(a, "--subpixel-bits") == 0) {
+            if (!parse_int(v, 4, 8, &o->subpixel_bits))
+                return fail("--subpixel-bits \"%s\": expected 4 to 8", v);
+        } else {
+            return fail("unknown option \"%s\"; see --help", a);
+        }
+    }
+    if (!o->scene_path)
+        return fail("no scene given; see --help");
+    if (!o->out_path)
+        return fail("no output given (-o OUT.png or OUT.ppm); see --help");
+    if (!has_suffix(o->out_path, ".png") && !has_suffix(o->out_path, ".ppm"))
+        return fail("-o \"%s\": the name must end in .png or .ppm", o->out_path);
+    return 0;
+}
+
+/* q = a * b for quaternions stored (x, y, z, w). */
+static void quat_mul(const float a[4], const float b[4], float q[4])
+{
+    float x = a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1];
+    float y = a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0];
+    float z = a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3];
+    float w = a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
+    q[0] = x; q[1] = y; q[2] = z; q[3] = w;
+}
+
+/* The quaternion of Babylon's yaw (y), pitch (x), roll (z) rotation. */
+static void quat_yaw_pitch_roll(const float r[3], float q[4])
+{
+    float sp = mote_sinf(r[0] * 0.5f), cp = mote_cosf(r[0] * 0.5f);
+    float sy = mote_sinf(r[1] * 0.5f), cy = mote_cosf(r[1] * 0.5f);
+    float sr = mote_sinf(r[2] * 0.5f), cr = mote_cosf(r[2] * 0.5f);
+    q[0] = cy * sp * cr + sy * cp * sr;
+    q[1] = sy * cp * cr - cy * sp * sr;
+    q[2] = cy * cp * sr - sy * sp * cr;
+    q[3] = cy * cp * cr + sy * sp * sr;
+}
+
+/* Copies the loaded meshes into `out`, each root mesh turned by `rotate`
+ * (added to its own rotation) and the whole scene then turned by `spin`
+ * radians about the world y axis. Children follow their parents. */
+static void pose_meshes(const mote_scene *scene, mote_mesh *out, const float rotate[3],
+                        float spin)
+{
+    mote_mesh turn;
+    memset(&turn, 0, sizeof turn);
+    turn.rotation[1] = spin;
+    float m[16];
+    mote_mesh_world_matrix(&turn, m);   /* the core's own rotation about y */
+    for (int i = 0; i < scene->mesh_count; i++) {
+        const mote_mesh *src = &scene->meshes[i];
+        mote_mesh *dst = &out[i];
+        *dst = *src;
+        if (src->parent) {   /* keep the hierarchy inside the copy */
+            ptrdiff_t p = src->parent - scene->meshes;
+            dst->parent = (p >= 0 && p < scene->mesh_count) ? &out[p] : src->parent;
+            continue;
+        }
+        const float *p = src->position;
+        dst->position[0] = m[0] * p[0] + m[4] * p[1] + m[8] * p[2];
+        dst->position[1] = m[1] * p[0] + m[5] * p[1] + m[9] * p[2];
+        dst->position[2] = m[2] * p[0] + m[6] * p[1] + m[10] * p[2];
+        float add[3] = {rotate[0], rotate[1] + spin, rotate[2]};
+        if (src->use_quaternion) {
+            float q[4];
+            quat_yaw_pitch_roll(add, q);
+            quat_mul(q, src->rotation_quaternion, dst->rotation_quaternion);
+        } else {
+            for (int k = 0; k < 3; k++)
+                dst->rotation[k] = src->rotation[k] + add[k];
+        }
+    }
+}
+
+static mote_result render_frame(mote_device *dev, const mote_frame_desc *frame,
+                                const mote_mesh *meshes, int count,
+                                const mote_draw_desc *draw)
+{
+    mote_result r = mote_begin(dev, frame);
+    for (int i = 0; i < count && r == MOTE_OK; i++)
+        r = mote_draw(dev, &meshes[i], draw);
+    mote_result e = mote_end(dev);
+    return r != MOTE_OK ? r : e;
+}
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    int status = parse_args(argc, argv, &o);
+    if (status == 2) {
+        usage(stdout);
+        return 0;
+    }
+    if (status != 0)
+        return 1;
+
+    char message[512] = "";
+    mote_scene scene;
+    mote_result r = mote_scene_load(o.scene_path, NULL, &scene, message, sizeof message);
+    if (r != MOTE_OK) {
+        fprintf(stderr, "mote-render: %s\n", message[0] ? message : mote_result_string(r));
+        return 1;
+    }
+    if (scene.warning[0])
+        fprintf(stderr, "mote-render: warning: %s\n", scene.warning);
+
+    int exit_code = 1;
+    size_t pixels = (size_t)o.width * (size_t)o.height;
+    size_t triangles = 0;
+    for (int i = 0; i < scene.mesh_count; i++)
+        triangles += scene.meshes[i].index_count / 3;
+    /* twice what the scene needs, so the arena never fills up (it would still
+     * be correct, only slower) */
+    size_t arena_size = mote_arena_bytes_per_triangle() * triangles * 2 + ((size_t)1 << 20);
+    uint8_t *color = malloc(pixels * 4);
+    uint32_t *depth = malloc(pixels * sizeof *depth);
+    void *arena = malloc(arena_size);
+    mote_mesh *posed = calloc((size_t)scene.mesh_count + 1, sizeof *posed);
+    double *times = calloc((size_t)o.frames + 1, sizeof *times);
+    if (!color || !depth || !arena || !posed || !times) {
+        fprintf(stderr, "mote-render: out of memory for a %dx%d image and %zu triangles\n",
+                o.width, o.height, triangles);
+        goto done;
+    }
+
+    mote_device dev;
+    mote_device_desc desc;
+    memset(&desc, 0, sizeof desc);
+    desc.width = o.width;
+    desc.height = o.height;
+    desc.color = color;
+    desc.depth = depth;
+    desc.clear_color = scene.clear_color;
+    desc.subpixel_bits = o.subpixel_bits;
+    desc.arena = arena;
+    desc.arena_size = arena_size;
+    desc.parallel_for = mote_parallel_openmp;
+    desc.parallel_user = &o.threads;
+    r = mote_device_init(&dev, &desc);
+    if (r != MOTE_OK) {
+        fprintf(stderr, "mote-render: cannot set up the device: %s\n", mote_result_string(r));
+        goto done;
+    }
+
+    mote_frame_desc frame;
+    memset(&frame, 0, sizeof frame);
+    mote_scene_frame(&scene, (float)o.width / (float)o.height, &frame);
+    if (o.has_camera) {
+        memcpy(frame.camera.position, o.eye, sizeof o.eye);
+        memcpy(frame.camera.target, o.target, sizeof o.target);
+        memset(frame.camera.up, 0, sizeof frame.camera.up);
+    }
+    if (o.fov > 0.0f)
+        frame.camera.fov = o.fov;
+
+    if (o.frames > 0) {
+        const float spin = o.spin_degrees * 3.14159265358979f / 180.0f;
+        for (int f = 0; f <= o.frames && r == MOTE_OK; f++) {
+            /* frame 0 warms caches and pages the arena in; it is not timed */
+            pose_meshes(&scene, posed, o.rotate, spin * (float)f);
+            double t0 = now_ms();
+            r = render_frame(&dev, &frame, posed, scene.mesh_count, &o.draw);
+            times[f] = now_ms() - t0;
+        }
+        if (r == MOTE_OK) {
+            qsort(times + 1, (size_t)o.frames, sizeof *times, compare_double);
+            double median = (o.frames % 2) ? times[1 + o.frames / 2]
+                                           : 0.5 * (times[o.frames / 2] + times[1 + o.frames / 2]);
+            printf("ms/frame: median %.3f (min %.3f, max %.3f)\n", median, times[1],
+                   times[o.frames]);
+        }
+    }
+    if (r == MOTE_OK) {
+        pose_meshes(&scene, posed, o.rotate, 0.0f);
+        r = render_frame(&dev, &frame, posed, scene.mesh_count, &o.draw);
+    }
+    if (r != MOTE_OK) {
+        fprintf(stderr, "mote-render: rendering failed: %s\n", mote_result_string(r));
+        goto done;
+    }
+    r = mote_write_image(o.out_path, &dev, message, sizeof message);
+    if (r != MOTE_OK) {
+        fprintf(stderr, "mote-render: %s\n", message[0] ? message : mote_result_string(r));
+        goto done;
+    }
+    exit_code = 0;
+
+done:
+    free(times);
+    free(posed);
+    free(arena);
+    free(depth);
+    free(color);
+    mote_scene_free(&scene);
+    return exit_code;
+}

@@ -1,0 +1,533 @@
+/*
+ * test_io.c - the host I/O layer: the tutorial's monkey.babylon (legacy
+ * layout), a current-layout scene written here, framing, texture loading
+ * and PNG/PPM output.
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+#include <mote/mote.h>
+#include <mote/mote_io.h>
+#include "io/io_internal.h"
+#include "unity.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define MONKEY MOTE_SOURCE_DIR "/../shared/assets/monkey.babylon"
+
+static char msg[512];
+static char tmpdir[256];
+static long live_before;
+
+void setUp(void)
+{
+    msg[0] = '\0';
+    live_before = mote__io_live_allocations();
+    mote__io_set_alloc_failure_after(-1);
+}
+
+void tearDown(void) {}
+
+static bool file_exists(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (f)
+        fclose(f);
+    return f != NULL;
+}
+
+static const char *tmp_path(const char *name)
+{
+    static char path[512];
+    snprintf(path, sizeof path, "%s/%s", tmpdir, name);
+    return path;
+}
+
+static long read_all(const char *path, unsigned char *buf, long cap)
+{
+    FILE *f = fopen(path, "rb");
+    TEST_ASSERT_NOT_NULL_MESSAGE(f, path);
+    long n = (long)fread(buf, 1, (size_t)cap, f);
+    fclose(f);
+    return n;
+}
+
+#define ASSERT_VEC3(x, y, z, v, tol)               \
+    do {                                           \
+        TEST_ASSERT_FLOAT_WITHIN(tol, x, (v)[0]);  \
+        TEST_ASSERT_FLOAT_WITHIN(tol, y, (v)[1]);  \
+        TEST_ASSERT_FLOAT_WITHIN(tol, z, (v)[2]);  \
+    } while (0)
+
+/* ---- the tutorial's monkey -------------------------------------------- */
+
+void loader_should_read_the_tutorial_monkey(void)
+{
+    if (!file_exists(MONKEY))
+        TEST_IGNORE_MESSAGE("../shared/assets/monkey.babylon is absent: monkey test skipped");
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MONKEY, NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    const mote_mesh *m = &s.meshes[0];
+    TEST_ASSERT_EQUAL_UINT32(886, m->vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(966 * 3, m->index_count);
+    TEST_ASSERT_NULL(m->parent);
+    ASSERT_VEC3(0.001f, 0.001f, 0.001f, m->position, 0.0f);
+    ASSERT_VEC3(1.0f, 1.0f, 1.0f, m->scaling, 0.0f);
+    TEST_ASSERT_FALSE(m->use_quaternion);
+    /* material "02 - Default": diffuse 0.4706 -> 120, Suzanne.jpg, wrap */
+    TEST_ASSERT_TRUE(m->material.color_set);
+    TEST_ASSERT_EQUAL_UINT8(120, m->material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(120, m->material.color.g);
+    TEST_ASSERT_EQUAL_UINT8(120, m->material.color.b);
+    TEST_ASSERT_FALSE(m->material.v_origin_bottom);
+    TEST_ASSERT_EQUAL(MOTE_WRAP_REPEAT, m->material.wrap_u);
+    TEST_ASSERT_EQUAL(MOTE_WRAP_REPEAT, m->material.wrap_v);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, m->material.u_scale);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], m->material.texture);
+    TEST_ASSERT_EQUAL(512, s.textures[0].width);
+    TEST_ASSERT_EQUAL(512, s.textures[0].height);
+    TEST_ASSERT_EQUAL(MOTE_FORMAT_RGBA8888, s.textures[0].format);
+    TEST_ASSERT_EQUAL(512 * 4, s.textures[0].stride);
+    /* every index in range, every normal of unit length */
+    for (uint32_t i = 0; i < m->index_count; i++)
+        TEST_ASSERT_TRUE(m->indices[i] < m->vertex_count);
+    for (uint32_t i = 0; i < m->vertex_count; i++) {
+        const float *n = m->vertices[i].normal;
+        TEST_ASSERT_FLOAT_WITHIN(0.01f, 1.0f, sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+    }
+    TEST_ASSERT_TRUE(m->bounds_radius > 1.0f && m->bounds_radius < 3.0f);
+    /* camera and the legacy light (position in `data`) */
+    TEST_ASSERT_TRUE(s.has_camera);
+    ASSERT_VEC3(4.0768f, 1.3828f, -4.8015f, s.camera.position, 0.0f);
+    ASSERT_VEC3(-0.1386f, 0.9719f, 0.1904f, s.camera.target, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(0.8576f, s.camera.fov);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(100.0f, s.camera.zfar);
+    TEST_ASSERT_EQUAL(1, s.light_count);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, s.lights[0].type);
+    ASSERT_VEC3(4.0762f, 5.9039f, 1.0055f, s.lights[0].position, 0.0f);
+    ASSERT_VEC3(1.0f, 1.0f, 1.0f, s.lights[0].color, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.lights[0].intensity);
+    TEST_ASSERT_EQUAL_UINT8(0, s.clear_color.r);
+    TEST_ASSERT_EQUAL_UINT8(255, s.clear_color.a);
+    /* Suzanne is about 2.7 x 2 x 1.7 around the origin */
+    TEST_ASSERT_TRUE(s.bounds_min[0] < -1.2f && s.bounds_max[0] > 1.2f);
+    TEST_ASSERT_TRUE(s.bounds_max[1] - s.bounds_min[1] > 1.5f);
+    mote_scene_free(&s);
+    TEST_ASSERT_NULL(s.meshes);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+void loader_should_keep_the_monkeys_first_vertex_exactly(void)
+{
+    if (!file_exists(MONKEY))
+        TEST_IGNORE_MESSAGE("../shared/assets/monkey.babylon is absent: monkey test skipped");
+    /* the first 8 floats of `vertices` in the file, read independently */
+    FILE *f = fopen(MONKEY, "rb");
+    TEST_ASSERT_NOT_NULL(f);
+    static char text[300000];
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    const char *v = strstr(text, "\"vertices\"");
+    TEST_ASSERT_NOT_NULL(v);
+    v = strchr(v, '[') + 1;
+    float expect[8];
+    for (int i = 0; i < 8; i++) {
+        char *end;
+        expect[i] = strtof(v, &end);
+        v = strchr(end, ',') + 1;
+    }
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MONKEY, NULL, &s, msg, sizeof msg), msg);
+    const mote_vertex *vx = &s.meshes[0].vertices[0];
+    ASSERT_VEC3(expect[0], expect[1], expect[2], vx->position, 0.0f);
+    ASSERT_VEC3(expect[3], expect[4], expect[5], vx->normal, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(expect[6], vx->uv[0]);
+    TEST_ASSERT_EQUAL_FLOAT(expect[7], vx->uv[1]);
+    mote_scene_free(&s);
+}
+
+/* ---- a current-layout scene ------------------------------------------- */
+
+static const char current_scene[] =
+    "{\"ambientColor\":[0.1,0.2,0.3],\"clearColor\":[0.2,0.4,0.6,1],"
+    "\"cameras\":[{\"id\":\"c1\",\"position\":[0,0,-10],\"target\":[0,0,0]},"
+    " {\"id\":\"c2\",\"position\":[1,2,3],\"rotation\":[0,1.5707963705062866,0],"
+    "  \"fov\":0.7,\"minZ\":0.2,\"maxZ\":20}],"
+    "\"activeCameraID\":\"c2\","
+    "\"lights\":[{\"type\":1,\"direction\":[0,-1,0],\"diffuse\":[1,0.5,0.25],\"intensity\":0.5},"
+    " {\"type\":3,\"direction\":[0,1,0],\"groundColor\":[0.1,0.2,0.3]},"
+    " {\"type\":2,\"position\":[5,6,7]}],"
+    "\"materials\":[{\"id\":\"red\",\"diffuse\":[1,0,0]},"
+    " {\"id\":\"pbr\",\"albedoColor\":[0,0.5,1]}],"
+    "\"multiMaterials\":[{\"id\":\"multi\",\"materials\":[\"red\",\"pbr\"]}],"
+    "\"geometries\":{\"vertexData\":[{\"id\":\"g1\",\"positions\":[0,0,0, 1,0,0, 0,1,0],"
+    "  \"normals\":[0,0,-1, 0,0,-1, 0,0,-1],\"uvs\":[0,0, 1,0, 0,1],\"indices\":[0,2,1]}]},"
+    "\"meshes\":["
+    " {\"id\":\"child\",\"parentId\":\"root\",\"position\":[1,0,0],"
+    "  \"positions\":[0,0,0, 0,1,0, 1,0,0, 1,1,0],\"uvs\":[0,0, 0,1, 1,0, 1,1],"
+    "  \"indices\":[0,1,2, 2,1,3],\"materialId\":\"multi\",\"subMeshes\":["
+    "   {\"materialIndex\":0,\"verticesStart\":0,\"verticesCount\":4,\"indexStart\":0,\"indexCount\":3},"
+    "   {\"materialIndex\":1,\"verticesStart\":0,\"verticesCount\":4,\"indexStart\":3,\"indexCount\":3}]},"
+    " {\"id\":\"root\",\"position\":[0,2,0],\"rotation\":[1,2,3],"
+    "  \"rotationQuaternion\":[0,0,0.70710678,0.70710678],\"scaling\":[2,2,2],"
+    "  \"geometryId\":\"g1\",\"materialId\":\"pbr\"}]}";
+
+void loader_should_read_the_current_layout_with_exact_fields(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(current_scene, strlen(current_scene),
+                                                              "current.babylon", NULL, NULL, &s,
+                                                              msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(3, s.mesh_count); /* child: two sub-meshes, root: one */
+    const mote_mesh *c0 = &s.meshes[0], *c1 = &s.meshes[1], *root = &s.meshes[2];
+    /* sub-meshes share the vertex array and split the indices */
+    TEST_ASSERT_EQUAL_UINT32(4, c0->vertex_count);
+    TEST_ASSERT_EQUAL_PTR(c0->vertices, c1->vertices);
+    TEST_ASSERT_EQUAL_UINT32(3, c0->index_count);
+    TEST_ASSERT_EQUAL_UINT32(3, c1->index_count);
+    TEST_ASSERT_EQUAL_PTR(c0->indices + 3, c1->indices);
+    TEST_ASSERT_EQUAL_UINT32(2, c1->indices[0]);
+    TEST_ASSERT_EQUAL_UINT32(3, c1->indices[2]);
+    ASSERT_VEC3(1.0f, 1.0f, 0.0f, c0->vertices[3].position, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, c0->vertices[1].uv[1]);
+    /* no normals in the file: smooth ones, oriented as Babylon computes them */
+    for (int i = 0; i < 4; i++)
+        ASSERT_VEC3(0.0f, 0.0f, 1.0f, c0->vertices[i].normal, 1e-6f);
+    /* the multi-material's slots by materialIndex */
+    TEST_ASSERT_TRUE(c0->material.color_set);
+    TEST_ASSERT_EQUAL_UINT8(255, c0->material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(0, c0->material.color.g);
+    TEST_ASSERT_EQUAL_UINT8(0, c1->material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(128, c1->material.color.g);
+    TEST_ASSERT_EQUAL_UINT8(255, c1->material.color.b);
+    TEST_ASSERT_TRUE(c0->material.v_origin_bottom);
+    TEST_ASSERT_TRUE(root->material.v_origin_bottom);
+    TEST_ASSERT_EQUAL_UINT8(128, root->material.color.g);
+    /* parentId names a mesh defined later */
+    TEST_ASSERT_EQUAL_PTR(root, c0->parent);
+    TEST_ASSERT_EQUAL_PTR(root, c1->parent);
+    TEST_ASSERT_NULL(root->parent);
+    ASSERT_VEC3(1.0f, 0.0f, 0.0f, c0->position, 0.0f);
+    /* rotationQuaternion overrides rotation */
+    TEST_ASSERT_TRUE(root->use_quaternion);
+    TEST_ASSERT_EQUAL_FLOAT(0.70710678f, root->rotation_quaternion[2]);
+    TEST_ASSERT_EQUAL_FLOAT(0.70710678f, root->rotation_quaternion[3]);
+    ASSERT_VEC3(2.0f, 2.0f, 2.0f, root->scaling, 0.0f);
+    /* geometryId */
+    TEST_ASSERT_EQUAL_UINT32(3, root->vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(3, root->index_count);
+    TEST_ASSERT_EQUAL_UINT32(2, root->indices[1]);
+    ASSERT_VEC3(0.0f, 0.0f, -1.0f, root->vertices[2].normal, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, root->vertices[2].uv[1]);
+    /* world box: root turns +x to +y, scales 2, moves up 2; the child sits
+     * inside it at x + 1 */
+    ASSERT_VEC3(-2.0f, 2.0f, 0.0f, s.bounds_min, 1e-5f);
+    ASSERT_VEC3(0.0f, 6.0f, 0.0f, s.bounds_max, 1e-5f);
+    /* camera c2: yaw pi/2 turns forward +z to +x */
+    TEST_ASSERT_TRUE(s.has_camera);
+    ASSERT_VEC3(1.0f, 2.0f, 3.0f, s.camera.position, 0.0f);
+    ASSERT_VEC3(2.0f, 2.0f, 3.0f, s.camera.target, 1e-5f);
+    TEST_ASSERT_EQUAL_FLOAT(0.7f, s.camera.fov);
+    TEST_ASSERT_EQUAL_FLOAT(0.2f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(20.0f, s.camera.zfar);
+    /* lights: directional, hemispheric, spot as point */
+    TEST_ASSERT_EQUAL(3, s.light_count);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_DIRECTIONAL, s.lights[0].type);
+    ASSERT_VEC3(0.0f, -1.0f, 0.0f, s.lights[0].direction, 0.0f);
+    ASSERT_VEC3(1.0f, 0.5f, 0.25f, s.lights[0].color, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(0.5f, s.lights[0].intensity);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_HEMISPHERIC, s.lights[1].type);
+    ASSERT_VEC3(0.0f, 1.0f, 0.0f, s.lights[1].direction, 0.0f);
+    ASSERT_VEC3(0.1f, 0.2f, 0.3f, s.lights[1].ground_color, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.lights[1].intensity);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, s.lights[2].type);
+    ASSERT_VEC3(5.0f, 6.0f, 7.0f, s.lights[2].position, 0.0f);
+    ASSERT_VEC3(0.1f, 0.2f, 0.3f, s.ambient, 0.0f);
+    TEST_ASSERT_EQUAL_UINT8(51, s.clear_color.r);
+    TEST_ASSERT_EQUAL_UINT8(102, s.clear_color.g);
+    TEST_ASSERT_EQUAL_UINT8(153, s.clear_color.b);
+    TEST_ASSERT_EQUAL(0, s.texture_count);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+void loader_should_give_transform_nodes_a_mesh_to_be_parents(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"m\",\"parentId\":\"t\","
+                    "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]}],"
+                    "\"transformNodes\":[{\"id\":\"t\",\"position\":[10,0,0],"
+                    "\"parentId\":\"e\"},{\"id\":\"e\",\"scaling\":[1,3,1]}]}";
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "t", NULL, NULL, &s,
+                                                              msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(3, s.mesh_count);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[1], s.meshes[0].parent);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[2], s.meshes[1].parent);
+    TEST_ASSERT_EQUAL_UINT32(0, s.meshes[1].vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(0, s.meshes[1].index_count);
+    ASSERT_VEC3(10.0f, 0.0f, 0.0f, s.meshes[1].position, 0.0f);
+    /* world = scale(1,3,1) * translate(10,0,0) * mesh */
+    ASSERT_VEC3(10.0f, 0.0f, 0.0f, s.bounds_min, 1e-5f);
+    ASSERT_VEC3(11.0f, 3.0f, 0.0f, s.bounds_max, 1e-5f);
+    mote_scene_free(&s);
+}
+
+void loader_should_use_the_first_camera_without_an_active_one(void)
+{
+    const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
+                    "{\"id\":\"b\",\"position\":[9,9,9]}]}";
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "c", NULL, NULL, &s,
+                                                              msg, sizeof msg), msg);
+    TEST_ASSERT_TRUE(s.has_camera);
+    ASSERT_VEC3(1.0f, 2.0f, 3.0f, s.camera.position, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(0.8f, s.camera.fov); /* absent: the default */
+    TEST_ASSERT_EQUAL(0, s.mesh_count);
+    mote_scene_free(&s);
+}
+
+void frame_should_look_at_the_box_from_the_front_top_right_without_a_camera(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"m\",\"positions\":[-1,-1,-1, 1,1,1, 1,-1,1],"
+                    "\"indices\":[0,1,2]}]}";
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "f", NULL, NULL, &s,
+                                                              msg, sizeof msg), msg);
+    TEST_ASSERT_FALSE(s.has_camera);
+    TEST_ASSERT_EQUAL(0, s.light_count);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 4.0f / 3.0f, &f);
+    ASSERT_VEC3(0.0f, 0.0f, 0.0f, f.camera.target, 0.0f);
+    const float *p = f.camera.position;
+    float dist = sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    float radius = sqrtf(3.0f);
+    /* from the direction (1, 0.6, -1.4) */
+    float dir[3] = {p[0] / dist, p[1] / dist, p[2] / dist};
+    ASSERT_VEC3(1.0f / 1.8220867f, 0.6f / 1.8220867f, -1.4f / 1.8220867f, dir, 1e-6f);
+    /* the bounding sphere fits the vertical fov: sin(fov/2) >= r / dist */
+    TEST_ASSERT_EQUAL_FLOAT(0.8f, f.camera.fov);
+    TEST_ASSERT_TRUE(radius / dist <= sinf(0.4f));
+    TEST_ASSERT_TRUE(radius / dist > sinf(0.4f) * 0.7f);
+    TEST_ASSERT_TRUE(f.camera.znear > 0.0f && f.camera.znear < dist - radius);
+    TEST_ASSERT_TRUE(f.camera.zfar > dist + radius);
+    /* one point light above the camera */
+    TEST_ASSERT_EQUAL(1, f.light_count);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, f.lights[0].type);
+    ASSERT_VEC3(p[0], p[1] + radius, p[2], f.lights[0].position, 1e-5f);
+    mote_scene_free(&s);
+}
+
+/* ---- textures and images ---------------------------------------------- */
+
+void texture_should_round_trip_a_png_exactly(void)
+{
+    enum { TW = 7, TH = 5 };
+    uint8_t px[TW * TH * 4];
+    for (int i = 0; i < TW * TH * 4; i++)
+        px[i] = (uint8_t)(i * 37 + 11);
+    const char *path = tmp_path("round.png");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_rgba(path, px, TW, TH, 0, msg, sizeof msg), msg);
+    mote_texture t;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_texture_load(path, NULL, &t, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(TW, t.width);
+    TEST_ASSERT_EQUAL(TH, t.height);
+    TEST_ASSERT_EQUAL(MOTE_FORMAT_RGBA8888, t.format);
+    TEST_ASSERT_EQUAL(TW * 4, t.stride);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, t.pixels, TW * TH * 4);
+    mote_texture_free(&t);
+    TEST_ASSERT_NULL(t.pixels);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+void texture_should_refuse_dimensions_over_the_limit_before_decoding(void)
+{
+    uint8_t px[16 * 4 * 4];
+    memset(px, 200, sizeof px);
+    const char *path = tmp_path("wide.png");
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(path, px, 16, 4, 0, msg, sizeof msg));
+    mote_limits lim = mote_limits_default();
+    lim.max_texture_width = 8;
+    mote_texture t;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_texture_load(path, &lim, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "16 x 4 is larger than the limit of 8 x 16384"));
+    TEST_ASSERT_NULL(t.pixels);
+    lim = mote_limits_default();
+    lim.max_texture_bytes = 16 * 4 * 4 - 1;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_texture_load(path, &lim, &t, msg, sizeof msg));
+    lim = mote_limits_default();
+    lim.max_file_bytes = 10;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_texture_load(path, &lim, &t, msg, sizeof msg));
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load(tmp_path("none.png"), NULL, &t, msg,
+                                                     sizeof msg));
+    TEST_ASSERT_EQUAL(MOTE_ERR_PARSE, mote_texture_load_memory("not an image", 12, NULL, &t,
+                                                               msg, sizeof msg));
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+void write_ppm_should_write_exact_bytes_from_an_rgba_device(void)
+{
+    static uint8_t color[3 * 2 * 4];
+    static uint32_t depth[3 * 2];
+    mote_device dev;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = 3;
+    d.height = 2;
+    d.color = color;
+    d.depth = depth;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+    for (int i = 0; i < 3 * 2 * 4; i++)
+        color[i] = (uint8_t)(i * 10);
+    const char *path = tmp_path("out.ppm");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_ppm(path, &dev, msg, sizeof msg), msg);
+    unsigned char got[64];
+    long n = read_all(path, got, sizeof got);
+    const char header[] = "P6\n3 2\n255\n";
+    TEST_ASSERT_EQUAL(11 + 18, n);
+    TEST_ASSERT_EQUAL_MEMORY(header, got, 11);
+    for (int p = 0; p < 6; p++)
+        for (int c = 0; c < 3; c++)
+            TEST_ASSERT_EQUAL_UINT8(color[p * 4 + c], got[11 + p * 3 + c]);
+    /* by extension, and the same bytes */
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_image(tmp_path("out2.ppm"), &dev, msg, sizeof msg));
+    unsigned char got2[64];
+    TEST_ASSERT_EQUAL(n, read_all(tmp_path("out2.ppm"), got2, sizeof got2));
+    TEST_ASSERT_EQUAL_MEMORY(got, got2, (size_t)n);
+}
+
+void write_png_should_convert_an_rgb565_device_like_read_pixel(void)
+{
+    static uint16_t color[4 * 3];
+    static uint32_t depth[4 * 3];
+    mote_device dev;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = 4;
+    d.height = 3;
+    d.color_format = MOTE_FORMAT_RGB565;
+    d.color = color;
+    d.depth = depth;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+    for (int i = 0; i < 12; i++)
+        color[i] = (uint16_t)(i * 5003 + 17);
+    const char *path = tmp_path("565.png");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_image(path, &dev, msg, sizeof msg), msg);
+    mote_texture t;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_texture_load(path, NULL, &t, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(4, t.width);
+    TEST_ASSERT_EQUAL(3, t.height);
+    const uint8_t *px = t.pixels;
+    for (int y = 0; y < 3; y++)
+        for (int x = 0; x < 4; x++) {
+            mote_rgba want = mote_read_pixel(&dev, x, y);
+            const uint8_t *p = px + y * t.stride + x * 4;
+            TEST_ASSERT_EQUAL_UINT8(want.r, p[0]);
+            TEST_ASSERT_EQUAL_UINT8(want.g, p[1]);
+            TEST_ASSERT_EQUAL_UINT8(want.b, p[2]);
+            TEST_ASSERT_EQUAL_UINT8(255, p[3]);
+        }
+    mote_texture_free(&t);
+}
+
+static void ignore_flush(void *user, int y0, int rows, const void *c, int stride)
+{
+    (void)user, (void)y0, (void)rows, (void)c, (void)stride;
+}
+
+void write_image_should_refuse_unknown_extensions_and_band_devices(void)
+{
+    uint8_t px[4] = {1, 2, 3, 4};
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_write_rgba(tmp_path("x.jpg"), px, 1, 1, 0, msg,
+                                                            sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "unknown image type"));
+    static uint8_t color[8 * 2 * 4];
+    static uint32_t depth[8 * 2];
+    mote_device dev;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = 8;
+    d.height = 8;
+    d.band_height = 2;
+    d.flush = ignore_flush;
+    d.color = color;
+    d.depth = depth;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_write_png(tmp_path("band.png"), &dev, msg,
+                                                           sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "band-mode"));
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_write_image(tmp_path("x.bmp"), &dev, msg,
+                                                             sizeof msg));
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_rgba("/nonexistent-dir/x.ppm", px, 1, 1, 0, msg,
+                                                   sizeof msg));
+}
+
+void loader_should_load_a_texture_once_for_two_materials(void)
+{
+    uint8_t px[2 * 2 * 4] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 255};
+    char sub[300];
+    snprintf(sub, sizeof sub, "%s/tex", tmpdir);
+    mkdir(sub, 0700);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(tmp_path("tex/a.png"), px, 2, 2, 0, msg, sizeof msg));
+    const char *j = "{\"materials\":["
+                    "{\"id\":\"m1\",\"diffuseTexture\":{\"name\":\"tex/a.png\",\"wrapU\":0,"
+                    "\"wrapV\":2,\"uScale\":2,\"vScale\":3,\"uOffset\":0.25,\"vOffset\":0.5}},"
+                    "{\"id\":\"m2\",\"albedoTexture\":{\"name\":\"tex\\\\a.png\",\"wrapU\":false}}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m1\",\"positions\":[0,0,0],\"indices\":[]},"
+                    "{\"id\":\"b\",\"materialId\":\"m2\"}]}";
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "t", tmpdir, NULL,
+                                                              &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    TEST_ASSERT_EQUAL(2, s.textures[0].width);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[0].material.texture);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[1].material.texture);
+    TEST_ASSERT_EQUAL(MOTE_WRAP_CLAMP, s.meshes[0].material.wrap_u);
+    TEST_ASSERT_EQUAL(MOTE_WRAP_MIRROR, s.meshes[0].material.wrap_v);
+    TEST_ASSERT_EQUAL_FLOAT(2.0f, s.meshes[0].material.u_scale);
+    TEST_ASSERT_EQUAL_FLOAT(3.0f, s.meshes[0].material.v_scale);
+    TEST_ASSERT_EQUAL_FLOAT(0.25f, s.meshes[0].material.u_offset);
+    TEST_ASSERT_EQUAL_FLOAT(0.5f, s.meshes[0].material.v_offset);
+    TEST_ASSERT_EQUAL(MOTE_WRAP_CLAMP, s.meshes[1].material.wrap_u);
+    TEST_ASSERT_EQUAL(MOTE_WRAP_REPEAT, s.meshes[1].material.wrap_v);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, s.textures[0].pixels, sizeof px);
+    /* a mesh without vertex data is a 0-vertex mesh */
+    TEST_ASSERT_EQUAL_UINT32(0, s.meshes[1].vertex_count);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+int main(void)
+{
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
+    if (!mkdtemp(tmpdir)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    UNITY_BEGIN();
+    RUN_TEST(loader_should_read_the_tutorial_monkey);
+    RUN_TEST(loader_should_keep_the_monkeys_first_vertex_exactly);
+    RUN_TEST(loader_should_read_the_current_layout_with_exact_fields);
+    RUN_TEST(loader_should_give_transform_nodes_a_mesh_to_be_parents);
+    RUN_TEST(loader_should_use_the_first_camera_without_an_active_one);
+    RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
+    RUN_TEST(texture_should_round_trip_a_png_exactly);
+    RUN_TEST(texture_should_refuse_dimensions_over_the_limit_before_decoding);
+    RUN_TEST(write_ppm_should_write_exact_bytes_from_an_rgba_device);
+    RUN_TEST(write_png_should_convert_an_rgb565_device_like_read_pixel);
+    RUN_TEST(write_image_should_refuse_unknown_extensions_and_band_devices);
+    RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
+    if (system(cmd) != 0)
+        fprintf(stderr, "could not remove %s\n", tmpdir);
+    return UNITY_END();
+}
