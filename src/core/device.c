@@ -137,33 +137,40 @@ void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *c
     tg->counts = counts;
 }
 
-void mote__clear_rows(const mote_device *dev, const mote__target *tg, int y0, int y1)
+void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect r)
 {
     const mote_device_desc *d = &dev->desc;
-    int w = d->width;
+    int w = r.x1 - r.x0;
+    if (w <= 0 || r.y1 <= r.y0)
+        return;
     if (!dev->frame.keep_color) {
-        uint8_t *row0 = tg->color + (size_t)(y0 - tg->y0) * (size_t)tg->stride;
-        for (int x = 0; x < w; x++)
+        /* one row built pixel by pixel, then copied */
+        int bpp = mote_format_bytes(d->color_format);
+        uint8_t *row0 = tg->color + (size_t)(r.y0 - tg->y0) * (size_t)tg->stride;
+        for (int x = r.x0; x < r.x1; x++)
             mote__write_rgb(row0, x, d->color_format, d->clear_color.r, d->clear_color.g, d->clear_color.b);
         if (d->color_format == MOTE_FORMAT_RGBA8888)
-            for (int x = 0; x < w; x++)
+            for (int x = r.x0; x < r.x1; x++)
                 row0[4 * x + 3] = d->clear_color.a;
-        size_t bytes = (size_t)w * (size_t)mote_format_bytes(d->color_format);
-        for (int y = y0 + 1; y < y1; y++)
-            memcpy(tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride, row0, bytes);
+        row0 += (size_t)r.x0 * (size_t)bpp;
+        for (int y = r.y0 + 1; y < r.y1; y++)
+            memcpy(tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride + (size_t)r.x0 * (size_t)bpp, row0,
+                   (size_t)w * (size_t)bpp);
     }
     if (!dev->frame.keep_depth && d->depth_format != MOTE_DEPTH_FORMAT_NONE) {
         float fv = d->clear_depth * (float)MOTE__DEPTH_MAX + 0.5f;
         uint32_t v = fv >= (float)MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : (uint32_t)fv;
-        size_t n = (size_t)w * (size_t)(y1 - y0), off = (size_t)(y0 - tg->y0) * (size_t)w;
-        if (d->depth_format == MOTE_DEPTH_FORMAT_16) {
-            uint16_t *p = (uint16_t *)d->depth + off;
-            for (size_t i = 0; i < n; i++)
-                p[i] = (uint16_t)(v >> 8);
-        } else {
-            uint32_t *p = (uint32_t *)d->depth + off;
-            for (size_t i = 0; i < n; i++)
-                p[i] = v;
+        for (int y = r.y0; y < r.y1; y++) {
+            size_t off = (size_t)(y - tg->y0) * (size_t)d->width + (size_t)r.x0;
+            if (d->depth_format == MOTE_DEPTH_FORMAT_16) {
+                uint16_t *p = (uint16_t *)d->depth + off;
+                for (int i = 0; i < w; i++)
+                    p[i] = (uint16_t)(v >> 8);
+            } else {
+                uint32_t *p = (uint32_t *)d->depth + off;
+                for (int i = 0; i < w; i++)
+                    p[i] = v;
+            }
         }
     }
 }
@@ -198,14 +205,17 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     memset(&dev->stats, 0, sizeof dev->stats);
     dev->draw_count = 0;
     dev->in_frame = true;
-    if (!mote__band_mode(dev)) {
+    if (mote__binned(dev)) {
+        /* cleared tile by tile, in parallel and while the tile is in cache */
+        mote__bin_reset(dev);
+        dev->bin.clear_pending = true;
+    } else if (!mote__band_mode(dev)) {
         mote__target tg;
         mote__counts count = {0, 0};
         mote__full_target(dev, &tg, &count);
-        mote__clear_rows(dev, &tg, 0, dev->desc.height);
+        mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
+        mote__clear_rect(dev, &tg, all);
     }
-    if (mote__binned(dev))
-        mote__bin_reset(dev);
     return MOTE_OK;
 }
 
@@ -268,8 +278,8 @@ mote_result mote_end(mote_device *dev)
         mote__counts count = {0, 0};
         mote__full_target(dev, &tg, &count);
         tg.y0 = y0;
-        mote__clear_rows(dev, &tg, y0, y1);
         mote__rect band = {0, y0, d->width, y1};
+        mote__clear_rect(dev, &tg, band);
         for (int i = 0; i < dev->draw_count; i++) {
             mote_result r = mote__process_draw(dev, dev->draws[i].mesh, &dev->draws[i].desc,
                                                MOTE__SINK_RASTER, &tg, band);

@@ -63,8 +63,7 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
         } else {
             continue;
         }
-        float len = mote__sqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
-        float ndl = len > 0.0f ? (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) / len : 0.0f;
+        float ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
@@ -83,12 +82,10 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
 
 static void mote__normalize(float v[3])
 {
-    float len = mote__sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (len > 0.0f) {
-        v[0] /= len;
-        v[1] /= len;
-        v[2] /= len;
-    }
+    float k = mote__rsqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    v[0] *= k;
+    v[1] *= k;
+    v[2] *= k;
 }
 
 /* ---- vertices ------------------------------------------------------------ */

@@ -35,6 +35,7 @@ void mote__mat4_point(const float m[16], const float p[3], float out[4]);
  * normals), row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
 void mote__normal_matrix(const float m[16], float out[9]);
 float mote__sqrtf(float x);
+float mote__rsqrtf(float x);   /* 0 for 0, negative, NaN, Inf */
 bool mote__finite(float x);
 
 /* A vertex after the vertex stage: clip position and the attributes that
@@ -144,6 +145,6 @@ void mote__bin_top_release(mote_device *dev, size_t bytes);
 /* device.c */
 void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *counts);
 void mote__add_counts(mote_device *dev, const mote__counts *counts);
-void mote__clear_rows(const mote_device *dev, const mote__target *tg, int y0, int y1);
+void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect r);
 
 #endif

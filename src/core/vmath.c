@@ -15,10 +15,26 @@ bool mote__finite(float x)
     return (x - x) == 0.0f;       /* false for NaN and +-Inf */
 }
 
+float mote__rsqrtf(float x)
+{
+    /* 1/sqrt(x): the classic exponent-halving guess and three Newton steps
+     * (no division); about 1 ulp, and identical on every target. */
+    if (!(x > 0.0f) || !mote__finite(x))
+        return 0.0f;
+    union { float f; uint32_t u; } g;
+    g.f = x;
+    g.u = 0x5f375a86u - (g.u >> 1);
+    float y = g.f, h = 0.5f * x;
+    for (int i = 0; i < 3; i++)
+        y = y * (1.5f - h * y * y);
+    return y;
+}
+
 float mote__sqrtf(float x)
 {
-    /* Newton on an exponent-halved guess; correctly rounded enough for
-     * normalisation and identical on every target. */
+    /* Newton with division, for the per-frame and per-mesh uses (camera
+     * axes, bounds), where exact results for exact squares matter: a unit
+     * view direction stays exactly unit. Per-vertex code uses rsqrt. */
     if (!(x > 0.0f) || !mote__finite(x))
         return x > 0.0f ? x : 0.0f;
     union { float f; uint32_t u; } g;
