@@ -97,6 +97,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     y1 = MOTE__MIN(y1, height - 1);
     if (x0 > x1 || y0 > y1)
         return false;
+    memset(t, 0, sizeof *t);      /* planes a draw does not use stay zero */
     t->rs = rs;
     for (int i = 0; i < 3; i++) {
         t->X[i] = X[i];
@@ -133,9 +134,22 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
 
     bool needs_weights = rs->gouraud || rs->tex != MOTE__TEX_NONE;
     if (needs_weights) {
-        /* qi = 2^qbits * wmin / wi, or 1 for affine interpolation */
-        int qbits = 61 - 2 - mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
-        qbits = MOTE__MIN(qbits, 24);
+        /* Precision: each qi ~ 1/wi needs many bits, the far vertex's most
+         * (its qi is smallest). |E| qi must stay below 2^61, so big
+         * triangles drop up to F low bits of E first: the steps are
+         * multiples of 2^F and stay exact, only the origin value rounds.
+         * E then keeps >= 33 bits and qi gets up to 28. */
+        int eb = mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
+        int k = MOTE__MIN(MOTE__MAX(eb - 33, 0), F);
+        int64_t pe[3], pedx[3], pedy[3];
+        for (int i = 0; i < 3; i++) {
+            pe[i] = mote__floor_div64(e[i], (int64_t)1 << k);
+            pedx[i] = edx[i] / ((int64_t)1 << k);
+            pedy[i] = edy[i] / ((int64_t)1 << k);
+        }
+        int64_t a2k = (a2 >> k) + 1;
+        int qbits = 61 - 2 - mote__bitlen((uint64_t)MOTE__MAX((emax >> k) + 1, a2k));
+        qbits = MOTE__MIN(qbits, 28);
         qbits = MOTE__MAX(qbits, 0);
         int64_t q[3];
         if (rs->persp == MOTE__PERSP_AFFINE) {
@@ -149,16 +163,16 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                     q[i] = 1;
             }
         }
-        t->p1 = e[1] * q[1];
-        t->p1dx = edx[1] * q[1];
-        t->p1dy = edy[1] * q[1];
-        t->p2 = e[2] * q[2];
-        t->p2dx = edx[2] * q[2];
-        t->p2dy = edy[2] * q[2];
-        t->q = e[0] * q[0] + t->p1 + t->p2;
-        t->qdx = edx[0] * q[0] + t->p1dx + t->p2dx;
-        t->qdy = edy[0] * q[0] + t->p1dy + t->p2dy;
-        int s = mote__bitlen((uint64_t)a2) + qbits - 30;
+        t->p1 = pe[1] * q[1];
+        t->p1dx = pedx[1] * q[1];
+        t->p1dy = pedy[1] * q[1];
+        t->p2 = pe[2] * q[2];
+        t->p2dx = pedx[2] * q[2];
+        t->p2dy = pedy[2] * q[2];
+        t->q = pe[0] * q[0] + t->p1 + t->p2;
+        t->qdx = pedx[0] * q[0] + t->p1dx + t->p2dx;
+        t->qdy = pedy[0] * q[0] + t->p1dy + t->p2dy;
+        int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
         for (int c = 0; c < 3; c++) {

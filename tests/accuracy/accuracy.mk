@@ -1,0 +1,14 @@
+# `make accuracy`: every mode's error against the reference renderer
+# (tests/ref), on the built-in test scenes, the project's assets/*.babylon
+# and ../shared/assets/monkey.babylon when present. Prints a table.
+
+ACC_BIN := $(BUILD)/accuracy/accuracy
+ACC_SRC := tests/accuracy/accuracy.c tests/ref/ref.c tests/support/testutil.c tests/support/scenes.c
+
+.PHONY: accuracy
+accuracy: $(ACC_BIN)
+	$(ACC_BIN)
+
+$(ACC_BIN): $(ACC_SRC) $(wildcard tests/ref/*.h tests/support/*.h include/mote/*.h) $(LIB) | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -Itests -DMOTE_SOURCE_DIR=\"$(CURDIR)\" $(ACC_SRC) $(LIB) $(LDFLAGS) $(LDLIBS) -o $@

@@ -1,0 +1,185 @@
+/*
+ * test_accuracy.c - attributes against the double-precision reference
+ * (tests/ref): perspective-correct colour and UVs, nearest and bilinear,
+ * repeat / clamp / mirror, the depth test on intersecting triangles, and
+ * the error of each approximate mode (reported, not bounded).
+ *
+ * Thresholds (scenes from tests/support/scenes.c, 160x120, deterministic):
+ *   - perspective-correct textured (nearest and bilinear, every wrap mode)
+ *     and Gouraud scenes: >= 99.9% of the pixels both draw within 1 LSB of
+ *     the reference; the largest error is printed;
+ *   - coverage: mismatches only next to a reference edge (mote snaps from
+ *     float, the reference from double), at most 0.2% of the drawn pixels;
+ *   - depth: pixels off by more than 1 LSB only along the intersection
+ *     line (at most 2 per image column).
+ */
+#include "ref/ref.h"
+#include "support/scenes.h"
+#include "support/testutil.h"
+#include "unity.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define W 160
+#define H 120
+
+static char msg[256];
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static tu_vs_result run(const char *what, const tu_scene *s, const mote_draw_desc *d, int bits,
+                        mote_depth_format depth)
+{
+    tu_vs_opts o = {W, H, bits, depth};
+    tu_vs_result r;
+    TEST_ASSERT_TRUE_MESSAGE(tu_vs_ref(&o, &s->frame, s->meshes, s->mesh_count, d, true, &r, NULL, NULL),
+                             "render");
+    printf("%-44s drawn %5ld  cov.mismatch %3ld (%ld off-edge)  max %3d  mean %.4f  PSNR %6.2f  "
+           ">1 LSB %4ld  within 1 LSB %.3f%%\n", what, r.m.covered_b, r.m.coverage_mismatch,
+           r.unexplained, r.m.max_err, r.m.mean_err, r.m.psnr, r.m.off_by_more_than_1,
+           100.0 * r.m.within_1_fraction);
+    return r;
+}
+
+static void assert_close(const char *what, const tu_vs_result *r)
+{
+    snprintf(msg, sizeof msg, "%s: %ld coverage mismatches away from edges", what, r->unexplained);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, r->unexplained, msg);
+    snprintf(msg, sizeof msg, "%s: %ld coverage mismatches of %ld", what, r->m.coverage_mismatch, r->m.covered_b);
+    TEST_ASSERT_TRUE_MESSAGE(r->m.coverage_mismatch * 500 <= r->m.covered_b, msg);
+    snprintf(msg, sizeof msg, "%s: %.4f%% within 1 LSB, max error %d", what, 100.0 * r->m.within_1_fraction,
+             r->m.max_err);
+    TEST_ASSERT_TRUE_MESSAGE(r->m.within_1_fraction >= 0.999, msg);
+    TEST_ASSERT_TRUE(r->m.compared > W * H / 4);
+}
+
+static mote_draw_desc draw_desc(mote_mode mode, mote_filter filter, mote_perspective p)
+{
+    mote_draw_desc d;
+    memset(&d, 0, sizeof d);
+    d.mode = mode;
+    d.filter = filter;
+    d.perspective = p;
+    d.cull = MOTE_CULL_NONE;
+    return d;
+}
+
+void perspective_correct_textures_should_be_within_1_lsb_of_the_reference(void)
+{
+    static const mote_wrap wraps[] = {MOTE_WRAP_REPEAT, MOTE_WRAP_CLAMP, MOTE_WRAP_MIRROR};
+    static const char *names[] = {"repeat", "clamp", "mirror"};
+    for (int w = 0; w < 3; w++)
+        for (int f = 0; f < 2; f++) {
+            tu_scene s;
+            tu_scene_build(TU_SCENE_TEXTURED, wraps[w], &s);
+            mote_draw_desc d = draw_desc(MOTE_MODE_TEXTURED, f ? MOTE_FILTER_BILINEAR : MOTE_FILTER_NEAREST,
+                                         MOTE_PERSPECTIVE_CORRECT);
+            char what[64];
+            snprintf(what, sizeof what, "textured %s %s", f ? "bilinear" : "nearest", names[w]);
+            tu_vs_result r = run(what, &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+            assert_close(what, &r);
+        }
+}
+
+void unlit_textures_should_be_within_1_lsb_of_the_reference(void)
+{
+    tu_scene s;
+    tu_scene_build(TU_SCENE_TEXTURED, MOTE_WRAP_REPEAT, &s);
+    mote_draw_desc d = draw_desc(MOTE_MODE_TEXTURED, MOTE_FILTER_NEAREST, MOTE_PERSPECTIVE_CORRECT);
+    d.unlit = true;
+    tu_vs_result r = run("textured nearest unlit", &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+    assert_close("textured nearest unlit", &r);
+}
+
+void gouraud_shading_should_be_within_1_lsb_of_the_reference(void)
+{
+    tu_scene s;
+    tu_scene_build(TU_SCENE_GOURAUD, MOTE_WRAP_REPEAT, &s);
+    mote_draw_desc d = draw_desc(MOTE_MODE_GOURAUD, MOTE_FILTER_NEAREST, MOTE_PERSPECTIVE_CORRECT);
+    tu_vs_result r = run("Gouraud", &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+    assert_close("Gouraud", &r);
+    d.mode = MOTE_MODE_FLAT;
+    r = run("flat", &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+    assert_close("flat", &r);
+    r = run("Gouraud, 4 sub-pixel bits", &s, &d, 4, MOTE_DEPTH_FORMAT_32);
+    assert_close("Gouraud, 4 sub-pixel bits", &r);
+}
+
+void approximate_perspective_modes_should_report_their_error(void)
+{
+    tu_scene s;
+    tu_scene_build(TU_SCENE_TEXTURED, MOTE_WRAP_REPEAT, &s);
+    mote_draw_desc d = draw_desc(MOTE_MODE_TEXTURED, MOTE_FILTER_BILINEAR, MOTE_PERSPECTIVE_CORRECT);
+    tu_vs_result correct = run("bilinear, perspective-correct", &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+    d.perspective = MOTE_PERSPECTIVE_SUBSPAN;
+    d.subspan_log2 = 3;
+    tu_vs_result sub8 = run("bilinear, correct every 8 px", &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+    d.subspan_log2 = 5;
+    tu_vs_result sub32 = run("bilinear, correct every 32 px", &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+    d.perspective = MOTE_PERSPECTIVE_AFFINE;
+    tu_vs_result affine = run("bilinear, affine", &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+    /* the modes must do what they say: coarser is worse, and none changes coverage */
+    TEST_ASSERT_TRUE(affine.m.mean_err > sub32.m.mean_err);
+    TEST_ASSERT_TRUE(sub32.m.mean_err >= sub8.m.mean_err);
+    TEST_ASSERT_TRUE(sub8.m.mean_err >= correct.m.mean_err);
+    TEST_ASSERT_EQUAL_INT(correct.m.coverage_mismatch, affine.m.coverage_mismatch);
+    TEST_ASSERT_EQUAL_INT(correct.m.coverage_mismatch, sub8.m.coverage_mismatch);
+}
+
+void the_depth_test_should_resolve_intersecting_triangles_like_the_reference(void)
+{
+    tu_scene s;
+    tu_scene_build(TU_SCENE_DEPTH, MOTE_WRAP_REPEAT, &s);
+    mote_draw_desc d = draw_desc(MOTE_MODE_FLAT, MOTE_FILTER_NEAREST, MOTE_PERSPECTIVE_CORRECT);
+    d.unlit = true;
+    static const mote_depth_format formats[] = {MOTE_DEPTH_FORMAT_32, MOTE_DEPTH_FORMAT_16};
+    for (int k = 0; k < 2; k++) {
+        tu_vs_result r = run(k ? "intersecting quads, 16-bit depth" : "intersecting quads, 32-bit depth", &s, &d,
+                             8, formats[k]);
+        TEST_ASSERT_EQUAL_INT(0, r.unexplained);
+        /* both colours visible, and wrong ones only along the intersection */
+        snprintf(msg, sizeof msg, "%ld pixels of the wrong quad", r.m.off_by_more_than_1);
+        TEST_ASSERT_TRUE_MESSAGE(r.m.off_by_more_than_1 <= 2 * W, msg);
+        TEST_ASSERT_TRUE(r.m.compared > W * H / 2);
+    }
+    /* and the image does not depend on the order of the draws */
+    tu_scene rev = s;
+    rev.meshes[0] = s.meshes[1];
+    rev.meshes[1] = s.meshes[0];
+    tu_vs_result a = run("intersecting quads, reversed order", &rev, &d, 8, MOTE_DEPTH_FORMAT_32);
+    TEST_ASSERT_TRUE(a.m.off_by_more_than_1 <= 2 * W);
+}
+
+void a_texture_with_stride_0_should_read_rows_width_times_pixel_size_apart(void)
+{
+    /* mote.h: "stride 0 means width * bytes per pixel": the same image as
+     * with the stride spelled out */
+    static uint8_t explicit_stride[W * H * 4], zero_stride[W * H * 4];
+    tu_scene s;
+    tu_scene_build(TU_SCENE_TEXTURED, MOTE_WRAP_REPEAT, &s);
+    mote_texture t = *tu_scene_texture();
+    for (int i = 0; i < s.mesh_count; i++)
+        s.meshes[i].material.texture = &t;
+    mote_draw_desc d = draw_desc(MOTE_MODE_TEXTURED, MOTE_FILTER_NEAREST, MOTE_PERSPECTIVE_CORRECT);
+    tu_vs_opts o = {W, H, 8, MOTE_DEPTH_FORMAT_32};
+    tu_vs_result r;
+    TEST_ASSERT_TRUE(tu_vs_ref(&o, &s.frame, s.meshes, s.mesh_count, &d, true, &r, explicit_stride, NULL));
+    t.stride = 0;
+    TEST_ASSERT_TRUE(tu_vs_ref(&o, &s.frame, s.meshes, s.mesh_count, &d, true, &r, zero_stride, NULL));
+    TEST_ASSERT_EQUAL_MEMORY(explicit_stride, zero_stride, sizeof zero_stride);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(perspective_correct_textures_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(unlit_textures_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(gouraud_shading_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(approximate_perspective_modes_should_report_their_error);
+    RUN_TEST(the_depth_test_should_resolve_intersecting_triangles_like_the_reference);
+    RUN_TEST(a_texture_with_stride_0_should_read_rows_width_times_pixel_size_apart);
+    return UNITY_END();
+}
