@@ -44,6 +44,8 @@ BIN      := $(BUILD)/bin
 
 .PHONY: all lib deps demo test clean install help freestanding
 .DEFAULT_GOAL := all
+# keep intermediate objects (test and example objects are chained rules)
+.SECONDARY:
 
 all: lib examples
 
