@@ -173,43 +173,35 @@ static void mote__euler_quat(const float r[3], float q[4])
     q[3] = cy * cp * cr + sy * sp * sr;
 }
 
-void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
+/* translate(position) * rotate * scale(scaling) of one mesh */
+static void mote__local_matrix(const mote_mesh *mesh, float m[16])
 {
-    float local[16], q[4];
+    float q[4];
     if (mesh->use_quaternion)
         memcpy(q, mesh->rotation_quaternion, sizeof q);
     else
         mote__euler_quat(mesh->rotation, q);
-    mote__quat_matrix(q, local);
-    float s[3];
-    bool unset = mesh->scaling[0] == 0.0f && mesh->scaling[1] == 0.0f && mesh->scaling[2] == 0.0f;
-    for (int i = 0; i < 3; i++)
-        s[i] = unset ? 1.0f : mesh->scaling[i];
+    mote__quat_matrix(q, m);
+    const float *sc = mesh->scaling;
+    bool unset = sc[0] == 0.0f && sc[1] == 0.0f && sc[2] == 0.0f;
     for (int c = 0; c < 3; c++)
         for (int r = 0; r < 3; r++)
-            local[c * 4 + r] *= s[c];
-    local[12] = mesh->position[0];
-    local[13] = mesh->position[1];
-    local[14] = mesh->position[2];
+            m[c * 4 + r] *= unset ? 1.0f : sc[c];
+    m[12] = mesh->position[0];
+    m[13] = mesh->position[1];
+    m[14] = mesh->position[2];
+}
+
+void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
+{
+    mote__local_matrix(mesh, world);
     /* Parents are applied iteratively (bounded) so a cyclic chain cannot recurse forever. */
     const mote_mesh *p = mesh->parent;
     for (int depth = 0; p && depth < 64; depth++, p = p->parent) {
-        float pm[16], q2[4];
-        if (p->use_quaternion)
-            memcpy(q2, p->rotation_quaternion, sizeof q2);
-        else
-            mote__euler_quat(p->rotation, q2);
-        mote__quat_matrix(q2, pm);
-        bool punset = p->scaling[0] == 0.0f && p->scaling[1] == 0.0f && p->scaling[2] == 0.0f;
-        for (int c = 0; c < 3; c++)
-            for (int r = 0; r < 3; r++)
-                pm[c * 4 + r] *= punset ? 1.0f : p->scaling[c];
-        pm[12] = p->position[0];
-        pm[13] = p->position[1];
-        pm[14] = p->position[2];
-        mote__mat4_mul(pm, local, local);
+        float pm[16];
+        mote__local_matrix(p, pm);
+        mote__mat4_mul(pm, world, world);
     }
-    memcpy(world, local, sizeof local);
 }
 
 static void mote__normalize3(float v[3])
