@@ -101,6 +101,16 @@ MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64
                 + e[k] * fu * fv + 32768) >> 16;
 }
 
+/* A plane's value at (dx, dy) from its origin. The value at a pixel of the
+ * triangle fits in 64 bits, but dx * stepx alone may not (the origin can lie
+ * far outside the viewport, and the two products then nearly cancel), so
+ * the sum is formed in modular unsigned arithmetic, which is exact whenever
+ * the result fits. */
+MOTE__INLINE int64_t mote__plane_at(int64_t base, int64_t stepx, int64_t stepy, int64_t dx, int64_t dy)
+{
+    return (int64_t)((uint64_t)base + (uint64_t)stepx * (uint64_t)dx + (uint64_t)stepy * (uint64_t)dy);
+}
+
 /* 2^62 / (q >> shift): the one division per pixel. */
 MOTE__INLINE uint64_t mote__recip(int64_t q, int shift)
 {
@@ -168,12 +178,12 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
     uint8_t *crow = tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride;
     const int64_t dx0 = x0 - t->ox, dy0 = y - t->oy;
     const bool weights = gouraud || tex;
-    int64_t z = t->z + t->zdx * dx0 + t->zdy * dy0;
+    int64_t z = mote__plane_at(t->z, t->zdx, t->zdy, dx0, dy0);
     int64_t p1 = 0, p2 = 0, q = 0;
     if (weights) {
-        p1 = t->p1 + t->p1dx * dx0 + t->p1dy * dy0;
-        p2 = t->p2 + t->p2dx * dx0 + t->p2dy * dy0;
-        q = t->q + t->qdx * dx0 + t->qdy * dy0;
+        p1 = mote__plane_at(t->p1, t->p1dx, t->p1dy, dx0, dy0);
+        p2 = mote__plane_at(t->p2, t->p2dx, t->p2dy, dx0, dy0);
+        q = mote__plane_at(t->q, t->qdx, t->qdy, dx0, dy0);
     }
     uint16_t *d16 = dsel == MOTE__D_16 ? (uint16_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
     uint32_t *d32 = dsel == MOTE__D_32 ? (uint32_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
@@ -218,7 +228,8 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
                     int64_t e1, e2;
                     mote__weights(p1, p2, q, shift, &b1, &b2);
                     if (n > 0) {
-                        mote__weights(p1 + p1dx * n, p2 + p2dx * n, q + qdx * n, shift, &e1, &e2);
+                        mote__weights(mote__plane_at(p1, p1dx, 0, n, 0), mote__plane_at(p2, p2dx, 0, n, 0),
+                                      mote__plane_at(q, qdx, 0, n, 0), shift, &e1, &e2);
                         sd1 = ((e1 - b1) * 4096) / n;
                         sd2 = ((e2 - b2) * 4096) / n;
                     }
