@@ -27,7 +27,7 @@ ifeq ($(OPENMP),1)
 OMPFLAGS := -fopenmp
 endif
 ifeq ($(SAN),1)
-SANFLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+SANFLAGS := -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=all
 BUILD    := build-san
 DEPS_OK  := $(BUILD)/.deps-ok
 endif

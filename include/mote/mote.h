@@ -95,9 +95,13 @@
  *
  * LIMITS
  *   width, height in [1, MOTE_MAX_SIZE]; vertex and index counts in
- *   [0, 2^31); a triangle is clipped to the guard band so snapped
- *   coordinates stay within +-2^(MOTE_GUARD_BITS + subpixel_bits); all edge
- *   and plane arithmetic is 64-bit and cannot overflow inside those bounds.
+ *   [0, 2^31). Triangles are clipped (in float) to the guard band,
+ *   +-2^MOTE_GUARD_BITS pixels around the viewport centre; float rounding
+ *   may push a clipped vertex a little past it, so the hard bound, enforced
+ *   at snapping, is |x|, |y| < 2^(MOTE_GUARD_BITS + 1) pixels from the
+ *   origin: a vertex beyond it drops its triangle (counted invalid). All
+ *   edge and plane arithmetic is 64-bit and cannot overflow inside that
+ *   bound (the reasoning is at the top of src/core/setup.c).
  *
  * WHERE FLOAT IS USED
  *   The vertex stage (transform, lighting, clipping, perspective divide) and
@@ -374,7 +378,7 @@ typedef struct mote_device_desc {
     int width, height;
     mote_format color_format;
     void *color;                  /* band_height rows of stride bytes */
-    int color_stride;             /* 0 = width * bytes per pixel */
+    int color_stride;             /* bytes per row, a multiple of the pixel size; 0 = packed */
     mote_depth_format depth_format;
     void *depth;                  /* band_height * width depth values; may be NULL
                                      only with MOTE_DEPTH_FORMAT_NONE */

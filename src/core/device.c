@@ -83,7 +83,8 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
         return MOTE_ERR_INVALID_ARGUMENT;
     if (d.depth_format != MOTE_DEPTH_FORMAT_NONE && !d.depth)
         return MOTE_ERR_INVALID_ARGUMENT;
-    if (d.color_stride < d.width * mote_format_bytes(d.color_format))
+    if (d.color_stride < d.width * mote_format_bytes(d.color_format)
+        || d.color_stride % mote_format_bytes(d.color_format) != 0)   /* rows stay aligned */
         return MOTE_ERR_INVALID_ARGUMENT;
     if (d.subpixel_bits < 4 || d.subpixel_bits > 8 || d.band_height < 1)
         return MOTE_ERR_INVALID_ARGUMENT;

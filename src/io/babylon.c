@@ -1098,7 +1098,7 @@ static R mote__build_meshes(mote__ld *ld)
             m->index_count = nd->ni;
             uint32_t material_index = 0;
             if (nd->sub_count > 0) {
-                m->indices = nd->idx + nd->subs[s].index_start;
+                m->indices = nd->idx ? nd->idx + nd->subs[s].index_start : NULL;
                 m->index_count = nd->subs[s].index_count;
                 material_index = nd->subs[s].material_index;
             }

@@ -1,0 +1,31 @@
+/*
+ * fuzz_entry.h - the entry points shared by the libFuzzer targets
+ * (tests/fuzz/fuzz_*.c, clang) and the corpus replay in `make test`
+ * (tests/test_fuzz_regressions.c, any compiler). Plain C99, no libFuzzer.
+ *
+ * Each function consumes one arbitrary input and returns NULL when every
+ * invariant held, or a short description of the one that broke. Memory
+ * errors and undefined behaviour are left to the sanitizers (ASan, UBSan)
+ * the caller was built with; canary bytes around every buffer the renderer
+ * writes catch stray writes even without them.
+ */
+#ifndef MOTE_FUZZ_ENTRY_H
+#define MOTE_FUZZ_ENTRY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* The draw path: device, frame, meshes, textures and draw options decoded
+ * from the bytes; checks canaries, flush order and that full frame, bands,
+ * arena (large or tiny) and tile order all give the same bytes. */
+const char *mote_fuzz_draw(const uint8_t *data, size_t size);
+
+/* mote_texture_load_memory on the bytes; a decoded image is drawn. */
+const char *mote_fuzz_texture(const uint8_t *data, size_t size);
+
+/* mote_scene_load_memory on the bytes (without textures, then with a
+ * folder holding a texture); a loaded scene is drawn, and loaded again
+ * with an allocation failing part-way. */
+const char *mote_fuzz_scene(const uint8_t *data, size_t size);
+
+#endif
