@@ -89,6 +89,8 @@ help:
 	@echo "make cross      build the core for Cortex-M0+, Cortex-M4F and RV32IMAC"
 	@echo "make test-embedded  render on an emulated Cortex-M (qemu) and compare"
 	@echo "make fuzz       run each libFuzzer target (FUZZ_SECONDS=60)"
+	@echo "make valgrind   the examples and mote-render under valgrind memcheck"
+	@echo "make assets     regenerate assets/ with tools/gen_assets.c"
 	@echo "make install PREFIX=/usr/local   headers, libmote.a and mote.pc"
 	@echo "make clean      remove build outputs"
 	@echo "Options: OPENMP=0 (no OpenMP), SAN=1 (sanitizers), CC=clang"
