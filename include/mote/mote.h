@@ -105,11 +105,13 @@
  *
  * WHERE FLOAT IS USED
  *   The vertex stage (transform, lighting, clipping, perspective divide) and
- *   triangle setup (one reciprocal per triangle) use single-precision float.
- *   Everything per pixel (edge walking, interpolation, texturing, depth,
- *   pixel formats) is integer. On a core without an FPU (Cortex-M0+) the
- *   float work is done by the compiler's soft-float routines; it is per
- *   vertex and per triangle, never per pixel.
+ *   triangle setup (a few divisions per triangle) use single-precision
+ *   float; there is no double anywhere in the core. Everything per pixel
+ *   (edge walking, interpolation, texturing, depth, pixel formats) is
+ *   integer. On a core without an FPU (Cortex-M0+) the float work is done
+ *   by libgcc's soft-float routines, per vertex and per triangle, never per
+ *   pixel: they and 64-bit division add about 12.5 KB of flash there
+ *   (`make cross` prints it), against 3 KB on a Cortex-M4F.
  */
 #ifndef MOTE_H
 #define MOTE_H
