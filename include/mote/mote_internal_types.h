@@ -21,7 +21,6 @@ typedef struct mote__bin {
     void *tiles;                  /* mote__tile[tiles_x * tiles_y] */
     unsigned triangles;           /* binned in this batch */
     bool enabled;                 /* an arena large enough was given */
-    bool clear_pending;           /* tiles clear themselves at the next flush */
 } mote__bin;
 
 #endif

@@ -114,7 +114,7 @@ static void mote__raster_tile(void *arg, int index)
     mote_device *dev = (mote_device *)arg;
     mote__bin *b = &dev->bin;
     mote__tile *tile = &((mote__tile *)b->tiles)[index];
-    if (!tile->head && !b->clear_pending)
+    if (!tile->head)
         return;
     int ts = 1 << b->tile_shift;
     int tx = index % b->tiles_x, ty = index / b->tiles_x;
@@ -123,8 +123,6 @@ static void mote__raster_tile(void *arg, int index)
     mote__target tg;
     mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
-    if (b->clear_pending)
-        mote__clear_rect(dev, &tg, r);
     for (uint32_t off = tile->head; off;) {
         const mote__block *blk = (const mote__block *)(const void *)(b->base + off);
         for (uint32_t i = 0; i < blk->count; i++)
@@ -139,7 +137,7 @@ void mote__bin_flush(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
     int n = b->tiles_x * b->tiles_y;
-    if (b->triangles > 0 || b->clear_pending) {
+    if (b->triangles > 0) {
         if (dev->desc.parallel_for)
             dev->desc.parallel_for(dev->desc.parallel_user, n, mote__raster_tile, dev);
         else
@@ -158,5 +156,4 @@ void mote__bin_flush(mote_device *dev)
     size_t top = b->top;
     mote__bin_reset(dev);
     b->top = top;                 /* a draw in progress keeps its scratch */
-    b->clear_pending = false;
 }
