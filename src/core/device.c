@@ -178,6 +178,19 @@ void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect
 
 /* ---- the frame ----------------------------------------------------------- */
 
+#define MOTE__CLEAR_STRIPES 8
+
+static void mote__clear_stripe(void *arg, int index)
+{
+    const mote_device *dev = (const mote_device *)arg;
+    int h = dev->desc.height;
+    mote__target tg;
+    mote__counts count = {0, 0};
+    mote__full_target(dev, &tg, &count);
+    mote__rect r = {0, h * index / MOTE__CLEAR_STRIPES, dev->desc.width, h * (index + 1) / MOTE__CLEAR_STRIPES};
+    mote__clear_rect(dev, &tg, r);
+}
+
 static bool mote__band_mode(const mote_device *dev)
 {
     return dev->desc.band_height < dev->desc.height;
@@ -214,11 +227,12 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     if (mote__binned(dev))
         mote__bin_reset(dev);
     if (!mote__band_mode(dev)) {
-        mote__target tg;
-        mote__counts count = {0, 0};
-        mote__full_target(dev, &tg, &count);
-        mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
-        mote__clear_rect(dev, &tg, all);
+        /* with a parallel executor, in contiguous stripes of whole rows */
+        if (dev->desc.parallel_for)
+            dev->desc.parallel_for(dev->desc.parallel_user, MOTE__CLEAR_STRIPES, mote__clear_stripe, dev);
+        else
+            for (int i = 0; i < MOTE__CLEAR_STRIPES; i++)
+                mote__clear_stripe(dev, i);
     }
     return MOTE_OK;
 }
