@@ -371,7 +371,8 @@ typedef void (*mote_flush_fn)(void *user, int y0, int rows,
 /* Testing aid: called for every triangle that reaches the rasteriser, after
  * clipping, snapping and culling, in submission order, with its snapped
  * screen vertices (fixed point, subpixel_bits fraction), their depth z/w
- * and clip w, in the original winding. */
+ * clamped to [0, 1] as the rasteriser uses it, and clip w, in the original
+ * winding. */
 typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
                                       const int32_t y[3], const float z[3],
                                       const float w[3]);

@@ -288,7 +288,13 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
 {
     mote_device *dev = cx->dev;
     if (dev->desc.triangle_hook) {
-        float z[3] = {v[0]->z / v[0]->w, v[1]->z / v[1]->w, v[2]->z / v[2]->w};
+        /* depth as the rasteriser uses it: clipping's float rounding can
+         * leave z/w a hair outside [0, 1], and setup clamps it */
+        float z[3];
+        for (int i = 0; i < 3; i++) {
+            float d = v[i]->z / v[i]->w;
+            z[i] = d > 0.0f ? (d < 1.0f ? d : 1.0f) : 0.0f;
+        }
         float w[3] = {v[0]->w, v[1]->w, v[2]->w};
         dev->desc.triangle_hook(dev->desc.triangle_hook_user, X, Y, z, w);
     }
