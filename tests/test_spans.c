@@ -39,7 +39,7 @@ void every_specialised_span_should_match_the_generic_span(void)
     for (int fmt = 0; fmt < 2; fmt++)
     for (int dfmt = 0; dfmt < 3; dfmt++)
     for (int texk = 0; texk < 3; texk++)
-    for (int g = 0; g < 2; g++)
+    for (int sk = 0; sk < MOTE__SHADE_COUNT; sk++)
     for (int p = 0; p < 3; p++) {
         mote_format format = fmt ? MOTE_FORMAT_RGB565 : MOTE_FORMAT_RGBA8888;
         mote_depth_format depthf = dfmt == 0 ? MOTE_DEPTH_FORMAT_NONE : dfmt == 1 ? MOTE_DEPTH_FORMAT_16 : MOTE_DEPTH_FORMAT_32;
@@ -51,13 +51,17 @@ void every_specialised_span_should_match_the_generic_span(void)
         rs.tex_h = 8;
         rs.wrap_u = MOTE_WRAP_REPEAT;
         rs.wrap_v = MOTE_WRAP_MIRROR;
-        rs.gouraud = g != 0;
+        rs.gouraud = sk != MOTE__SHADE_FLAT;
         rs.persp = (mote__persp_kind)p;
         rs.subspan_log2 = 3;
         rs.depth_test = rs.depth_write = depthf != MOTE_DEPTH_FORMAT_NONE;
-        mote__span_fn special = mote__span_select(&rs, format, depthf);
+        mote__span_select(&rs, format, depthf);
+        mote__span_fn special = rs.span[sk];
         TEST_ASSERT_NOT_NULL(special);
         variants += special != mote__span_generic;
+        mote__raster_state gen = rs;
+        for (int k = 0; k < MOTE__SHADE_COUNT; k++)
+            gen.span[k] = mote__span_generic;
         memset(ca, 0, sizeof ca);
         memset(cb, 0, sizeof cb);
         memset(da, 0xff, sizeof da);
@@ -75,28 +79,30 @@ void every_specialised_span_should_match_the_generic_span(void)
                 v[k].w = frand(0.2f, 5.0f);
                 v[k].z = frand(0.0f, 1.0f) * v[k].w;
                 v[k].x = v[k].y = 0.0f;
+                /* flat: one shade for all; mono: grey vertices; RGB: any */
                 for (int c = 0; c < 3; c++)
-                    v[k].s[c] = frand(0.0f, 1.0f);
+                    v[k].s[c] = sk == MOTE__SHADE_FLAT && k > 0 ? v[0].s[c]
+                              : sk == MOTE__SHADE_MONO && c > 0 ? v[k].s[0] : frand(0.0f, 1.0f);
                 v[k].u = frand(-40.0f, 40.0f);
                 v[k].v = frand(-20.0f, 20.0f);
             }
             const mote__cvert *vp[3] = {&v[0], &v[1], &v[2]};
             mote__tri tri;
-            rs.span = special;
             if (!mote__setup(&tri, &rs, X, Y, vp, 8, W, H))
                 continue;
+            TEST_ASSERT_EQUAL_INT(sk, tri.shade);
             mote__rect all = {0, 0, W, H};
             mote__raster_tri(&tri, &ta, all, 8);
-            mote__raster_state gen = rs;
-            gen.span = mote__span_generic;
+            /* the oracle: the generic loop, interpolating all three channels */
             tri.rs = &gen;
+            tri.shade = MOTE__SHADE_RGB;
             mote__raster_tri(&tri, &tb, all, 8);
         }
         TEST_ASSERT_EQUAL_MEMORY(cb, ca, sizeof ca);
         TEST_ASSERT_EQUAL_MEMORY(db, da, sizeof da);
     }
     /* the table really is used for these combinations */
-    TEST_ASSERT_EQUAL_INT(2 * 3 * 3 * 2 * 3, variants);
+    TEST_ASSERT_EQUAL_INT(2 * 3 * 3 * MOTE__SHADE_COUNT * 3, variants);
 }
 
 /* ---- determinism ------------------------------------------------------------ */

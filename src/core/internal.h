@@ -50,6 +50,11 @@ typedef struct mote__cvert {
 
 typedef enum mote__tex_kind { MOTE__TEX_NONE, MOTE__TEX_NEAREST, MOTE__TEX_BILINEAR } mote__tex_kind;
 typedef enum mote__persp_kind { MOTE__PERSP_AFFINE, MOTE__PERSP_CORRECT, MOTE__PERSP_SUBSPAN } mote__persp_kind;
+/* How a triangle's shade varies, decided per triangle by setup: one value
+ * (flat draws, or all three vertices alike), one grey value interpolated
+ * (white or grey light on a grey material: the usual case), or three
+ * channels. All three give the same bytes; the cheaper ones skip work. */
+typedef enum mote__shade_kind { MOTE__SHADE_FLAT, MOTE__SHADE_MONO, MOTE__SHADE_RGB, MOTE__SHADE_COUNT } mote__shade_kind;
 
 struct mote__tri;
 struct mote__target;
@@ -58,7 +63,7 @@ typedef void (*mote__span_fn)(const struct mote__tri *t, const struct mote__targ
 
 /* What the pixel stage needs of a draw; lives as long as its triangles. */
 typedef struct mote__raster_state {
-    mote__span_fn span;
+    mote__span_fn span[MOTE__SHADE_COUNT]; /* by the triangle's shade kind */
     const mote_texture *texture;
     int tex_w, tex_h;
     int tex_stride;               /* bytes per texture row */
@@ -80,6 +85,7 @@ typedef struct mote__tri {
     int16_t xmin, ymin, xmax, ymax; /* pixel bounding box, inclusive, clamped to the viewport */
     int16_t ox, oy;
     int8_t shift;                 /* brings Q under 2^31 */
+    uint8_t shade;                /* mote__shade_kind */
     /* perspective barycentrics: P1 = E1 q1, P2 = E2 q2, Q = sum Ei qi */
     int64_t p1, p1dx, p1dy, p2, p2dx, p2dy, q, qdx, qdy;
     int64_t z, zdx, zdy;          /* depth, 24.16 */
@@ -115,8 +121,8 @@ void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,
                       int subpixel_bits);
 
 /* span.c */
-mote__span_fn mote__span_select(const mote__raster_state *rs, mote_format format,
-                                mote_depth_format depth_format);
+/* Fills rs->span[] for the draw's features and the target's formats. */
+void mote__span_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format);
 void mote__span_generic(const mote__tri *t, const mote__target *tg, int y, int x0, int x1);
 void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b);
 

@@ -55,9 +55,11 @@ static void mote__edge_step(mote__edge *e)
 
 static int mote__first_row(int32_t Yv, int F)
 {
-    /* smallest y with y * 2^F + 2^(F-1) >= Yv */
-    const int64_t one = (int64_t)1 << F;
-    return (int)-mote__floor_div(-((int64_t)Yv - (one >> 1)), one);
+    /* smallest y with y * 2^F + 2^(F-1) >= Yv: ceil((Yv - 2^(F-1)) / 2^F),
+     * as a floor division by a power of two that does not rely on how >>
+     * treats negative numbers */
+    int64_t n = (int64_t)Yv - ((int64_t)1 << (F - 1)) + ((int64_t)1 << F) - 1;
+    return (int)(n >= 0 ? n >> F : ~(~n >> F));
 }
 
 void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
@@ -103,7 +105,7 @@ void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r, 
             if (x0 < rx0) x0 = rx0;
             if (x1 > rx1) x1 = rx1;
             if (x0 < x1)
-                t->rs->span(t, tg, y, (int)x0, (int)x1);
+                t->rs->span[t->shade](t, tg, y, (int)x0, (int)x1);
             mote__edge_step(&longe);
             mote__edge_step(&shorte);
         }

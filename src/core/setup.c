@@ -18,14 +18,20 @@
  */
 #include "internal.h"
 
+/* Number of significant bits of v (0 for 0). */
 static int mote__bitlen(uint64_t v)
 {
+#if defined(__GNUC__)
+    return v ? 64 - __builtin_clzll(v) : 0;
+#else
     int n = 0;
-    while (v) {
-        n++;
-        v >>= 1;
-    }
-    return n;
+    for (int step = 32; step > 0; step >>= 1)
+        if (v >> step) {
+            v >>= step;
+            n += step;
+        }
+    return n + (int)v;
+#endif
 }
 
 static int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
@@ -42,6 +48,13 @@ static int64_t mote__round_f(float f)
     return t;
 }
 
+/* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
+ * negative numbers (implementation-defined in C99). */
+static int64_t mote__floor_shift64(int64_t v, int k)
+{
+    return v >= 0 ? (int64_t)((uint64_t)v >> k) : (int64_t)~(~(uint64_t)v >> k);
+}
+
 static int64_t mote__floor_div64(int64_t a, int64_t b)
 {
     int64_t q = a / b;
@@ -55,8 +68,15 @@ static int64_t mote__floor_div64(int64_t a, int64_t b)
  * gradient then stays small enough that stepping cannot overflow. */
 static int64_t mote__scaled_div(int64_t n, int64_t d)
 {
-    int64_t q = mote__floor_div64(n, d), r = n - q * d;   /* 0 <= r < d */
     const int64_t cap = (int64_t)1 << 28;  /* 16x the whole depth range per pixel */
+    if (n > -((int64_t)1 << 46) && n < ((int64_t)1 << 46)) {
+        /* the usual case: n * 2^16 fits, one division; floor(n / d) >= cap
+         * is n >= cap d, which only a d below 2^18 can reach here */
+        if (d < ((int64_t)1 << 18) && (n >= cap * d || n < -cap * d))
+            return n > 0 ? cap * 65536 : -cap * 65536;
+        return mote__floor_div64(n * 65536 + d / 2, d);
+    }
+    int64_t q = mote__floor_div64(n, d), r = n - q * d;   /* 0 <= r < d */
     if (q >= cap)
         return cap * 65536;
     if (q < -cap)
@@ -142,10 +162,10 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         int eb = mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
         int k = MOTE__MIN(MOTE__MAX(eb - 33, 0), F);
         int64_t pe[3], pedx[3], pedy[3];
-        for (int i = 0; i < 3; i++) {
-            pe[i] = mote__floor_div64(e[i], (int64_t)1 << k);
-            pedx[i] = edx[i] / ((int64_t)1 << k);
-            pedy[i] = edy[i] / ((int64_t)1 << k);
+        for (int i = 0; i < 3; i++) {    /* steps are multiples of 2^F >= 2^k: exact */
+            pe[i] = mote__floor_shift64(e[i], k);
+            pedx[i] = mote__floor_shift64(edx[i], k);
+            pedy[i] = mote__floor_shift64(edy[i], k);
         }
         int64_t a2k = (a2 >> k) + 1;
         int qbits = 61 - 2 - mote__bitlen((uint64_t)MOTE__MAX((emax >> k) + 1, a2k));
@@ -175,6 +195,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
+        bool grey = true, constant = true;
         for (int c = 0; c < 3; c++) {
             int32_t s0 = mote__shade_fixed(v[0]->s[c]);
             int32_t s1 = mote__shade_fixed(v[1]->s[c]);
@@ -182,7 +203,11 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
             t->s0[c] = s0;
             t->ds1[c] = s1 - s0;
             t->ds2[c] = s2 - s0;
+            grey = grey && s0 == t->s0[0] && t->ds1[c] == t->ds1[0] && t->ds2[c] == t->ds2[0];
+            constant = constant && t->ds1[c] == 0 && t->ds2[c] == 0;
         }
+        if (rs->gouraud && !constant)
+            t->shade = grey ? MOTE__SHADE_MONO : MOTE__SHADE_RGB;
         if (rs->tex != MOTE__TEX_NONE) {
             /* texels in 16.16; whole periods removed so numbers stay small */
             int64_t U[3], V[3];

@@ -4,9 +4,15 @@
  * There is one body, mote__span_body(), with its features as parameters.
  * Each specialised variant calls it with constants, so the compiler drops
  * what a draw does not use (no UV work for an untextured draw, no depth
- * reads without a depth test); mote__span_generic() passes the same
- * features at run time and is both the fallback and the test oracle for
- * every variant (tests/test_spans.c compares them pixel for pixel).
+ * reads without a depth test, one shade instead of three for grey light);
+ * mote__span_generic() passes the same features at run time and is both
+ * the fallback and the test oracle for every variant (tests/test_spans.c
+ * compares them pixel for pixel).
+ *
+ * Everything the loop reads is copied into locals first: the colour stores
+ * go through a byte pointer, which may alias the triangle, the texture
+ * descriptor and the target, and would otherwise force the compiler to
+ * reload them after every pixel.
  *
  * Define MOTE_SPECIALISE_SPANS 0 to keep only the generic loop (small flash).
  */
@@ -46,10 +52,18 @@ MOTE__INLINE int mote__wrap(int i, int n, mote_wrap mode)
     }
 }
 
-MOTE__INLINE void mote__texel(const mote__raster_state *rs, int x, int y, uint32_t c[3])
+/* What the loop needs of a texture, in locals (see the top of the file). */
+typedef struct mote__tex_view {
+    const uint8_t *pixels;
+    int stride, w, h;
+    mote_format format;
+    mote_wrap wrap_u, wrap_v;
+    bool pow2_repeat;
+} mote__tex_view;
+
+MOTE__INLINE void mote__texel(const mote__tex_view *tx, int x, int y, uint32_t c[3])
 {
-    const mote_texture *tx = rs->texture;
-    const uint8_t *row = (const uint8_t *)tx->pixels + (size_t)y * (size_t)rs->tex_stride;
+    const uint8_t *row = tx->pixels + (size_t)y * (size_t)tx->stride;
     switch (tx->format) {
     case MOTE_FORMAT_RGB565: {
         uint32_t v = ((const uint16_t *)(const void *)row)[x];
@@ -70,32 +84,41 @@ MOTE__INLINE void mote__texel(const mote__raster_state *rs, int x, int y, uint32
 }
 
 /* Samples the texture at (u, v) in 16.16 texels. */
-MOTE__INLINE void mote__sample(const mote__raster_state *rs, int bilinear, int64_t u, int64_t v,
-                               uint32_t c[3])
+MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, int64_t u, int64_t v, uint32_t c[3])
 {
     if (!bilinear) {
         int tu, tv;
-        if (rs->pow2_repeat) {
-            tu = (int)(u >> 16) & (rs->tex_w - 1);
-            tv = (int)(v >> 16) & (rs->tex_h - 1);
+        if (tx->pow2_repeat) {
+            tu = (int)(u >> 16) & (tx->w - 1);
+            tv = (int)(v >> 16) & (tx->h - 1);
         } else {
-            tu = mote__wrap((int)(u >> 16), rs->tex_w, rs->wrap_u);
-            tv = mote__wrap((int)(v >> 16), rs->tex_h, rs->wrap_v);
+            tu = mote__wrap((int)(u >> 16), tx->w, tx->wrap_u);
+            tv = mote__wrap((int)(v >> 16), tx->h, tx->wrap_v);
         }
-        mote__texel(rs, tu, tv, c);
+        mote__texel(tx, tu, tv, c);
         return;
     }
     u -= 0x8000;
     v -= 0x8000;
     int iu = (int)(u >> 16), iv = (int)(v >> 16);
     uint32_t fu = (uint32_t)(u >> 8) & 0xff, fv = (uint32_t)(v >> 8) & 0xff;
-    int u0 = mote__wrap(iu, rs->tex_w, rs->wrap_u), u1 = mote__wrap(iu + 1, rs->tex_w, rs->wrap_u);
-    int v0 = mote__wrap(iv, rs->tex_h, rs->wrap_v), v1 = mote__wrap(iv + 1, rs->tex_h, rs->wrap_v);
+    int u0, u1, v0, v1;
+    if (tx->pow2_repeat) {
+        u0 = iu & (tx->w - 1);
+        u1 = (iu + 1) & (tx->w - 1);
+        v0 = iv & (tx->h - 1);
+        v1 = (iv + 1) & (tx->h - 1);
+    } else {
+        u0 = mote__wrap(iu, tx->w, tx->wrap_u);
+        u1 = mote__wrap(iu + 1, tx->w, tx->wrap_u);
+        v0 = mote__wrap(iv, tx->h, tx->wrap_v);
+        v1 = mote__wrap(iv + 1, tx->h, tx->wrap_v);
+    }
     uint32_t a[3], b[3], d[3], e[3];
-    mote__texel(rs, u0, v0, a);
-    mote__texel(rs, u1, v0, b);
-    mote__texel(rs, u0, v1, d);
-    mote__texel(rs, u1, v1, e);
+    mote__texel(tx, u0, v0, a);
+    mote__texel(tx, u1, v0, b);
+    mote__texel(tx, u0, v1, d);
+    mote__texel(tx, u1, v1, e);
     for (int k = 0; k < 3; k++)
         c[k] = (a[k] * (256 - fu) * (256 - fv) + b[k] * fu * (256 - fv) + d[k] * (256 - fu) * fv
                 + e[k] * fu * fv + 32768) >> 16;
@@ -118,17 +141,13 @@ MOTE__INLINE uint64_t mote__recip(int64_t q, int shift)
     return ((uint64_t)1 << 62) / (q32 ? q32 : 1);
 }
 
-/* Perspective weights b1 = P1/Q, b2 = P2/Q (2^20 = 1), given r = recip(Q). */
-MOTE__INLINE void mote__weights_r(int64_t p1, int64_t p2, int shift, uint64_t r, int64_t *b1, int64_t *b2)
+/* A perspective weight P/Q (2^20 = 1), given r = recip(Q). P >= 0 at every
+ * pixel the rasteriser hands over: it is E q with the exact edge function
+ * E, which is >= 0 at a covered pixel centre (floored by setup, still
+ * >= 0). */
+MOTE__INLINE int64_t mote__weight(int64_t p, int shift, uint64_t r)
 {
-    int64_t a = p1 >> shift, b = p2 >> shift;
-    *b1 = a <= 0 ? 0 : (int64_t)(((uint64_t)a * r) >> (62 - MOTE__WEIGHT_BITS));
-    *b2 = b <= 0 ? 0 : (int64_t)(((uint64_t)b * r) >> (62 - MOTE__WEIGHT_BITS));
-}
-
-MOTE__INLINE void mote__weights(int64_t p1, int64_t p2, int64_t q, int shift, int64_t *b1, int64_t *b2)
-{
-    mote__weights_r(p1, p2, shift, mote__recip(q, shift), b1, b2);
+    return (int64_t)(((uint64_t)(p >> shift) * r) >> (62 - MOTE__WEIGHT_BITS));
 }
 
 /* Packs a colour for a format: one store per pixel in the loop. */
@@ -170,14 +189,24 @@ MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
     return v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
 }
 
+/* s0 + (b1 d1 + b2 d2) >> 20: b1, b2 >= 0 and b1 + b2 <= 1 inside the
+ * triangle, so this is a convex combination of in-range values, floored: a
+ * shade comes out at worst -1, which mote__modulate maps to 0. */
+MOTE__INLINE int64_t mote__lerp2(int64_t a0, int64_t d1, int64_t d2, int64_t b1, int64_t b2)
+{
+    return a0 + ((b1 * d1 + b2 * d2) >> MOTE__WEIGHT_BITS);
+}
+
+/* tfmt: the texture's format when known at compile time (the specialised
+ * variants take RGBA8888 textures), MOTE_FORMAT_DEFAULT to read it. */
 MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, int y, int x0, int x1,
-                                  const int tex, const int gouraud, const int persp,
+                                  const int tex, const mote_format tfmt, const int shade, const int persp,
                                   const int dsel, const int dwrite, const mote_format fmt)
 {
     const mote__raster_state *rs = t->rs;
     uint8_t *crow = tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride;
     const int64_t dx0 = x0 - t->ox, dy0 = y - t->oy;
-    const bool weights = gouraud || tex;
+    const bool weights = shade != MOTE__SHADE_FLAT || tex;
     int64_t z = mote__plane_at(t->z, t->zdx, t->zdy, dx0, dy0);
     int64_t p1 = 0, p2 = 0, q = 0;
     if (weights) {
@@ -185,35 +214,49 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
         p2 = mote__plane_at(t->p2, t->p2dx, t->p2dy, dx0, dy0);
         q = mote__plane_at(t->q, t->qdx, t->qdy, dx0, dy0);
     }
-    uint16_t *d16 = dsel == MOTE__D_16 ? (uint16_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
-    uint32_t *d32 = dsel == MOTE__D_32 ? (uint32_t *)tg->depth + (size_t)(y - tg->y0) * (size_t)tg->width : NULL;
-    /* without Gouraud the shade is the triangle's; without a texture too,
-     * the pixel value is one constant */
-    uint32_t sr = mote__clamp_shade(t->s0[0]), sg = mote__clamp_shade(t->s0[1]), sb = mote__clamp_shade(t->s0[2]);
+    const size_t drow = (size_t)(y - tg->y0) * (size_t)tg->width;
+    uint16_t *d16 = dsel == MOTE__D_16 ? (uint16_t *)tg->depth + drow : NULL;
+    uint32_t *d32 = dsel == MOTE__D_32 ? (uint32_t *)tg->depth + drow : NULL;
+    const int64_t zdx = t->zdx, p1dx = t->p1dx, p2dx = t->p2dx, qdx = t->qdx;
+    const int shift = t->shift;
+    /* shades: the triangle's (flat), one grey (mono) or three channels */
+    const int64_t s0r = t->s0[0], s0g = t->s0[1], s0b = t->s0[2];
+    const int64_t d1r = t->ds1[0], d1g = t->ds1[1], d1b = t->ds1[2];
+    const int64_t d2r = t->ds2[0], d2g = t->ds2[1], d2b = t->ds2[2];
+    uint32_t sr = mote__clamp_shade(s0r), sg = mote__clamp_shade(s0g), sb = mote__clamp_shade(s0b);
+    /* without a texture or interpolated shade the pixel is one constant */
     const uint32_t flat_px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
+    const int64_t u0 = t->u0, du1 = t->du1, du2 = t->du2, v0 = t->v0, dv1 = t->dv1, dv2 = t->dv2;
+    mote__tex_view tx;
+    memset(&tx, 0, sizeof tx);
+    if (tex) {
+        tx.pixels = (const uint8_t *)rs->texture->pixels;
+        tx.format = tfmt != MOTE_FORMAT_DEFAULT ? tfmt : rs->texture->format;
+        tx.stride = rs->tex_stride;
+        tx.w = rs->tex_w;
+        tx.h = rs->tex_h;
+        tx.wrap_u = rs->wrap_u;
+        tx.wrap_v = rs->wrap_v;
+        tx.pow2_repeat = rs->pow2_repeat;
+    }
+    const bool test = rs->depth_test;
     /* sub-span state: weights at the segment start and per-pixel steps, 2^12 finer */
     int64_t sb1 = 0, sb2 = 0, sd1 = 0, sd2 = 0;
     int seg_left = 0;
     const int seg_len = 1 << rs->subspan_log2;
-    const bool test = rs->depth_test;
-    uint32_t written = 0;
-    /* locals, not t->..., in the loop: the colour stores are through a byte
-     * pointer, which may alias *t, and would force reloads every pixel */
-    const int64_t zdx = t->zdx, p1dx = t->p1dx, p2dx = t->p2dx, qdx = t->qdx;
-    const int shift = t->shift;
-    const int32_t s0r = t->s0[0], s0g = t->s0[1], s0b = t->s0[2];
-    const int64_t d1r = t->ds1[0], d1g = t->ds1[1], d1b = t->ds1[2];
-    const int64_t d2r = t->ds2[0], d2g = t->ds2[1], d2b = t->ds2[2];
-    const int64_t u0 = t->u0, du1 = t->du1, du2 = t->du2, v0 = t->v0, dv1 = t->dv1, dv2 = t->dv2;
-    mote__raster_state rsl = *rs;
     /* affine: all qi are 1, so Q is constant and so is its reciprocal */
     const uint64_t affine_r = (weights && persp == MOTE__PERSP_AFFINE) ? mote__recip(q, shift) : 0;
+    uint32_t written = 0;
 
     for (int x = x0; x < x1; x++, z += zdx, p1 += p1dx, p2 += p2dx, q += qdx) {
         uint32_t depth = 0;
         if (dsel != MOTE__D_NONE) {
+            /* z is a convex combination of in-range depths: only rounding
+             * at an edge can take it a unit outside, so test before clamping */
             int64_t zz = z >> MOTE__DEPTH_FRAC;
-            depth = zz < 0 ? 0u : zz > (int64_t)MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : (uint32_t)zz;
+            depth = (uint32_t)zz;
+            if ((uint64_t)zz > MOTE__DEPTH_MAX)
+                depth = zz < 0 ? 0u : MOTE__DEPTH_MAX;
             if (dsel == MOTE__D_16)
                 depth >>= 8;
             if (test && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x]))
@@ -225,11 +268,13 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
             if (persp == MOTE__PERSP_SUBSPAN) {
                 if (seg_left == 0) {
                     int n = MOTE__MIN(seg_len, x1 - 1 - x);
-                    int64_t e1, e2;
-                    mote__weights(p1, p2, q, shift, &b1, &b2);
+                    uint64_t r = mote__recip(q, shift);
+                    b1 = mote__weight(p1, shift, r);
+                    b2 = mote__weight(p2, shift, r);
                     if (n > 0) {
-                        mote__weights(mote__plane_at(p1, p1dx, 0, n, 0), mote__plane_at(p2, p2dx, 0, n, 0),
-                                      mote__plane_at(q, qdx, 0, n, 0), shift, &e1, &e2);
+                        uint64_t re = mote__recip(mote__plane_at(q, qdx, 0, n, 0), shift);
+                        int64_t e1 = mote__weight(mote__plane_at(p1, p1dx, 0, n, 0), shift, re);
+                        int64_t e2 = mote__weight(mote__plane_at(p2, p2dx, 0, n, 0), shift, re);
                         sd1 = ((e1 - b1) * 4096) / n;
                         sd2 = ((e2 - b2) * 4096) / n;
                     }
@@ -242,24 +287,23 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
                 sb1 += sd1;
                 sb2 += sd2;
                 seg_left--;
-            } else if (persp == MOTE__PERSP_AFFINE) {
-                mote__weights_r(p1, p2, shift, affine_r, &b1, &b2);
             } else {
-                mote__weights(p1, p2, q, shift, &b1, &b2);
+                uint64_t r = persp == MOTE__PERSP_AFFINE ? affine_r : mote__recip(q, shift);
+                b1 = mote__weight(p1, shift, r);
+                b2 = mote__weight(p2, shift, r);
             }
-            if (gouraud) {
-                /* b1, b2 >= 0 and b1 + b2 <= 1 inside the triangle, so this is
-                 * a convex combination of in-range shades, floored: at worst
-                 * -1, which the rounding below still maps to 0 */
-                sr = (uint32_t)(s0r + (int32_t)((b1 * d1r + b2 * d2r) >> MOTE__WEIGHT_BITS));
-                sg = (uint32_t)(s0g + (int32_t)((b1 * d1g + b2 * d2g) >> MOTE__WEIGHT_BITS));
-                sb = (uint32_t)(s0b + (int32_t)((b1 * d1b + b2 * d2b) >> MOTE__WEIGHT_BITS));
+            if (shade == MOTE__SHADE_MONO) {
+                int64_t sm = mote__lerp2(s0r, d1r, d2r, b1, b2);
+                sr = sg = sb = sm < 0 ? 0u : (uint32_t)sm;
+            } else if (shade == MOTE__SHADE_RGB) {
+                sr = (uint32_t)mote__lerp2(s0r, d1r, d2r, b1, b2);
+                sg = (uint32_t)mote__lerp2(s0g, d1g, d2g, b1, b2);
+                sb = (uint32_t)mote__lerp2(s0b, d1b, d2b, b1, b2);
             }
             if (tex) {
-                int64_t u = u0 + ((b1 * du1 + b2 * du2) >> MOTE__WEIGHT_BITS);
-                int64_t v = v0 + ((b1 * dv1 + b2 * dv2) >> MOTE__WEIGHT_BITS);
                 uint32_t c[3];
-                mote__sample(&rsl, tex == MOTE__TEX_BILINEAR, u, v, c);
+                mote__sample(&tx, tex == MOTE__TEX_BILINEAR, mote__lerp2(u0, du1, du2, b1, b2),
+                             mote__lerp2(v0, dv1, dv2, b1, b2), c);
                 px = mote__pack(fmt, mote__modulate(c[0], sr), mote__modulate(c[1], sg), mote__modulate(c[2], sb));
             } else {
                 px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
@@ -292,52 +336,54 @@ void mote__span_generic(const mote__tri *t, const mote__target *tg, int y, int x
 {
     const mote__raster_state *rs = t->rs;
     int dsel = (rs->depth_test || rs->depth_write) ? mote__dsel(tg->depth_format) : MOTE__D_NONE;
-    mote__span_body(t, tg, y, x0, x1, rs->tex, rs->gouraud, rs->persp, dsel, rs->depth_write,
-                    tg->format);
+    mote__span_body(t, tg, y, x0, x1, rs->tex, MOTE_FORMAT_DEFAULT, t->shade, rs->persp, dsel,
+                    rs->depth_write, tg->format);
 }
 
 #if MOTE_SPECIALISE_SPANS
-/* The specialised table: texture x shading x perspective x depth x format,
- * with depth test and write both on (the common case). Anything else uses
- * the generic loop. */
-#define MOTE__FORMATS(X, T, G, P, D) X(T, G, P, D, RGBA8888) X(T, G, P, D, RGB565)
-#define MOTE__DEPTHS(X, T, G, P) MOTE__FORMATS(X, T, G, P, 0) MOTE__FORMATS(X, T, G, P, 1) MOTE__FORMATS(X, T, G, P, 2)
-#define MOTE__PERSPS(X, T, G) MOTE__DEPTHS(X, T, G, 0) MOTE__DEPTHS(X, T, G, 1) MOTE__DEPTHS(X, T, G, 2)
-#define MOTE__SHADES(X, T) MOTE__PERSPS(X, T, 0) MOTE__PERSPS(X, T, 1)
+/* The specialised table: texture x shade x perspective x depth x format,
+ * with depth test and write both on (the common case) and RGBA8888
+ * textures (what the loader makes). Anything else uses the generic loop. */
+#define MOTE__FORMATS(X, T, S, P, D) X(T, S, P, D, RGBA8888) X(T, S, P, D, RGB565)
+#define MOTE__DEPTHS(X, T, S, P) MOTE__FORMATS(X, T, S, P, 0) MOTE__FORMATS(X, T, S, P, 1) MOTE__FORMATS(X, T, S, P, 2)
+#define MOTE__PERSPS(X, T, S) MOTE__DEPTHS(X, T, S, 0) MOTE__DEPTHS(X, T, S, 1) MOTE__DEPTHS(X, T, S, 2)
+#define MOTE__SHADES(X, T) MOTE__PERSPS(X, T, 0) MOTE__PERSPS(X, T, 1) MOTE__PERSPS(X, T, 2)
 #define MOTE__ALL(X) MOTE__SHADES(X, 0) MOTE__SHADES(X, 1) MOTE__SHADES(X, 2)
 
-#define MOTE__DEFINE(T, G, P, D, F)                                                        \
-    static void mote__span_##T##G##P##D##_##F(const mote__tri *t, const mote__target *tg,  \
+#define MOTE__DEFINE(T, S, P, D, F)                                                        \
+    static void mote__span_##T##S##P##D##_##F(const mote__tri *t, const mote__target *tg,  \
                                               int y, int x0, int x1)                       \
     {                                                                                      \
-        mote__span_body(t, tg, y, x0, x1, T, G, P, D, 1, MOTE_FORMAT_##F);                  \
+        mote__span_body(t, tg, y, x0, x1, T, MOTE_FORMAT_RGBA8888, S, P, D, 1, MOTE_FORMAT_##F); \
     }
 MOTE__ALL(MOTE__DEFINE)
 #undef MOTE__DEFINE
 
-#define MOTE__ENTRY(T, G, P, D, F) mote__span_##T##G##P##D##_##F,
+#define MOTE__ENTRY(T, S, P, D, F) mote__span_##T##S##P##D##_##F,
 static const mote__span_fn mote__span_table[] = {MOTE__ALL(MOTE__ENTRY)};
 #undef MOTE__ENTRY
-typedef char mote__span_table_size_check[sizeof mote__span_table / sizeof mote__span_table[0] == 3 * 2 * 3 * 3 * 2 ? 1 : -1];
+typedef char mote__span_table_size_check[sizeof mote__span_table / sizeof mote__span_table[0]
+                                         == 3 * MOTE__SHADE_COUNT * 3 * 3 * 2 ? 1 : -1];
 #endif
 
-mote__span_fn mote__span_select(const mote__raster_state *rs, mote_format format,
-                                mote_depth_format depth_format)
+void mote__span_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format)
 {
+    for (int s = 0; s < MOTE__SHADE_COUNT; s++) {
+        rs->span[s] = mote__span_generic;
 #if MOTE_SPECIALISE_SPANS
-    int dsel = mote__dsel(depth_format);
-    bool depth_on = rs->depth_test && rs->depth_write;
-    bool depth_off = !rs->depth_test && !rs->depth_write;
-    int f = format == MOTE_FORMAT_RGBA8888 ? 0 : format == MOTE_FORMAT_RGB565 ? 1 : -1;
-    if (f >= 0 && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
-        int d = depth_on ? dsel : MOTE__D_NONE;
-        int idx = ((((int)rs->tex * 2 + (rs->gouraud ? 1 : 0)) * 3 + (int)rs->persp) * 3 + d) * 2 + f;
-        return mote__span_table[idx];
-    }
+        int dsel = mote__dsel(depth_format);
+        bool depth_on = rs->depth_test && rs->depth_write;
+        bool depth_off = !rs->depth_test && !rs->depth_write;
+        int f = format == MOTE_FORMAT_RGBA8888 ? 0 : format == MOTE_FORMAT_RGB565 ? 1 : -1;
+        bool tex_ok = rs->tex == MOTE__TEX_NONE || rs->texture->format == MOTE_FORMAT_RGBA8888;
+        if (f >= 0 && tex_ok && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
+            int d = depth_on ? dsel : MOTE__D_NONE;
+            int idx = ((((int)rs->tex * MOTE__SHADE_COUNT + s) * 3 + (int)rs->persp) * 3 + d) * 2 + f;
+            rs->span[s] = mote__span_table[idx];
+        }
 #else
-    (void)rs;
-    (void)format;
-    (void)depth_format;
+        (void)format;
+        (void)depth_format;
 #endif
-    return mote__span_generic;
+    }
 }
