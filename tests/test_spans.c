@@ -55,13 +55,13 @@ void every_specialised_span_should_match_the_generic_span(void)
         rs.persp = (mote__persp_kind)p;
         rs.subspan_log2 = 3;
         rs.depth_test = rs.depth_write = depthf != MOTE_DEPTH_FORMAT_NONE;
-        mote__span_select(&rs, format, depthf);
-        mote__span_fn special = rs.span[sk];
+        mote__fill_select(&rs, format, depthf);
+        mote__fill_fn special = rs.fill[sk];
         TEST_ASSERT_NOT_NULL(special);
-        variants += special != mote__span_generic;
+        variants += special != mote__fill_generic;
         mote__raster_state gen = rs;
         for (int k = 0; k < MOTE__SHADE_COUNT; k++)
-            gen.span[k] = mote__span_generic;
+            gen.fill[k] = mote__fill_generic;
         memset(ca, 0, sizeof ca);
         memset(cb, 0, sizeof cb);
         memset(da, 0xff, sizeof da);

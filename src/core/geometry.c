@@ -575,7 +575,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     bool has_depth = dev->desc.depth_format != MOTE_DEPTH_FORMAT_NONE;
     rs_local.depth_test = has_depth && !cx.d.no_depth_test;
     rs_local.depth_write = has_depth && !cx.d.no_depth_write;
-    mote__span_select(&rs_local, dev->desc.color_format, dev->desc.depth_format);
+    mote__fill_select(&rs_local, dev->desc.color_format, dev->desc.depth_format);
 
     size_t cache_bytes = 0;
     mote__tvert small_cache[MOTE__SMALL_CACHE];

@@ -5,8 +5,9 @@
  *   vmath.c     matrices, deterministic trig (vertex stage, float)
  *   geometry.c  per draw: transform, light, clip, snap, cull -> triangles
  *   setup.c     per triangle: edge functions and attribute planes (integer)
- *   raster.c    exact scanline edge walking over a region -> spans
- *   span.c      the span loops, specialised from one inline body
+ *   raster.c    exact scanline edge walking over a region
+ *   span.c      fill functions: rows of the walk x pixel loops, specialised
+ *               from one inline body
  *   bin.c       arena, tile binning, tile execution
  *   line.c      points and wireframe (Bresenham, exact under clipping)
  *   device.c    the public device API, formats, results
@@ -58,12 +59,15 @@ typedef enum mote__shade_kind { MOTE__SHADE_FLAT, MOTE__SHADE_MONO, MOTE__SHADE_
 
 struct mote__tri;
 struct mote__target;
-typedef void (*mote__span_fn)(const struct mote__tri *t, const struct mote__target *tg,
-                              int y, int x0, int x1);
+struct mote__rect;
+/* Fills the pixels of one triangle inside a region of the screen: the edge
+ * walk of raster.c with one of span.c's pixel loops inside. */
+typedef void (*mote__fill_fn)(const struct mote__tri *t, const struct mote__target *tg,
+                              struct mote__rect r, int subpixel_bits);
 
 /* What the pixel stage needs of a draw; lives as long as its triangles. */
 typedef struct mote__raster_state {
-    mote__span_fn span[MOTE__SHADE_COUNT]; /* by the triangle's shade kind */
+    mote__fill_fn fill[MOTE__SHADE_COUNT]; /* by the triangle's shade kind */
     const mote_texture *texture;
     int tex_w, tex_h;
     int tex_stride;               /* bytes per texture row */
@@ -110,6 +114,57 @@ typedef struct mote__target {
 /* Region of the screen being drawn: [x0, x1) x [y0, y1). */
 typedef struct mote__rect { int x0, y0, x1, y1; } mote__rect;
 
+/* raster.c: exact scanline edge walking. An edge holds, for the current
+ * row, the first pixel at or right of its crossing, with the remainder of
+ * that ceiling so that stepping a row is exact integer addition. */
+typedef struct mote__edge {
+    int64_t x;                    /* first pixel index at or right of the crossing */
+    int64_t err;                  /* x * den - num, in [0, den) */
+    int64_t den, qstep, rstep;
+} mote__edge;
+
+/* A triangle's rows inside a region: rows [y, yend); the short edge
+ * changes from a-b to b-c at row ymid. */
+typedef struct mote__walk {
+    mote__edge longe, shorte;
+    int y, ymid, yend;
+    int rx0, rx1;                 /* the region's columns, cut to the triangle's box */
+    bool long_left;               /* the long edge a-c is the left one */
+    int32_t xb, yb, xc, yc;       /* vertices b and c (sorted by y) */
+    int subpixel_bits;
+} mote__walk;
+
+/* false when the triangle has no rows in the region */
+bool mote__walk_begin(mote__walk *w, const struct mote__tri *t, mote__rect r, int subpixel_bits);
+/* at row ymid: the short edge becomes b-c */
+void mote__walk_switch(mote__walk *w);
+
+static inline void mote__edge_step(mote__edge *e)
+{
+    e->x += e->qstep;
+    e->err -= e->rstep;
+    if (e->err < 0) {
+        e->x++;
+        e->err += e->den;
+    }
+}
+
+/* The pixels [*x0, *x1) of row w->y (empty when *x0 >= *x1), then the walk
+ * moves to the next row. */
+static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
+{
+    if (w->y == w->ymid)
+        mote__walk_switch(w);
+    const mote__edge *le = w->long_left ? &w->longe : &w->shorte;
+    const mote__edge *re = w->long_left ? &w->shorte : &w->longe;
+    int64_t a = le->x, b = re->x;
+    *x0 = (int)(a < w->rx0 ? w->rx0 : a > w->rx1 ? w->rx1 : a);
+    *x1 = (int)(b > w->rx1 ? w->rx1 : b < w->rx0 ? w->rx0 : b);
+    mote__edge_step(&w->longe);
+    mote__edge_step(&w->shorte);
+    w->y++;
+}
+
 /* setup.c: fills t from snapped vertices and clip-space attributes; false
  * when the triangle has no pixels. */
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
@@ -121,9 +176,9 @@ void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,
                       int subpixel_bits);
 
 /* span.c */
-/* Fills rs->span[] for the draw's features and the target's formats. */
-void mote__span_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format);
-void mote__span_generic(const mote__tri *t, const mote__target *tg, int y, int x0, int x1);
+/* Fills rs->fill[] for the draw's features and the target's formats. */
+void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format);
+void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r, int subpixel_bits);
 void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b);
 
 /* line.c: points and lines in screen pixels, clipped to the region. */

@@ -10,14 +10,10 @@
  * top-left rule for horizontal edges. The walker steps that ceiling exactly
  * (quotient and remainder), and starts at any row with one division, so a
  * region that begins halfway down a triangle draws exactly the same pixels.
+ * The row loop itself lives in span.c's fill functions (mote__walk_row in
+ * internal.h), so that each specialised fill walks its own rows.
  */
 #include "internal.h"
-
-typedef struct mote__edge {
-    int64_t x;                    /* first pixel index at or right of the crossing */
-    int64_t err;                  /* x * den - num, in [0, den) */
-    int64_t den, qstep, rstep;
-} mote__edge;
 
 static int64_t mote__floor_div(int64_t a, int64_t b)
 {
@@ -43,16 +39,6 @@ static void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, i
     e->rstep = step - e->qstep * e->den;
 }
 
-static void mote__edge_step(mote__edge *e)
-{
-    e->x += e->qstep;
-    e->err -= e->rstep;
-    if (e->err < 0) {
-        e->x++;
-        e->err += e->den;
-    }
-}
-
 static int mote__first_row(int32_t Yv, int F)
 {
     /* smallest y with y * 2^F + 2^(F-1) >= Yv: ceil((Yv - 2^(F-1)) / 2^F),
@@ -62,7 +48,7 @@ static int mote__first_row(int32_t Yv, int F)
     return (int)(n >= 0 ? n >> F : ~(~n >> F));
 }
 
-void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
+bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
 {
     /* sort by y (then x, for a fixed order) */
     int a = 0, b = 1, c = 2, tmp;
@@ -74,40 +60,40 @@ void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r, 
     const int32_t xa = t->X[a], ya = t->Y[a], xb = t->X[b], yb = t->Y[b], xc = t->X[c], yc = t->Y[c];
     int64_t cross = (int64_t)(xb - xa) * (yc - ya) - (int64_t)(yb - ya) * (xc - xa);
     if (cross == 0 || yc == ya)
-        return;
-    bool long_left = cross > 0;
+        return false;
+    w->long_left = cross > 0;
 
-    int rx0 = MOTE__MAX(r.x0, t->xmin), rx1 = MOTE__MIN(r.x1, t->xmax + 1);
+    w->rx0 = MOTE__MAX(r.x0, t->xmin);
+    w->rx1 = MOTE__MIN(r.x1, t->xmax + 1);
     int ry0 = MOTE__MAX(r.y0, t->ymin), ry1 = MOTE__MIN(r.y1, t->ymax + 1);
-    if (rx0 >= rx1 || ry0 >= ry1)
-        return;
-    int ytop = MOTE__MAX(mote__first_row(ya, F), ry0);
-    int ymid = mote__first_row(yb, F);
-    int ybot = MOTE__MIN(mote__first_row(yc, F), ry1);
-    if (ytop >= ybot)
-        return;
-
-    mote__edge longe, shorte;
-    mote__edge_init(&longe, xa, ya, xc, yc, ytop, F);
-    int y = ytop;
-    for (int part = 0; part < 2; part++) {
-        int yend = part == 0 ? MOTE__MIN(ymid, ybot) : ybot;
-        if (y >= yend)
-            continue;
-        if (part == 0)
-            mote__edge_init(&shorte, xa, ya, xb, yb, y, F);
-        else
-            mote__edge_init(&shorte, xb, yb, xc, yc, y, F);
-        const mote__edge *le = long_left ? &longe : &shorte;
-        const mote__edge *re = long_left ? &shorte : &longe;
-        for (; y < yend; y++) {
-            int64_t x0 = le->x, x1 = re->x;
-            if (x0 < rx0) x0 = rx0;
-            if (x1 > rx1) x1 = rx1;
-            if (x0 < x1)
-                t->rs->span[t->shade](t, tg, y, (int)x0, (int)x1);
-            mote__edge_step(&longe);
-            mote__edge_step(&shorte);
-        }
+    if (w->rx0 >= w->rx1 || ry0 >= ry1)
+        return false;
+    w->y = MOTE__MAX(mote__first_row(ya, F), ry0);
+    w->ymid = mote__first_row(yb, F);
+    w->yend = MOTE__MIN(mote__first_row(yc, F), ry1);
+    if (w->y >= w->yend)
+        return false;
+    w->xb = xb;
+    w->yb = yb;
+    w->xc = xc;
+    w->yc = yc;
+    w->subpixel_bits = F;
+    mote__edge_init(&w->longe, xa, ya, xc, yc, w->y, F);
+    if (w->y < w->ymid) {
+        mote__edge_init(&w->shorte, xa, ya, xb, yb, w->y, F);
+    } else {
+        mote__edge_init(&w->shorte, xb, yb, xc, yc, w->y, F);
+        w->ymid = -1;             /* rows are >= 0: no switch to come */
     }
+    return true;
+}
+
+void mote__walk_switch(mote__walk *w)
+{
+    mote__edge_init(&w->shorte, w->xb, w->yb, w->xc, w->yc, w->y, w->subpixel_bits);
+}
+
+void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
+{
+    t->rs->fill[t->shade](t, tg, r, F);
 }

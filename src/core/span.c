@@ -1,18 +1,21 @@
 /*
- * span.c - the inner loop: one row of one triangle, [x0, x1) on row y.
+ * span.c - the pixel loops: each fill function walks the rows of one
+ * triangle inside a region (raster.c's exact edge walk) and runs the pixel
+ * loop over each row's span.
  *
- * There is one body, mote__span_body(), with its features as parameters.
- * Each specialised variant calls it with constants, so the compiler drops
- * what a draw does not use (no UV work for an untextured draw, no depth
- * reads without a depth test, one shade instead of three for grey light);
- * mote__span_generic() passes the same features at run time and is both
- * the fallback and the test oracle for every variant (tests/test_spans.c
- * compares them pixel for pixel).
+ * There is one body, mote__fill_body() with mote__pixels() inside, with its
+ * features as parameters. Each specialised variant calls it with constants,
+ * so the compiler drops what a draw does not use (no UV work for an
+ * untextured draw, no depth reads without a depth test, one shade instead
+ * of three for grey light); mote__fill_generic() passes the same features
+ * at run time and is both the fallback and the test oracle for every
+ * variant (tests/test_spans.c compares them pixel for pixel).
  *
- * Everything the loop reads is copied into locals first: the colour stores
- * go through a byte pointer, which may alias the triangle, the texture
+ * A triangle's constants are read once into locals: the colour stores go
+ * through a byte pointer, which may alias the triangle, the texture
  * descriptor and the target, and would otherwise force the compiler to
- * reload them after every pixel.
+ * reload them after every pixel. Row by row only the plane values at the
+ * row start change.
  *
  * Define MOTE_SPECIALISE_SPANS 0 to keep only the generic loop (small flash).
  */
@@ -197,53 +200,34 @@ MOTE__INLINE int64_t mote__lerp2(int64_t a0, int64_t d1, int64_t d2, int64_t b1,
     return a0 + ((b1 * d1 + b2 * d2) >> MOTE__WEIGHT_BITS);
 }
 
-/* tfmt: the texture's format when known at compile time (the specialised
- * variants take RGBA8888 textures), MOTE_FORMAT_DEFAULT to read it. */
-MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, int y, int x0, int x1,
-                                  const int tex, const mote_format tfmt, const int shade, const int persp,
-                                  const int dsel, const int dwrite, const mote_format fmt)
-{
-    const mote__raster_state *rs = t->rs;
-    uint8_t *crow = tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride;
-    const int64_t dx0 = x0 - t->ox, dy0 = y - t->oy;
-    const bool weights = shade != MOTE__SHADE_FLAT || tex;
-    int64_t z = mote__plane_at(t->z, t->zdx, t->zdy, dx0, dy0);
-    int64_t p1 = 0, p2 = 0, q = 0;
-    if (weights) {
-        p1 = mote__plane_at(t->p1, t->p1dx, t->p1dy, dx0, dy0);
-        p2 = mote__plane_at(t->p2, t->p2dx, t->p2dy, dx0, dy0);
-        q = mote__plane_at(t->q, t->qdx, t->qdy, dx0, dy0);
-    }
-    const size_t drow = (size_t)(y - tg->y0) * (size_t)tg->width;
-    uint16_t *d16 = dsel == MOTE__D_16 ? (uint16_t *)tg->depth + drow : NULL;
-    uint32_t *d32 = dsel == MOTE__D_32 ? (uint32_t *)tg->depth + drow : NULL;
-    const int64_t zdx = t->zdx, p1dx = t->p1dx, p2dx = t->p2dx, qdx = t->qdx;
-    const int shift = t->shift;
-    /* shades: the triangle's (flat), one grey (mono) or three channels */
-    const int64_t s0r = t->s0[0], s0g = t->s0[1], s0b = t->s0[2];
-    const int64_t d1r = t->ds1[0], d1g = t->ds1[1], d1b = t->ds1[2];
-    const int64_t d2r = t->ds2[0], d2g = t->ds2[1], d2b = t->ds2[2];
-    uint32_t sr = mote__clamp_shade(s0r), sg = mote__clamp_shade(s0g), sb = mote__clamp_shade(s0b);
-    /* without a texture or interpolated shade the pixel is one constant */
-    const uint32_t flat_px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
-    const int64_t u0 = t->u0, du1 = t->du1, du2 = t->du2, v0 = t->v0, dv1 = t->dv1, dv2 = t->dv2;
+/* What the pixel loop needs of a triangle, read once per triangle into
+ * locals (see the top of the file). */
+typedef struct mote__fill_ctx {
+    int64_t zdx, p1dx, p2dx, qdx;
+    int shift;
+    int64_t s0r, s0g, s0b, d1r, d1g, d1b, d2r, d2g, d2b;
+    int64_t u0, du1, du2, v0, dv1, dv2;
+    uint32_t flat_px;             /* the pixel when nothing varies */
+    uint32_t sr, sg, sb;          /* the shade when it does not vary */
     mote__tex_view tx;
-    memset(&tx, 0, sizeof tx);
-    if (tex) {
-        tx.pixels = (const uint8_t *)rs->texture->pixels;
-        tx.format = tfmt != MOTE_FORMAT_DEFAULT ? tfmt : rs->texture->format;
-        tx.stride = rs->tex_stride;
-        tx.w = rs->tex_w;
-        tx.h = rs->tex_h;
-        tx.wrap_u = rs->wrap_u;
-        tx.wrap_v = rs->wrap_v;
-        tx.pow2_repeat = rs->pow2_repeat;
-    }
-    const bool test = rs->depth_test;
+    bool test;
+    int seg_len;
+} mote__fill_ctx;
+
+/* One row: pixels [x0, x1) with the planes' values at x0. Returns the
+ * number of pixels written. */
+MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
+                                   int x0, int x1, int64_t z, int64_t p1, int64_t p2, int64_t q,
+                                   const int tex, const int shade, const int persp,
+                                   const int dsel, const int dwrite, const mote_format fmt)
+{
+    const bool weights = shade != MOTE__SHADE_FLAT || tex;
+    const int64_t zdx = c->zdx, p1dx = c->p1dx, p2dx = c->p2dx, qdx = c->qdx;
+    const int shift = c->shift;
+    uint32_t sr = c->sr, sg = c->sg, sb = c->sb;
     /* sub-span state: weights at the segment start and per-pixel steps, 2^12 finer */
     int64_t sb1 = 0, sb2 = 0, sd1 = 0, sd2 = 0;
     int seg_left = 0;
-    const int seg_len = 1 << rs->subspan_log2;
     /* affine: all qi are 1, so Q is constant and so is its reciprocal */
     const uint64_t affine_r = (weights && persp == MOTE__PERSP_AFFINE) ? mote__recip(q, shift) : 0;
     uint32_t written = 0;
@@ -259,15 +243,15 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
                 depth = zz < 0 ? 0u : MOTE__DEPTH_MAX;
             if (dsel == MOTE__D_16)
                 depth >>= 8;
-            if (test && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x]))
+            if (c->test && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x]))
                 continue;
         }
-        uint32_t px = flat_px;
+        uint32_t px = c->flat_px;
         if (weights) {
             int64_t b1, b2;
             if (persp == MOTE__PERSP_SUBSPAN) {
                 if (seg_left == 0) {
-                    int n = MOTE__MIN(seg_len, x1 - 1 - x);
+                    int n = MOTE__MIN(c->seg_len, x1 - 1 - x);
                     uint64_t r = mote__recip(q, shift);
                     b1 = mote__weight(p1, shift, r);
                     b2 = mote__weight(p2, shift, r);
@@ -293,18 +277,18 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
                 b2 = mote__weight(p2, shift, r);
             }
             if (shade == MOTE__SHADE_MONO) {
-                int64_t sm = mote__lerp2(s0r, d1r, d2r, b1, b2);
+                int64_t sm = mote__lerp2(c->s0r, c->d1r, c->d2r, b1, b2);
                 sr = sg = sb = sm < 0 ? 0u : (uint32_t)sm;
             } else if (shade == MOTE__SHADE_RGB) {
-                sr = (uint32_t)mote__lerp2(s0r, d1r, d2r, b1, b2);
-                sg = (uint32_t)mote__lerp2(s0g, d1g, d2g, b1, b2);
-                sb = (uint32_t)mote__lerp2(s0b, d1b, d2b, b1, b2);
+                sr = (uint32_t)mote__lerp2(c->s0r, c->d1r, c->d2r, b1, b2);
+                sg = (uint32_t)mote__lerp2(c->s0g, c->d1g, c->d2g, b1, b2);
+                sb = (uint32_t)mote__lerp2(c->s0b, c->d1b, c->d2b, b1, b2);
             }
             if (tex) {
-                uint32_t c[3];
-                mote__sample(&tx, tex == MOTE__TEX_BILINEAR, mote__lerp2(u0, du1, du2, b1, b2),
-                             mote__lerp2(v0, dv1, dv2, b1, b2), c);
-                px = mote__pack(fmt, mote__modulate(c[0], sr), mote__modulate(c[1], sg), mote__modulate(c[2], sb));
+                uint32_t t[3];
+                mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, mote__lerp2(c->u0, c->du1, c->du2, b1, b2),
+                             mote__lerp2(c->v0, c->dv1, c->dv2, b1, b2), t);
+                px = mote__pack(fmt, mote__modulate(t[0], sr), mote__modulate(t[1], sg), mote__modulate(t[2], sb));
             } else {
                 px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
             }
@@ -318,7 +302,87 @@ MOTE__INLINE void mote__span_body(const mote__tri *t, const mote__target *tg, in
         }
         written++;
     }
-    tg->counts->tested += (uint64_t)(x1 - x0);
+    return written;
+}
+
+/* A whole triangle inside region r: its constants once, then row by row
+ * the edge walk and the pixel loop. tfmt: the texture's format when known
+ * at compile time (the specialised variants take RGBA8888 textures),
+ * MOTE_FORMAT_DEFAULT to read it. */
+MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mote__rect r, int F,
+                                  const int tex, const mote_format tfmt, const int shade, const int persp,
+                                  const int dsel, const int dwrite, const mote_format fmt)
+{
+    mote__walk w;
+    if (!mote__walk_begin(&w, t, r, F))
+        return;
+    const mote__raster_state *rs = t->rs;
+    const bool weights = shade != MOTE__SHADE_FLAT || tex;
+    mote__fill_ctx c;
+    memset(&c, 0, sizeof c);
+    c.zdx = t->zdx;
+    c.p1dx = t->p1dx;
+    c.p2dx = t->p2dx;
+    c.qdx = t->qdx;
+    c.shift = t->shift;
+    c.s0r = t->s0[0], c.s0g = t->s0[1], c.s0b = t->s0[2];
+    c.d1r = t->ds1[0], c.d1g = t->ds1[1], c.d1b = t->ds1[2];
+    c.d2r = t->ds2[0], c.d2g = t->ds2[1], c.d2b = t->ds2[2];
+    c.u0 = t->u0, c.du1 = t->du1, c.du2 = t->du2, c.v0 = t->v0, c.dv1 = t->dv1, c.dv2 = t->dv2;
+    /* without Gouraud the shade is the triangle's; without a texture too,
+     * the pixel value is one constant */
+    c.sr = mote__clamp_shade(c.s0r);
+    c.sg = mote__clamp_shade(c.s0g);
+    c.sb = mote__clamp_shade(c.s0b);
+    c.flat_px = mote__pack(fmt, mote__modulate(255, c.sr), mote__modulate(255, c.sg), mote__modulate(255, c.sb));
+    if (tex) {
+        c.tx.pixels = (const uint8_t *)rs->texture->pixels;
+        c.tx.format = tfmt != MOTE_FORMAT_DEFAULT ? tfmt : rs->texture->format;
+        c.tx.stride = rs->tex_stride;
+        c.tx.w = rs->tex_w;
+        c.tx.h = rs->tex_h;
+        c.tx.wrap_u = rs->wrap_u;
+        c.tx.wrap_v = rs->wrap_v;
+        c.tx.pow2_repeat = rs->pow2_repeat;
+    }
+    c.test = rs->depth_test;
+    c.seg_len = 1 << rs->subspan_log2;
+    const int64_t zdy = t->zdy, p1dy = t->p1dy, p2dy = t->p2dy, qdy = t->qdy;
+    uint8_t *const color = tg->color;
+    void *const depthbuf = tg->depth;
+    const int stride = tg->stride, width = tg->width, ty0 = tg->y0;
+    /* the planes at column ox of the current row, stepped down row by row
+     * (unsigned: exact modulo 2^64, see mote__plane_at) */
+    const int64_t dy0 = w.y - t->oy;
+    uint64_t zr = (uint64_t)mote__plane_at(t->z, 0, zdy, 0, dy0);
+    uint64_t p1r = 0, p2r = 0, qr = 0;
+    if (weights) {
+        p1r = (uint64_t)mote__plane_at(t->p1, 0, p1dy, 0, dy0);
+        p2r = (uint64_t)mote__plane_at(t->p2, 0, p2dy, 0, dy0);
+        qr = (uint64_t)mote__plane_at(t->q, 0, qdy, 0, dy0);
+    }
+    const int ox = t->ox;
+    uint64_t tested = 0;
+    uint32_t written = 0;
+    for (; w.y < w.yend; zr += (uint64_t)zdy, p1r += (uint64_t)p1dy, p2r += (uint64_t)p2dy, qr += (uint64_t)qdy) {
+        const int y = w.y;
+        int x0, x1;
+        mote__walk_row(&w, &x0, &x1);
+        if (x0 >= x1)
+            continue;
+        const int64_t dx0 = x0 - ox;
+        const size_t drow = (size_t)(y - ty0) * (size_t)width;
+        written += mote__pixels(&c, color + (size_t)(y - ty0) * (size_t)stride,
+                                dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
+                                dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
+                                mote__plane_at((int64_t)zr, c.zdx, 0, dx0, 0),
+                                weights ? mote__plane_at((int64_t)p1r, c.p1dx, 0, dx0, 0) : 0,
+                                weights ? mote__plane_at((int64_t)p2r, c.p2dx, 0, dx0, 0) : 0,
+                                weights ? mote__plane_at((int64_t)qr, c.qdx, 0, dx0, 0) : 0,
+                                tex, shade, persp, dsel, dwrite, fmt);
+        tested += (uint64_t)(x1 - x0);
+    }
+    tg->counts->tested += tested;
     tg->counts->written += written;
 }
 
@@ -332,11 +396,11 @@ static int mote__dsel(mote_depth_format f)
     return f == MOTE_DEPTH_FORMAT_16 ? MOTE__D_16 : f == MOTE_DEPTH_FORMAT_32 ? MOTE__D_32 : MOTE__D_NONE;
 }
 
-void mote__span_generic(const mote__tri *t, const mote__target *tg, int y, int x0, int x1)
+void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
 {
     const mote__raster_state *rs = t->rs;
     int dsel = (rs->depth_test || rs->depth_write) ? mote__dsel(tg->depth_format) : MOTE__D_NONE;
-    mote__span_body(t, tg, y, x0, x1, rs->tex, MOTE_FORMAT_DEFAULT, t->shade, rs->persp, dsel,
+    mote__fill_body(t, tg, r, F, rs->tex, MOTE_FORMAT_DEFAULT, t->shade, rs->persp, dsel,
                     rs->depth_write, tg->format);
 }
 
@@ -350,26 +414,26 @@ void mote__span_generic(const mote__tri *t, const mote__target *tg, int y, int x
 #define MOTE__SHADES(X, T) MOTE__PERSPS(X, T, 0) MOTE__PERSPS(X, T, 1) MOTE__PERSPS(X, T, 2)
 #define MOTE__ALL(X) MOTE__SHADES(X, 0) MOTE__SHADES(X, 1) MOTE__SHADES(X, 2)
 
-#define MOTE__DEFINE(T, S, P, D, F)                                                        \
-    static void mote__span_##T##S##P##D##_##F(const mote__tri *t, const mote__target *tg,  \
-                                              int y, int x0, int x1)                       \
-    {                                                                                      \
-        mote__span_body(t, tg, y, x0, x1, T, MOTE_FORMAT_RGBA8888, S, P, D, 1, MOTE_FORMAT_##F); \
+#define MOTE__DEFINE(T, S, P, D, F)                                                         \
+    static void mote__fill_##T##S##P##D##_##F(const mote__tri *t, const mote__target *tg,   \
+                                              mote__rect r, int bits)                       \
+    {                                                                                       \
+        mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, 1, MOTE_FORMAT_##F); \
     }
 MOTE__ALL(MOTE__DEFINE)
 #undef MOTE__DEFINE
 
-#define MOTE__ENTRY(T, S, P, D, F) mote__span_##T##S##P##D##_##F,
-static const mote__span_fn mote__span_table[] = {MOTE__ALL(MOTE__ENTRY)};
+#define MOTE__ENTRY(T, S, P, D, F) mote__fill_##T##S##P##D##_##F,
+static const mote__fill_fn mote__fill_table[] = {MOTE__ALL(MOTE__ENTRY)};
 #undef MOTE__ENTRY
-typedef char mote__span_table_size_check[sizeof mote__span_table / sizeof mote__span_table[0]
+typedef char mote__fill_table_size_check[sizeof mote__fill_table / sizeof mote__fill_table[0]
                                          == 3 * MOTE__SHADE_COUNT * 3 * 3 * 2 ? 1 : -1];
 #endif
 
-void mote__span_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format)
+void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format)
 {
     for (int s = 0; s < MOTE__SHADE_COUNT; s++) {
-        rs->span[s] = mote__span_generic;
+        rs->fill[s] = mote__fill_generic;
 #if MOTE_SPECIALISE_SPANS
         int dsel = mote__dsel(depth_format);
         bool depth_on = rs->depth_test && rs->depth_write;
@@ -379,7 +443,7 @@ void mote__span_select(mote__raster_state *rs, mote_format format, mote_depth_fo
         if (f >= 0 && tex_ok && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
             int d = depth_on ? dsel : MOTE__D_NONE;
             int idx = ((((int)rs->tex * MOTE__SHADE_COUNT + s) * 3 + (int)rs->persp) * 3 + d) * 2 + f;
-            rs->span[s] = mote__span_table[idx];
+            rs->fill[s] = mote__fill_table[idx];
         }
 #else
         (void)format;
