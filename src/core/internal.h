@@ -80,6 +80,9 @@ typedef struct mote__raster_state {
     bool depth_test, depth_write;
 } mote__raster_state;
 
+/* Interpolated attributes of a triangle, by index. */
+enum { MOTE__A_R, MOTE__A_G, MOTE__A_B, MOTE__A_U, MOTE__A_V, MOTE__ATTRS };
+
 /* A set-up triangle. Planes are evaluated at pixel centres relative to the
  * origin pixel (ox, oy) so that values stay small; stepping is exact integer
  * addition, so any region of the triangle gives the same pixels. */
@@ -90,11 +93,13 @@ typedef struct mote__tri {
     int16_t ox, oy;
     int8_t shift;                 /* brings Q under 2^31 */
     uint8_t shade;                /* mote__shade_kind */
-    /* perspective barycentrics: P1 = E1 q1, P2 = E2 q2, Q = sum Ei qi */
-    int64_t p1, p1dx, p1dy, p2, p2dx, p2dy, q, qdx, qdy;
+    int8_t rbits;                 /* K of the reciprocal r = 2^K / (Q >> shift) */
+    int64_t q, qdx, qdy;          /* Q = sum Ei qi, qi ~ 1/wi (see setup.c) */
     int64_t z, zdx, zdy;          /* depth, 24.16 */
-    int32_t s0[3], ds1[3], ds2[3];/* shade at vertex 0 and differences */
-    int64_t u0, du1, du2, v0, dv1, dv2; /* texels, 16.16 */
+    /* attributes: values at vertex 0 (shades in 2^24, texels in 16.16) and
+     * numerator planes N (value, x step, y step): A = a0 + N r / 2^(K-10) */
+    int64_t a0[MOTE__ATTRS];
+    int64_t n[MOTE__ATTRS][3];
 } mote__tri;
 
 /* Pixels a region tested (reached the depth test) and wrote. */

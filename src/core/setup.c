@@ -36,6 +36,31 @@ static int mote__bitlen(uint64_t v)
 
 static int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
 
+/* floor(a b / 2^s) for 0 <= s < 64, exact (128-bit product), modulo 2^64
+ * when it does not fit: the same bits on every target. */
+static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
+{
+#if defined(__SIZEOF_INT128__)
+    __extension__ typedef __int128 mote__i128;
+    return (int64_t)(uint64_t)(((mote__i128)a * b) >> s);
+#else
+    bool neg = (a < 0) != (b < 0);
+    uint64_t x = a < 0 ? 0u - (uint64_t)a : (uint64_t)a, y = b < 0 ? 0u - (uint64_t)b : (uint64_t)b;
+    /* |a b| as hi:lo from 32-bit halves */
+    uint64_t xl = x & 0xffffffffu, xh = x >> 32, yl = y & 0xffffffffu, yh = y >> 32;
+    uint64_t ll = xl * yl, lh = xl * yh, hl = xh * yl, hh = xh * yh;
+    uint64_t mid = (ll >> 32) + (lh & 0xffffffffu) + (hl & 0xffffffffu);
+    uint64_t lo = (ll & 0xffffffffu) | (mid << 32);
+    uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
+    if (neg) {                    /* two's complement of the 128-bit value */
+        lo = ~lo + 1u;
+        hi = ~hi + (lo == 0 ? 1u : 0u);
+    }
+    /* arithmetic shift of hi:lo by s, low 64 bits */
+    return (int64_t)(s == 0 ? lo : (lo >> s) | (hi << (64 - s)));
+#endif
+}
+
 /* round(f) for a float that fits in int64, halves away from zero */
 static int64_t mote__round_f(float f)
 {
@@ -183,28 +208,24 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                     q[i] = 1;
             }
         }
-        t->p1 = pe[1] * q[1];
-        t->p1dx = pedx[1] * q[1];
-        t->p1dy = pedy[1] * q[1];
-        t->p2 = pe[2] * q[2];
-        t->p2dx = pedx[2] * q[2];
-        t->p2dy = pedy[2] * q[2];
-        t->q = pe[0] * q[0] + t->p1 + t->p2;
-        t->qdx = pedx[0] * q[0] + t->p1dx + t->p2dx;
-        t->qdy = pedy[0] * q[0] + t->p1dy + t->p2dy;
+        const int64_t p1[3] = {pe[1] * q[1], pedx[1] * q[1], pedy[1] * q[1]};
+        const int64_t p2[3] = {pe[2] * q[2], pedx[2] * q[2], pedy[2] * q[2]};
+        t->q = pe[0] * q[0] + p1[0] + p2[0];
+        t->qdx = pedx[0] * q[0] + p1[1] + p2[1];
+        t->qdy = pedy[0] * q[0] + p1[2] + p2[2];
         int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
+        /* attribute differences to vertex 0 */
+        int64_t d1[MOTE__ATTRS] = {0}, d2[MOTE__ATTRS] = {0};
         bool grey = true, constant = true;
         for (int c = 0; c < 3; c++) {
             int32_t s0 = mote__shade_fixed(v[0]->s[c]);
-            int32_t s1 = mote__shade_fixed(v[1]->s[c]);
-            int32_t s2 = mote__shade_fixed(v[2]->s[c]);
-            t->s0[c] = s0;
-            t->ds1[c] = s1 - s0;
-            t->ds2[c] = s2 - s0;
-            grey = grey && s0 == t->s0[0] && t->ds1[c] == t->ds1[0] && t->ds2[c] == t->ds2[0];
-            constant = constant && t->ds1[c] == 0 && t->ds2[c] == 0;
+            t->a0[c] = s0;
+            d1[c] = mote__shade_fixed(v[1]->s[c]) - s0;
+            d2[c] = mote__shade_fixed(v[2]->s[c]) - s0;
+            grey = grey && s0 == t->a0[0] && d1[c] == d1[0] && d2[c] == d2[0];
+            constant = constant && d1[c] == 0 && d2[c] == 0;
         }
         if (rs->gouraud && !constant)
             t->shade = grey ? MOTE__SHADE_MONO : MOTE__SHADE_RGB;
@@ -225,18 +246,32 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                 int64_t period = ((int64_t)rs->tex_h << 16) * (rs->wrap_v == MOTE_WRAP_MIRROR ? 2 : 1);
                 pv = mote__floor_div64(vmin, period) * period;
             }
-            t->u0 = U[0] - pu;
-            t->du1 = U[1] - U[0];
-            t->du2 = U[2] - U[0];
-            t->v0 = V[0] - pv;
-            t->dv1 = V[1] - V[0];
-            t->dv2 = V[2] - V[0];
+            t->a0[MOTE__A_U] = U[0] - pu;
+            d1[MOTE__A_U] = U[1] - U[0];
+            d2[MOTE__A_U] = U[2] - U[0];
+            t->a0[MOTE__A_V] = V[0] - pv;
+            d1[MOTE__A_V] = V[1] - V[0];
+            d2[MOTE__A_V] = V[2] - V[0];
         }
+        /* Numerator planes: A = a0 + (d1 P1 + d2 P2) / Q. With
+         * N = (d1 P1 + d2 P2) / 2^(shift + 10) as an integer plane (so a
+         * pixel gets the same value whatever row or region reaches it; its
+         * floored steps drift under 2 units a pixel, 2^11 / (Q >> shift) of
+         * an attribute unit) and r = 2^K / (Q >> shift),
+         * A = a0 + (N >> 10) r / 2^(K - 20). N r is about (A - a0) 2^(K-20),
+         * so K is 54 (r keeps >= 23 bits, Q >> shift being below 2^31)
+         * unless an attribute spans more than 2^27 units. */
+        int64_t dmax = 0;
+        for (int a = 0; a < MOTE__ATTRS; a++) {
+            dmax = MOTE__MAX(dmax, MOTE__MAX(mote__abs64(d1[a]), mote__abs64(d2[a])));
+            for (int j = 0; j < 3; j++)
+                t->n[a][j] = (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], t->shift + 10)
+                                       + (uint64_t)mote__mul_shift(d2[a], p2[j], t->shift + 10));
+        }
+        t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen((uint64_t)dmax) - 27, 0), 20));
     } else {
-        for (int c = 0; c < 3; c++) {
-            t->s0[c] = mote__shade_fixed(v[0]->s[c]);
-            t->ds1[c] = t->ds2[c] = 0;
-        }
+        for (int c = 0; c < 3; c++)
+            t->a0[c] = mote__shade_fixed(v[0]->s[c]);
     }
 
     if (rs->depth_test || rs->depth_write) {

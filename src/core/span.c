@@ -137,20 +137,18 @@ MOTE__INLINE int64_t mote__plane_at(int64_t base, int64_t stepx, int64_t stepy, 
     return (int64_t)((uint64_t)base + (uint64_t)stepx * (uint64_t)dx + (uint64_t)stepy * (uint64_t)dy);
 }
 
-/* 2^62 / (q >> shift): the one division per pixel. */
-MOTE__INLINE uint64_t mote__recip(int64_t q, int shift)
+/* 2^k / (q >> shift): the one division per pixel. */
+MOTE__INLINE uint64_t mote__recip_k(int64_t q, int shift, int k)
 {
-    uint64_t q32 = (uint64_t)(q >> shift);
-    return ((uint64_t)1 << 62) / (q32 ? q32 : 1);
+    uint64_t qs = (uint64_t)(q >> shift);
+    return ((uint64_t)1 << k) / (qs ? qs : 1);
 }
 
-/* A perspective weight P/Q (2^20 = 1), given r = recip(Q). P >= 0 at every
- * pixel the rasteriser hands over: it is E q with the exact edge function
- * E, which is >= 0 at a covered pixel centre (floored by setup, still
- * >= 0). */
-MOTE__INLINE int64_t mote__weight(int64_t p, int shift, uint64_t r)
+/* An attribute from its numerator plane value n and r (see setup.c): one
+ * multiplication. Modular, so a hostile triangle gives garbage, not UB. */
+MOTE__INLINE int64_t mote__attr(int64_t a0, int64_t n, uint64_t r, int k)
 {
-    return (int64_t)(((uint64_t)(p >> shift) * r) >> (62 - MOTE__WEIGHT_BITS));
+    return a0 + ((int64_t)((uint64_t)(n >> 10) * r) >> (k - 20));
 }
 
 /* Packs a colour for a format: one store per pixel in the loop. */
@@ -178,13 +176,12 @@ MOTE__INLINE void mote__store(uint8_t *row, int x, mote_format fmt, uint32_t v)
         ((uint16_t *)(void *)row)[x] = (uint16_t)v;
 }
 
-/* (c * s + 2^23) >> 24 for a channel c <= 255 and a shade s in [-1, 2^24]
- * (a Gouraud shade may come out one below zero, see below); unsigned, since
- * 255 * 2^24 does not fit in int32. */
+/* (c * s + 2^23) >> 24 for a channel c <= 255 and a shade s in [0, 2^24]
+ * (callers clamp an interpolated shade: rounding can take it a little out
+ * of range); unsigned, since 255 * 2^24 does not fit in int32. */
 MOTE__INLINE uint32_t mote__modulate(uint32_t c, uint32_t s)
 {
-    uint32_t sp = (int32_t)s < 0 ? 0u : s;
-    return (c * sp + (1u << 23)) >> 24;
+    return (c * s + (1u << 23)) >> 24;
 }
 
 MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
@@ -192,21 +189,12 @@ MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
     return v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
 }
 
-/* s0 + (b1 d1 + b2 d2) >> 20: b1, b2 >= 0 and b1 + b2 <= 1 inside the
- * triangle, so this is a convex combination of in-range values, floored: a
- * shade comes out at worst -1, which mote__modulate maps to 0. */
-MOTE__INLINE int64_t mote__lerp2(int64_t a0, int64_t d1, int64_t d2, int64_t b1, int64_t b2)
-{
-    return a0 + ((b1 * d1 + b2 * d2) >> MOTE__WEIGHT_BITS);
-}
-
 /* What the pixel loop needs of a triangle, read once per triangle into
  * locals (see the top of the file). */
 typedef struct mote__fill_ctx {
-    int64_t zdx, p1dx, p2dx, qdx;
-    int shift;
-    int64_t s0r, s0g, s0b, d1r, d1g, d1b, d2r, d2g, d2b;
-    int64_t u0, du1, du2, v0, dv1, dv2;
+    int64_t zdx, qdx, ndx[MOTE__ATTRS];
+    int shift, k;
+    int64_t a0[MOTE__ATTRS];
     uint32_t flat_px;             /* the pixel when nothing varies */
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
     mote__tex_view tx;
@@ -214,25 +202,29 @@ typedef struct mote__fill_ctx {
     int seg_len;
 } mote__fill_ctx;
 
-/* One row: pixels [x0, x1) with the planes' values at x0. Returns the
- * number of pixels written. */
+/* One row: pixels [x0, x1) given the planes' values at x0 (z, Q and the
+ * numerator planes n[]). Returns the number of pixels written. */
 MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
-                                   int x0, int x1, int64_t z, int64_t p1, int64_t p2, int64_t q,
+                                   int x0, int x1, int64_t z, int64_t q, const int64_t n[MOTE__ATTRS],
                                    const int tex, const int shade, const int persp,
                                    const int dsel, const int dwrite, const mote_format fmt)
 {
-    const bool weights = shade != MOTE__SHADE_FLAT || tex;
-    const int64_t zdx = c->zdx, p1dx = c->p1dx, p2dx = c->p2dx, qdx = c->qdx;
-    const int shift = c->shift;
+    const bool varying = shade != MOTE__SHADE_FLAT || tex;
+    const int64_t zdx = c->zdx, qdx = c->qdx;
+    const int shift = c->shift, k = c->k;
+    int64_t nr = n[MOTE__A_R], ng = n[MOTE__A_G], nb = n[MOTE__A_B], nu = n[MOTE__A_U], nv = n[MOTE__A_V];
+    const int64_t nrdx = c->ndx[MOTE__A_R], ngdx = c->ndx[MOTE__A_G], nbdx = c->ndx[MOTE__A_B];
+    const int64_t nudx = c->ndx[MOTE__A_U], nvdx = c->ndx[MOTE__A_V];
     uint32_t sr = c->sr, sg = c->sg, sb = c->sb;
-    /* sub-span state: weights at the segment start and per-pixel steps, 2^12 finer */
-    int64_t sb1 = 0, sb2 = 0, sd1 = 0, sd2 = 0;
-    int seg_left = 0;
     /* affine: all qi are 1, so Q is constant and so is its reciprocal */
-    const uint64_t affine_r = (weights && persp == MOTE__PERSP_AFFINE) ? mote__recip(q, shift) : 0;
+    const uint64_t affine_r = (varying && persp == MOTE__PERSP_AFFINE) ? mote__recip_k(q, shift, k) : 0;
+    /* sub-span: r exact at the ends of each segment, linear between */
+    uint64_t seg_r = 0;
+    int64_t seg_step = 0;
+    int seg_left = 0;
     uint32_t written = 0;
 
-    for (int x = x0; x < x1; x++, z += zdx, p1 += p1dx, p2 += p2dx, q += qdx) {
+    for (int x = x0; x < x1; x++, z += zdx, q += qdx, nr += nrdx, ng += ngdx, nb += nbdx, nu += nudx, nv += nvdx) {
         uint32_t depth = 0;
         if (dsel != MOTE__D_NONE) {
             /* z is a convex combination of in-range depths: only rounding
@@ -247,47 +239,34 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 continue;
         }
         uint32_t px = c->flat_px;
-        if (weights) {
-            int64_t b1, b2;
+        if (varying) {
+            uint64_t r;
             if (persp == MOTE__PERSP_SUBSPAN) {
                 if (seg_left == 0) {
-                    int n = MOTE__MIN(c->seg_len, x1 - 1 - x);
-                    uint64_t r = mote__recip(q, shift);
-                    b1 = mote__weight(p1, shift, r);
-                    b2 = mote__weight(p2, shift, r);
-                    if (n > 0) {
-                        uint64_t re = mote__recip(mote__plane_at(q, qdx, 0, n, 0), shift);
-                        int64_t e1 = mote__weight(mote__plane_at(p1, p1dx, 0, n, 0), shift, re);
-                        int64_t e2 = mote__weight(mote__plane_at(p2, p2dx, 0, n, 0), shift, re);
-                        sd1 = ((e1 - b1) * 4096) / n;
-                        sd2 = ((e2 - b2) * 4096) / n;
-                    }
-                    sb1 = b1 * 4096;
-                    sb2 = b2 * 4096;
-                    seg_left = n > 0 ? n : 1;
+                    int m = MOTE__MIN(c->seg_len, x1 - 1 - x);
+                    seg_r = mote__recip_k(q, shift, k);
+                    seg_step = m > 0 ? ((int64_t)mote__recip_k(mote__plane_at(q, qdx, 0, m, 0), shift, k)
+                                        - (int64_t)seg_r) / m
+                                     : 0;
+                    seg_left = m > 0 ? m : 1;
                 }
-                b1 = sb1 >> 12;
-                b2 = sb2 >> 12;
-                sb1 += sd1;
-                sb2 += sd2;
+                r = seg_r;
+                seg_r += (uint64_t)seg_step;
                 seg_left--;
             } else {
-                uint64_t r = persp == MOTE__PERSP_AFFINE ? affine_r : mote__recip(q, shift);
-                b1 = mote__weight(p1, shift, r);
-                b2 = mote__weight(p2, shift, r);
+                r = persp == MOTE__PERSP_AFFINE ? affine_r : mote__recip_k(q, shift, k);
             }
             if (shade == MOTE__SHADE_MONO) {
-                int64_t sm = mote__lerp2(c->s0r, c->d1r, c->d2r, b1, b2);
-                sr = sg = sb = sm < 0 ? 0u : (uint32_t)sm;
+                sr = sg = sb = mote__clamp_shade(mote__attr(c->a0[MOTE__A_R], nr, r, k));
             } else if (shade == MOTE__SHADE_RGB) {
-                sr = (uint32_t)mote__lerp2(c->s0r, c->d1r, c->d2r, b1, b2);
-                sg = (uint32_t)mote__lerp2(c->s0g, c->d1g, c->d2g, b1, b2);
-                sb = (uint32_t)mote__lerp2(c->s0b, c->d1b, c->d2b, b1, b2);
+                sr = mote__clamp_shade(mote__attr(c->a0[MOTE__A_R], nr, r, k));
+                sg = mote__clamp_shade(mote__attr(c->a0[MOTE__A_G], ng, r, k));
+                sb = mote__clamp_shade(mote__attr(c->a0[MOTE__A_B], nb, r, k));
             }
             if (tex) {
                 uint32_t t[3];
-                mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, mote__lerp2(c->u0, c->du1, c->du2, b1, b2),
-                             mote__lerp2(c->v0, c->dv1, c->dv2, b1, b2), t);
+                mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, mote__attr(c->a0[MOTE__A_U], nu, r, k),
+                             mote__attr(c->a0[MOTE__A_V], nv, r, k), t);
                 px = mote__pack(fmt, mote__modulate(t[0], sr), mote__modulate(t[1], sg), mote__modulate(t[2], sb));
             } else {
                 px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
@@ -317,23 +296,22 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     if (!mote__walk_begin(&w, t, r, F))
         return;
     const mote__raster_state *rs = t->rs;
-    const bool weights = shade != MOTE__SHADE_FLAT || tex;
+    const bool varying = shade != MOTE__SHADE_FLAT || tex;
     mote__fill_ctx c;
     memset(&c, 0, sizeof c);
     c.zdx = t->zdx;
-    c.p1dx = t->p1dx;
-    c.p2dx = t->p2dx;
     c.qdx = t->qdx;
     c.shift = t->shift;
-    c.s0r = t->s0[0], c.s0g = t->s0[1], c.s0b = t->s0[2];
-    c.d1r = t->ds1[0], c.d1g = t->ds1[1], c.d1b = t->ds1[2];
-    c.d2r = t->ds2[0], c.d2g = t->ds2[1], c.d2b = t->ds2[2];
-    c.u0 = t->u0, c.du1 = t->du1, c.du2 = t->du2, c.v0 = t->v0, c.dv1 = t->dv1, c.dv2 = t->dv2;
+    c.k = t->rbits;
+    for (int a = 0; a < MOTE__ATTRS; a++) {
+        c.a0[a] = t->a0[a];
+        c.ndx[a] = t->n[a][1];
+    }
     /* without Gouraud the shade is the triangle's; without a texture too,
      * the pixel value is one constant */
-    c.sr = mote__clamp_shade(c.s0r);
-    c.sg = mote__clamp_shade(c.s0g);
-    c.sb = mote__clamp_shade(c.s0b);
+    c.sr = mote__clamp_shade(c.a0[MOTE__A_R]);
+    c.sg = mote__clamp_shade(c.a0[MOTE__A_G]);
+    c.sb = mote__clamp_shade(c.a0[MOTE__A_B]);
     c.flat_px = mote__pack(fmt, mote__modulate(255, c.sr), mote__modulate(255, c.sg), mote__modulate(255, c.sb));
     if (tex) {
         c.tx.pixels = (const uint8_t *)rs->texture->pixels;
@@ -347,40 +325,45 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     }
     c.test = rs->depth_test;
     c.seg_len = 1 << rs->subspan_log2;
-    const int64_t zdy = t->zdy, p1dy = t->p1dy, p2dy = t->p2dy, qdy = t->qdy;
     uint8_t *const color = tg->color;
     void *const depthbuf = tg->depth;
     const int stride = tg->stride, width = tg->width, ty0 = tg->y0;
     /* the planes at column ox of the current row, stepped down row by row
      * (unsigned: exact modulo 2^64, see mote__plane_at) */
     const int64_t dy0 = w.y - t->oy;
+    const int64_t zdy = t->zdy, qdy = t->qdy;
     uint64_t zr = (uint64_t)mote__plane_at(t->z, 0, zdy, 0, dy0);
-    uint64_t p1r = 0, p2r = 0, qr = 0;
-    if (weights) {
-        p1r = (uint64_t)mote__plane_at(t->p1, 0, p1dy, 0, dy0);
-        p2r = (uint64_t)mote__plane_at(t->p2, 0, p2dy, 0, dy0);
+    uint64_t qr = 0, nrow[MOTE__ATTRS] = {0};
+    if (varying) {
         qr = (uint64_t)mote__plane_at(t->q, 0, qdy, 0, dy0);
+        for (int a = 0; a < MOTE__ATTRS; a++)
+            nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], 0, t->n[a][2], 0, dy0);
     }
     const int ox = t->ox;
     uint64_t tested = 0;
     uint32_t written = 0;
-    for (; w.y < w.yend; zr += (uint64_t)zdy, p1r += (uint64_t)p1dy, p2r += (uint64_t)p2dy, qr += (uint64_t)qdy) {
+    for (; w.y < w.yend; zr += (uint64_t)zdy, qr += (uint64_t)qdy) {
         const int y = w.y;
         int x0, x1;
         mote__walk_row(&w, &x0, &x1);
-        if (x0 >= x1)
-            continue;
-        const int64_t dx0 = x0 - ox;
-        const size_t drow = (size_t)(y - ty0) * (size_t)width;
-        written += mote__pixels(&c, color + (size_t)(y - ty0) * (size_t)stride,
-                                dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
-                                dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
-                                mote__plane_at((int64_t)zr, c.zdx, 0, dx0, 0),
-                                weights ? mote__plane_at((int64_t)p1r, c.p1dx, 0, dx0, 0) : 0,
-                                weights ? mote__plane_at((int64_t)p2r, c.p2dx, 0, dx0, 0) : 0,
-                                weights ? mote__plane_at((int64_t)qr, c.qdx, 0, dx0, 0) : 0,
-                                tex, shade, persp, dsel, dwrite, fmt);
-        tested += (uint64_t)(x1 - x0);
+        if (x0 < x1) {
+            const int64_t dx0 = x0 - ox;
+            const size_t drow = (size_t)(y - ty0) * (size_t)width;
+            int64_t n[MOTE__ATTRS] = {0};
+            if (varying)
+                for (int a = 0; a < MOTE__ATTRS; a++)
+                    n[a] = mote__plane_at((int64_t)nrow[a], c.ndx[a], 0, dx0, 0);
+            written += mote__pixels(&c, color + (size_t)(y - ty0) * (size_t)stride,
+                                    dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
+                                    dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
+                                    mote__plane_at((int64_t)zr, c.zdx, 0, dx0, 0),
+                                    varying ? mote__plane_at((int64_t)qr, c.qdx, 0, dx0, 0) : 0, n,
+                                    tex, shade, persp, dsel, dwrite, fmt);
+            tested += (uint64_t)(x1 - x0);
+        }
+        if (varying)
+            for (int a = 0; a < MOTE__ATTRS; a++)
+                nrow[a] += (uint64_t)t->n[a][2];
     }
     tg->counts->tested += tested;
     tg->counts->written += written;
