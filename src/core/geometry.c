@@ -5,21 +5,36 @@
  */
 #include "internal.h"
 
-/* A transformed vertex as cached per draw. */
+/* A transformed vertex as cached per draw, with what every triangle using
+ * it would otherwise recompute per corner: its outcode and, when it is
+ * inside every clip plane, its snapped screen position. */
 typedef struct mote__tvert {
     mote__cvert c;
     float world[3];
     float normal[3];              /* world-space, normalised */
+    int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
+    uint16_t outcode;             /* see mote__outcode */
     uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
     uint32_t index;
 } mote__tvert;
 
 /* Direct-mapped vertex cache used without an arena (a power of two; each
- * entry is about 90 bytes of stack). */
+ * entry is about 80 bytes of stack). */
 #ifndef MOTE_VERTEX_CACHE
 #define MOTE_VERTEX_CACHE 32
 #endif
 #define MOTE__SMALL_CACHE MOTE_VERTEX_CACHE
+
+/* A light with what does not depend on the vertex worked out once per draw. */
+typedef struct mote__light_k {
+    mote_light_type type;
+    float col[3];                 /* colour, white for {0,0,0} */
+    float k;                      /* intensity, 1 for 0 */
+    float kcol[3];                /* k * col, the directional and point term's factor */
+    float L[3];                   /* point: position; otherwise toward the light */
+    float rlen;                   /* 1/|L| for directional and hemispheric */
+    const float *ground;
+} mote__light_k;
 
 typedef struct mote__ctx {
     mote_device *dev;
@@ -28,49 +43,68 @@ typedef struct mote__ctx {
     float mvp[16], world[16], nrm[9];
     float color[3];               /* material colour 0..1 */
     float uscale, vscale, uoff, voff;
+    float tex_w, tex_h;
     bool lit, flat;
+    bool cull_cw, cull_ccw;       /* which screen windings are culled */
     mote__raster_state *rs;
     mote__sink_kind sink;
     const mote__target *tg;
     mote__rect region;
     float guard_x, guard_y;       /* guard band in NDC units */
+    int64_t snap_hw, snap_hh, snap_lim;
     mote__tvert *cache;
-    uint32_t cache_mask;          /* 0: full cache indexed by vertex */
+    uint32_t cache_mask;          /* 0: full cache indexed by vertex, filled up front */
+    int light_count;
+    mote__light_k lights[MOTE_MAX_LIGHTS];
 } mote__ctx;
 
 /* ---- lighting ------------------------------------------------------------ */
 
-static void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
+static void mote__prepare_lights(mote__ctx *cx)
 {
     const mote_frame_desc *f = &cx->dev->frame;
-    float acc[3] = {f->ambient[0], f->ambient[1], f->ambient[2]};
+    cx->light_count = 0;
     for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
         const mote_light *l = &f->lights[i];
-        float col[3] = {l->color[0], l->color[1], l->color[2]};
-        if (col[0] == 0.0f && col[1] == 0.0f && col[2] == 0.0f)
-            col[0] = col[1] = col[2] = 1.0f;
-        float k = l->intensity != 0.0f ? l->intensity : 1.0f;
-        float L[3];
-        if (l->type == MOTE_LIGHT_POINT) {
-            L[0] = l->position[0] - p[0];
-            L[1] = l->position[1] - p[1];
-            L[2] = l->position[2] - p[2];
-        } else if (l->type == MOTE_LIGHT_DIRECTIONAL || l->type == MOTE_LIGHT_HEMISPHERIC) {
-            float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
-            L[0] = s * l->direction[0];
-            L[1] = s * l->direction[1];
-            L[2] = s * l->direction[2];
-        } else {
+        if (l->type != MOTE_LIGHT_POINT && l->type != MOTE_LIGHT_DIRECTIONAL
+            && l->type != MOTE_LIGHT_HEMISPHERIC)
             continue;
+        mote__light_k *lk = &cx->lights[cx->light_count++];
+        lk->type = l->type;
+        bool black = l->color[0] == 0.0f && l->color[1] == 0.0f && l->color[2] == 0.0f;
+        lk->k = l->intensity != 0.0f ? l->intensity : 1.0f;
+        for (int c = 0; c < 3; c++) {
+            lk->col[c] = black ? 1.0f : l->color[c];
+            lk->kcol[c] = lk->k * lk->col[c];
         }
-        float ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+        lk->ground = l->ground_color;
+        float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
+        for (int c = 0; c < 3; c++)
+            lk->L[c] = l->type == MOTE_LIGHT_POINT ? l->position[c] : s * l->direction[c];
+        lk->rlen = mote__rsqrtf(lk->L[0] * lk->L[0] + lk->L[1] * lk->L[1] + lk->L[2] * lk->L[2]);
+    }
+}
+
+static void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
+{
+    const float *amb = cx->dev->frame.ambient;
+    float acc[3] = {amb[0], amb[1], amb[2]};
+    for (int i = 0; i < cx->light_count; i++) {
+        const mote__light_k *l = &cx->lights[i];
+        float ndl;
+        if (l->type == MOTE_LIGHT_POINT) {
+            float L[3] = {l->L[0] - p[0], l->L[1] - p[1], l->L[2] - p[2]};
+            ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+        } else {
+            ndl = (n[0] * l->L[0] + n[1] * l->L[1] + n[2] * l->L[2]) * l->rlen;
+        }
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
-                acc[c] += k * (col[c] * w + l->ground_color[c] * (1.0f - w));
+                acc[c] += l->k * (l->col[c] * w + l->ground[c] * (1.0f - w));
         } else if (ndl > 0.0f) {
             for (int c = 0; c < 3; c++)
-                acc[c] += k * col[c] * ndl;
+                acc[c] += l->kcol[c] * ndl;
         }
     }
     for (int c = 0; c < 3; c++) {
@@ -88,69 +122,21 @@ static void mote__normalize(float v[3])
     v[2] *= k;
 }
 
-/* ---- vertices ------------------------------------------------------------ */
-
-static const mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
-{
-    mote__tvert *tv = cx->cache_mask ? &cx->cache[index & cx->cache_mask] : &cx->cache[index];
-    if (tv->state != 0 && tv->index == index)
-        return tv;
-    const mote_vertex *in = &cx->mesh->vertices[index];
-    tv->index = index;
-    float out[4];
-    mote__mat4_point(cx->mvp, in->position, out);
-    tv->c.x = out[0];
-    tv->c.y = out[1];
-    tv->c.z = out[2];
-    tv->c.w = out[3];
-    tv->state = (mote__finite(out[0]) && mote__finite(out[1]) && mote__finite(out[2]) && mote__finite(out[3])) ? 1 : 2;
-    if (cx->lit) {
-        float wp[4];
-        mote__mat4_point(cx->world, in->position, wp);
-        for (int k = 0; k < 3; k++) {
-            tv->world[k] = wp[k];
-            tv->normal[k] = cx->nrm[k * 3 + 0] * in->normal[0] + cx->nrm[k * 3 + 1] * in->normal[1]
-                          + cx->nrm[k * 3 + 2] * in->normal[2];
-        }
-        mote__normalize(tv->normal);
-        if (!cx->flat)
-            mote__light(cx, tv->world, tv->normal, tv->c.s);
-    } else {
-        for (int k = 0; k < 3; k++)
-            tv->c.s[k] = cx->color[k];
-    }
-    if (cx->rs->tex != MOTE__TEX_NONE) {
-        float u = in->uv[0] * cx->uscale + cx->uoff;
-        float v = in->uv[1] * cx->vscale + cx->voff;
-        if (cx->mesh->material.v_origin_bottom)
-            v = 1.0f - v;
-        tv->c.u = u * (float)cx->rs->tex_w;
-        tv->c.v = v * (float)cx->rs->tex_h;
-        if (!mote__finite(tv->c.u) || !mote__finite(tv->c.v) || tv->c.u > 1e9f || tv->c.u < -1e9f
-            || tv->c.v > 1e9f || tv->c.v < -1e9f)
-            tv->state = 2;
-    } else {
-        tv->c.u = tv->c.v = 0.0f;
-    }
-    return tv;
-}
-
 /* ---- clipping ------------------------------------------------------------ */
 
 #define MOTE__CLIP_PLANES 6
 #define MOTE__MAX_POLY (3 + MOTE__CLIP_PLANES)
 
-/* Signed distance to plane p (inside >= 0). */
-static float mote__plane_dist(const mote__ctx *cx, const mote__cvert *v, int p)
+/* Signed distances to the clip planes (inside >= 0). */
+static void mote__plane_dists(const mote__ctx *cx, const mote__cvert *v, float d[MOTE__CLIP_PLANES])
 {
-    switch (p) {
-    case 0: return v->z;                          /* near: z >= 0 */
-    case 1: return v->w - v->z;                   /* far: z <= w */
-    case 2: return v->x + cx->guard_x * v->w;     /* guard band left */
-    case 3: return cx->guard_x * v->w - v->x;     /* right */
-    case 4: return v->y + cx->guard_y * v->w;     /* bottom */
-    default: return cx->guard_y * v->w - v->y;    /* top */
-    }
+    float gx = cx->guard_x * v->w, gy = cx->guard_y * v->w;
+    d[0] = v->z;                  /* near: z >= 0 */
+    d[1] = v->w - v->z;           /* far: z <= w */
+    d[2] = v->x + gx;             /* guard band left */
+    d[3] = gx - v->x;             /* right */
+    d[4] = v->y + gy;             /* bottom */
+    d[5] = gy - v->y;             /* top */
 }
 
 static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote__cvert *out)
@@ -177,10 +163,16 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
     for (int p = 0; p < MOTE__CLIP_PLANES && n > 0; p++) {
         if (!(planes & (1u << p)))
             continue;
+        float dist[MOTE__MAX_POLY];
+        for (int i = 0; i < n; i++) {
+            float d[MOTE__CLIP_PLANES];
+            mote__plane_dists(cx, &poly[i], d);
+            dist[i] = d[p];
+        }
         int m = 0;
         for (int i = 0; i < n; i++) {
             const mote__cvert *a = &poly[i], *b = &poly[(i + 1) % n];
-            float da = mote__plane_dist(cx, a, p), db = mote__plane_dist(cx, b, p);
+            float da = dist[i], db = dist[(i + 1) % n];
             bool ain = da >= 0.0f, bin = db >= 0.0f;
             if (ain) {
                 tmp[m] = *a;
@@ -201,18 +193,24 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
     return n;
 }
 
-/* Which planes a vertex is outside of (bits 0..5), and of the viewport
- * proper (bits 8..11) for trivial rejection. */
+/* Outcode bits: the clip planes a vertex is outside of (0..5), the sides of
+ * the viewport proper it is outside of (8..11, for trivial rejection), and
+ * whether a vertex inside every clip plane failed to snap. */
+#define MOTE__OC_CLIP 0x3fu
+#define MOTE__OC_REJECT 0xf3fu
+#define MOTE__OC_NO_SNAP 0x1000u
+
 static unsigned mote__outcode(const mote__ctx *cx, const mote__cvert *v)
 {
+    float d[MOTE__CLIP_PLANES];
+    mote__plane_dists(cx, v, d);
     unsigned c = 0;
     for (int p = 0; p < MOTE__CLIP_PLANES; p++)
-        if (mote__plane_dist(cx, v, p) < 0.0f)
-            c |= 1u << p;
-    if (v->x > v->w) c |= 1u << 8;
-    if (v->x < -v->w) c |= 1u << 9;
-    if (v->y > v->w) c |= 1u << 10;
-    if (v->y < -v->w) c |= 1u << 11;
+        c |= (unsigned)(d[p] < 0.0f) << p;
+    c |= (unsigned)(v->x > v->w) << 8;
+    c |= (unsigned)(v->x < -v->w) << 9;
+    c |= (unsigned)(v->y > v->w) << 10;
+    c |= (unsigned)(v->y < -v->w) << 11;
     return c;
 }
 
@@ -257,12 +255,72 @@ static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, in
 {
     if (!(v->w > 0.0f))
         return false;
-    const mote_device *dev = cx->dev;
-    int F = dev->desc.subpixel_bits;
-    int64_t hw = (int64_t)dev->desc.width << (F - 1), hh = (int64_t)dev->desc.height << (F - 1);
     /* the guard band bounds these; the limit only catches float rounding */
-    int64_t lim = (int64_t)1 << (MOTE_GUARD_BITS + 1 + F);
-    return mote__snap_axis(v->x / v->w, hw, lim, X) && mote__snap_axis(-(v->y / v->w), hh, lim, Y);
+    return mote__snap_axis(v->x / v->w, cx->snap_hw, cx->snap_lim, X)
+        && mote__snap_axis(-(v->y / v->w), cx->snap_hh, cx->snap_lim, Y);
+}
+
+/* ---- vertices ------------------------------------------------------------ */
+
+static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
+{
+    const mote_vertex *in = &cx->mesh->vertices[index];
+    tv->index = index;
+    float out[4];
+    mote__mat4_point(cx->mvp, in->position, out);
+    tv->c.x = out[0];
+    tv->c.y = out[1];
+    tv->c.z = out[2];
+    tv->c.w = out[3];
+    tv->state = (mote__finite(out[0]) && mote__finite(out[1]) && mote__finite(out[2]) && mote__finite(out[3])) ? 1 : 2;
+    if (cx->lit) {
+        float wp[4];
+        mote__mat4_point(cx->world, in->position, wp);
+        for (int k = 0; k < 3; k++) {
+            tv->world[k] = wp[k];
+            tv->normal[k] = cx->nrm[k * 3 + 0] * in->normal[0] + cx->nrm[k * 3 + 1] * in->normal[1]
+                          + cx->nrm[k * 3 + 2] * in->normal[2];
+        }
+        mote__normalize(tv->normal);
+        if (!cx->flat)
+            mote__light(cx, tv->world, tv->normal, tv->c.s);
+    } else {
+        for (int k = 0; k < 3; k++)
+            tv->c.s[k] = cx->color[k];
+    }
+    if (cx->rs->tex != MOTE__TEX_NONE) {
+        float u = in->uv[0] * cx->uscale + cx->uoff;
+        float v = in->uv[1] * cx->vscale + cx->voff;
+        if (cx->mesh->material.v_origin_bottom)
+            v = 1.0f - v;
+        tv->c.u = u * cx->tex_w;
+        tv->c.v = v * cx->tex_h;
+        if (!mote__finite(tv->c.u) || !mote__finite(tv->c.v) || tv->c.u > 1e9f || tv->c.u < -1e9f
+            || tv->c.v > 1e9f || tv->c.v < -1e9f)
+            tv->state = 2;
+    } else {
+        tv->c.u = tv->c.v = 0.0f;
+    }
+    tv->outcode = 0;
+    if (tv->state == 1) {
+        unsigned oc = mote__outcode(cx, &tv->c);
+        /* only triangles with no vertex outside a clip plane use this snap */
+        if (!(oc & MOTE__OC_CLIP) && !mote__snap(cx, &tv->c, &tv->X, &tv->Y))
+            oc |= MOTE__OC_NO_SNAP;
+        tv->outcode = (uint16_t)oc;
+    }
+}
+
+/* The full cache is filled before the draw's triangles; the small one on
+ * demand, so the entry returned may be evicted by the next lookup. */
+static const mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
+{
+    if (!cx->cache_mask)
+        return &cx->cache[index];
+    mote__tvert *tv = &cx->cache[index & cx->cache_mask];
+    if (tv->state == 0 || tv->index != index)
+        mote__transform(cx, index, tv);
+    return tv;
 }
 
 /* ---- triangles ----------------------------------------------------------- */
@@ -275,13 +333,7 @@ static int64_t mote__area2(const int32_t X[3], const int32_t Y[3])
 /* true when a triangle of this signed screen area is culled */
 static bool mote__culled(const mote__ctx *cx, int64_t area2)
 {
-    bool clockwise = area2 > 0;   /* y grows downward */
-    bool front = cx->d.front_face == MOTE_FRONT_CW ? clockwise : !clockwise;
-    if (cx->d.cull == MOTE_CULL_BACK)
-        return !front;
-    if (cx->d.cull == MOTE_CULL_FRONT)
-        return front;
-    return false;
+    return area2 > 0 ? cx->cull_cw : cx->cull_ccw;   /* y grows downward */
 }
 
 static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], const mote__cvert *v[3])
@@ -330,7 +382,7 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
     }
 }
 
-static void mote__flat_shade(mote__ctx *cx, const mote__tvert *tv[3], float s[3])
+static void mote__flat_shade(const mote__ctx *cx, const mote__tvert *const tv[3], float s[3])
 {
     float e1[3], e2[3], n[3], c[3];
     for (int k = 0; k < 3; k++) {
@@ -352,57 +404,14 @@ static void mote__flat_shade(mote__ctx *cx, const mote__tvert *tv[3], float s[3]
     mote__light(cx, c, n, s);
 }
 
-static void mote__triangle(mote__ctx *cx, uint32_t i0, uint32_t i1, uint32_t i2)
+/* A convex polygon (the triangle, or what clipping left of it), snapped:
+ * culled, then drawn as lines or as a fan of triangles. v[k] are its
+ * vertices, tv the original triangle's (for flat shading), orig[k] whether
+ * the edge k..k+1 is an original one. */
+static void mote__polygon(mote__ctx *cx, const mote__tvert *const tv[3], const mote__cvert *const v[],
+                          const int32_t X[], const int32_t Y[], const bool orig[], int n)
 {
     mote_device *dev = cx->dev;
-    uint32_t nv = cx->mesh->vertex_count;
-    if (i0 >= nv || i1 >= nv || i2 >= nv) {
-        dev->stats.triangles_invalid++;
-        return;
-    }
-    const mote__tvert *tv[3] = {mote__vertex(cx, i0), NULL, NULL};
-    /* copy before the next lookup can evict it from a small cache */
-    mote__cvert poly[MOTE__MAX_POLY];
-    bool orig[MOTE__MAX_POLY] = {true, true, true};
-    mote__tvert keep[3];
-    keep[0] = *tv[0];
-    keep[1] = *mote__vertex(cx, i1);
-    keep[2] = *mote__vertex(cx, i2);
-    for (int k = 0; k < 3; k++)
-        tv[k] = &keep[k];
-    if (tv[0]->state != 1 || tv[1]->state != 1 || tv[2]->state != 1) {
-        dev->stats.triangles_invalid++;
-        return;
-    }
-    for (int k = 0; k < 3; k++)
-        poly[k] = tv[k]->c;
-    if (cx->flat) {
-        float s[3];
-        mote__flat_shade(cx, tv, s);
-        for (int k = 0; k < 3; k++)
-            memcpy(poly[k].s, s, sizeof s);
-    }
-    unsigned oc0 = mote__outcode(cx, &poly[0]), oc1 = mote__outcode(cx, &poly[1]), oc2 = mote__outcode(cx, &poly[2]);
-    if ((oc0 & oc1 & oc2) != 0) {     /* all outside one plane (or one viewport side) */
-        dev->stats.triangles_clipped_away++;
-        return;
-    }
-    int n = 3;
-    unsigned planes = (oc0 | oc1 | oc2) & 0x3fu;
-    if (planes)
-        n = mote__clip(cx, poly, orig, n, planes);
-    if (n < 3) {
-        dev->stats.triangles_clipped_away++;
-        return;
-    }
-    int32_t X[MOTE__MAX_POLY], Y[MOTE__MAX_POLY];
-    for (int k = 0; k < n; k++) {
-        if (!mote__snap(cx, &poly[k], &X[k], &Y[k])) {
-            dev->stats.triangles_invalid++;
-            return;
-        }
-    }
-
     if (cx->d.mode == MOTE_MODE_WIREFRAME) {
         int64_t area = 0;
         for (int k = 0; k < n; k++) {
@@ -425,6 +434,8 @@ static void mote__triangle(mote__ctx *cx, uint32_t i0, uint32_t i1, uint32_t i2)
         return;
     }
 
+    bool shaded = false;
+    float s[3];
     for (int k = 1; k + 1 < n; k++) {
         int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
         int64_t area = mote__area2(tx, ty);
@@ -436,9 +447,86 @@ static void mote__triangle(mote__ctx *cx, uint32_t i0, uint32_t i1, uint32_t i2)
             dev->stats.triangles_backface++;
             continue;
         }
-        const mote__cvert *vv[3] = {&poly[0], &poly[k], &poly[k + 1]};
+        const mote__cvert *vv[3] = {v[0], v[k], v[k + 1]};
+        mote__cvert flat[3];
+        if (cx->flat) {
+            /* one colour for the whole polygon, worked out once a part of it survives culling */
+            if (!shaded)
+                mote__flat_shade(cx, tv, s);
+            shaded = true;
+            for (int i = 0; i < 3; i++) {
+                flat[i] = *vv[i];
+                memcpy(flat[i].s, s, sizeof s);
+                vv[i] = &flat[i];
+            }
+        }
         mote__emit(cx, tx, ty, vv);
     }
+}
+
+static void mote__clip_polygon(mote__ctx *cx, const mote__tvert *const tv[3], unsigned planes)
+{
+    mote__cvert poly[MOTE__MAX_POLY];
+    bool orig[MOTE__MAX_POLY] = {true, true, true};
+    for (int k = 0; k < 3; k++)
+        poly[k] = tv[k]->c;
+    int n = mote__clip(cx, poly, orig, 3, planes);
+    if (n < 3) {
+        cx->dev->stats.triangles_clipped_away++;
+        return;
+    }
+    int32_t X[MOTE__MAX_POLY], Y[MOTE__MAX_POLY];
+    const mote__cvert *v[MOTE__MAX_POLY];
+    for (int k = 0; k < n; k++) {
+        if (!mote__snap(cx, &poly[k], &X[k], &Y[k])) {
+            cx->dev->stats.triangles_invalid++;
+            return;
+        }
+        v[k] = &poly[k];
+    }
+    mote__polygon(cx, tv, v, X, Y, orig, n);
+}
+
+static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
+{
+    mote_device *dev = cx->dev;
+    uint32_t nv = cx->mesh->vertex_count;
+    if (idx[0] >= nv || idx[1] >= nv || idx[2] >= nv) {
+        dev->stats.triangles_invalid++;
+        return;
+    }
+    const mote__tvert *tv[3];
+    mote__tvert keep[3];
+    for (int k = 0; k < 3; k++) {
+        tv[k] = mote__vertex(cx, idx[k]);
+        if (cx->cache_mask) {
+            /* the small cache's next lookup may evict this entry */
+            keep[k] = *tv[k];
+            tv[k] = &keep[k];
+        }
+    }
+    if (tv[0]->state != 1 || tv[1]->state != 1 || tv[2]->state != 1) {
+        dev->stats.triangles_invalid++;
+        return;
+    }
+    unsigned oc0 = tv[0]->outcode, oc1 = tv[1]->outcode, oc2 = tv[2]->outcode;
+    if ((oc0 & oc1 & oc2 & MOTE__OC_REJECT) != 0) {  /* all outside one plane (or one viewport side) */
+        dev->stats.triangles_clipped_away++;
+        return;
+    }
+    unsigned any = oc0 | oc1 | oc2;
+    if (any & MOTE__OC_CLIP) {
+        mote__clip_polygon(cx, tv, any & MOTE__OC_CLIP);
+        return;
+    }
+    if (any & MOTE__OC_NO_SNAP) {
+        dev->stats.triangles_invalid++;
+        return;
+    }
+    static const bool orig[3] = {true, true, true};
+    const mote__cvert *v[3] = {&tv[0]->c, &tv[1]->c, &tv[2]->c};
+    int32_t X[3] = {tv[0]->X, tv[1]->X, tv[2]->X}, Y[3] = {tv[0]->Y, tv[1]->Y, tv[2]->Y};
+    mote__polygon(cx, tv, v, X, Y, orig, 3);
 }
 
 /* ---- the draw -------------------------------------------------------------- */
@@ -539,6 +627,10 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     cx.voff = mat->v_offset;
     cx.guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);
     cx.guard_y = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.height * 0.5f);
+    int F = dev->desc.subpixel_bits;
+    cx.snap_hw = (int64_t)dev->desc.width << (F - 1);
+    cx.snap_hh = (int64_t)dev->desc.height << (F - 1);
+    cx.snap_lim = (int64_t)1 << (MOTE_GUARD_BITS + 1 + F);
 
     mote__raster_state rs_local;
     memset(&rs_local, 0, sizeof rs_local);
@@ -549,12 +641,19 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         cx.lit = false;
     cx.flat = mode == MOTE_MODE_FLAT && cx.lit;   /* unlit flat is one colour anyway */
     rs_local.gouraud = cx.lit && !cx.flat;
+    if (cx.lit)
+        mote__prepare_lights(&cx);
+    bool front_cw = cx.d.front_face == MOTE_FRONT_CW;
+    cx.cull_cw = cx.d.cull == (front_cw ? MOTE_CULL_FRONT : MOTE_CULL_BACK);
+    cx.cull_ccw = cx.d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);
     rs_local.tex = MOTE__TEX_NONE;
     if (mode == MOTE_MODE_TEXTURED && mote__texture_ok(mat->texture)) {
         rs_local.tex = cx.d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR : MOTE__TEX_NEAREST;
         rs_local.texture = mat->texture;
         rs_local.tex_w = mat->texture->width;
         rs_local.tex_h = mat->texture->height;
+        cx.tex_w = (float)rs_local.tex_w;
+        cx.tex_h = (float)rs_local.tex_h;
         rs_local.tex_stride = mat->texture->stride > 0 ? mat->texture->stride
                             : mat->texture->width * mote_format_bytes(mat->texture->format);
         rs_local.wrap_u = (mat->wrap_u > MOTE_WRAP_DEFAULT && mat->wrap_u < MOTE_WRAP_COUNT) ? mat->wrap_u : MOTE_WRAP_REPEAT;
@@ -593,7 +692,8 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         if (mesh->vertex_count > 0 && cache_bytes / sizeof(mote__tvert) == mesh->vertex_count)
             cx.cache = (mote__tvert *)mote__bin_top_alloc(dev, cache_bytes);
         if (cx.cache)
-            memset(cx.cache, 0, cache_bytes);
+            for (uint32_t i = 0; i < mesh->vertex_count; i++)
+                mote__transform(&cx, i, &cx.cache[i]);
         else
             cache_bytes = 0;
     } else {
@@ -606,13 +706,11 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     }
 
     if (mode == MOTE_MODE_POINTS) {
-        int F = dev->desc.subpixel_bits;
         for (uint32_t i = 0; i < mesh->vertex_count; i++) {
             const mote__tvert *tv = mote__vertex(&cx, i);
-            int32_t X, Y;
-            if (tv->state != 1 || mote__outcode(&cx, &tv->c) != 0 || !mote__snap(&cx, &tv->c, &X, &Y))
-                continue;
-            mote__draw_pixel(tg, region, X >> F, Y >> F, cx.d.point_color);
+            /* inside the viewport and every clip plane, and snapped */
+            if (tv->state == 1 && tv->outcode == 0)
+                mote__draw_pixel(tg, region, tv->X >> F, tv->Y >> F, cx.d.point_color);
         }
     } else {
         uint32_t tris = mesh->index_count / 3;
@@ -620,7 +718,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
             tris = 0;
         dev->stats.triangles_in += tris;
         for (uint32_t i = 0; i < tris; i++)
-            mote__triangle(&cx, mesh->indices[3 * i], mesh->indices[3 * i + 1], mesh->indices[3 * i + 2]);
+            mote__triangle(&cx, &mesh->indices[3 * i]);
     }
     if (cache_bytes)
         mote__bin_top_release(dev, cache_bytes);

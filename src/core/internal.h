@@ -37,7 +37,16 @@ void mote__mat4_point(const float m[16], const float p[3], float out[4]);
 void mote__normal_matrix(const float m[16], float out[9]);
 float mote__sqrtf(float x);
 float mote__rsqrtf(float x);   /* 0 for 0, negative, NaN, Inf */
-bool mote__finite(float x);
+
+/* false for NaN and +-Inf; a bit test rather than a float operation because
+ * it runs several times per vertex and soft-float targets pay a call for
+ * the latter */
+static inline bool mote__finite(float x)
+{
+    union { float f; uint32_t u; } b;
+    b.f = x;
+    return (b.u & 0x7f800000u) != 0x7f800000u;
+}
 
 /* A vertex after the vertex stage: clip position and the attributes that
  * clipping interpolates. */

@@ -10,11 +10,6 @@
 
 #include <cglm/types.h>
 
-bool mote__finite(float x)
-{
-    return (x - x) == 0.0f;       /* false for NaN and +-Inf */
-}
-
 float mote__rsqrtf(float x)
 {
     /* 1/sqrt(x): the classic exponent-halving guess and three Newton steps
@@ -122,8 +117,12 @@ void mote__mat4_mul(const float a[16], const float b[16], float out[16])
 
 void mote__mat4_point(const float m[16], const float p[3], float out[4])
 {
+    /* into a local first: out may alias p, and with the stores last the
+     * four rows can run as one vector operation */
+    float x = p[0], y = p[1], z = p[2], r[4];
     for (int row = 0; row < 4; row++)
-        out[row] = m[0 * 4 + row] * p[0] + m[1 * 4 + row] * p[1] + m[2 * 4 + row] * p[2] + m[3 * 4 + row];
+        r[row] = m[0 * 4 + row] * x + m[1 * 4 + row] * y + m[2 * 4 + row] * z + m[3 * 4 + row];
+    memcpy(out, r, sizeof r);
 }
 
 void mote__normal_matrix(const float m[16], float out[9])
