@@ -144,6 +144,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         return false;
     memset(t, 0, sizeof *t);      /* planes a draw does not use stay zero */
     t->rs = rs;
+    t->rbits = 54;                /* any pixel loop stays defined (N = 0: A = a0) */
     for (int i = 0; i < 3; i++) {
         t->X[i] = X[i];
         t->Y[i] = Y[i];
