@@ -200,6 +200,7 @@ typedef struct mote__fill_ctx {
     mote__tex_view tx;
     bool test;
     int seg_len;
+    uint64_t affine_r;            /* affine: all qi are 1, Q is (nearly) constant: one r */
 } mote__fill_ctx;
 
 /* One row: pixels [x0, x1) given the planes' values at x0 (z, Q and the
@@ -216,12 +217,12 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     const int64_t nrdx = c->ndx[MOTE__A_R], ngdx = c->ndx[MOTE__A_G], nbdx = c->ndx[MOTE__A_B];
     const int64_t nudx = c->ndx[MOTE__A_U], nvdx = c->ndx[MOTE__A_V];
     uint32_t sr = c->sr, sg = c->sg, sb = c->sb;
-    /* affine: all qi are 1, so Q is constant and so is its reciprocal */
-    const uint64_t affine_r = (varying && persp == MOTE__PERSP_AFFINE) ? mote__recip_k(q, shift, k) : 0;
-    /* sub-span: r exact at the ends of each segment, linear between */
-    uint64_t seg_r = 0;
+    /* sub-span: r exact at screen columns that are multiples of seg_len,
+     * linear between, so where a region starts a row changes nothing */
+    uint64_t seg_r0 = 0;
     int64_t seg_step = 0;
-    int seg_left = 0;
+    int seg_x0 = 0, seg_x1 = x0;
+    bool seg_exact = false;
     uint32_t written = 0;
 
     for (int x = x0; x < x1; x++, z += zdx, q += qdx, nr += nrdx, ng += ngdx, nb += nbdx, nu += nudx, nv += nvdx) {
@@ -242,19 +243,22 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
         if (varying) {
             uint64_t r;
             if (persp == MOTE__PERSP_SUBSPAN) {
-                if (seg_left == 0) {
-                    int m = MOTE__MIN(c->seg_len, x1 - 1 - x);
-                    seg_r = mote__recip_k(q, shift, k);
-                    seg_step = m > 0 ? ((int64_t)mote__recip_k(mote__plane_at(q, qdx, 0, m, 0), shift, k)
-                                        - (int64_t)seg_r) / m
-                                     : 0;
-                    seg_left = m > 0 ? m : 1;
+                if (x >= seg_x1) {
+                    seg_x0 = x & ~(c->seg_len - 1);
+                    seg_x1 = seg_x0 + c->seg_len;
+                    int64_t qa = mote__plane_at(q, qdx, 0, seg_x0 - x, 0) >> shift;
+                    int64_t qb = mote__plane_at(q, qdx, 0, seg_x1 - x, 0) >> shift;
+                    /* an end outside the triangle may have no valid Q:
+                     * then this segment is exact at every pixel */
+                    seg_exact = qa <= 0 || qb <= 0;
+                    if (!seg_exact) {
+                        seg_r0 = ((uint64_t)1 << k) / (uint64_t)qa;
+                        seg_step = ((int64_t)(((uint64_t)1 << k) / (uint64_t)qb) - (int64_t)seg_r0) / c->seg_len;
+                    }
                 }
-                r = seg_r;
-                seg_r += (uint64_t)seg_step;
-                seg_left--;
+                r = seg_exact ? mote__recip_k(q, shift, k) : seg_r0 + (uint64_t)(seg_step * (x - seg_x0));
             } else {
-                r = persp == MOTE__PERSP_AFFINE ? affine_r : mote__recip_k(q, shift, k);
+                r = persp == MOTE__PERSP_AFFINE ? c->affine_r : mote__recip_k(q, shift, k);
             }
             if (shade == MOTE__SHADE_MONO) {
                 sr = sg = sb = mote__clamp_shade(mote__attr(c->a0[MOTE__A_R], nr, r, k));
@@ -325,6 +329,8 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     }
     c.test = rs->depth_test;
     c.seg_len = 1 << rs->subspan_log2;
+    if (varying && persp == MOTE__PERSP_AFFINE)
+        c.affine_r = mote__recip_k(t->q, t->shift, t->rbits);
     uint8_t *const color = tg->color;
     void *const depthbuf = tg->depth;
     const int stride = tg->stride, width = tg->width, ty0 = tg->y0;
