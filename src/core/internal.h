@@ -23,9 +23,15 @@
 
 /* Shade and weights fixed-point units (see CONVENTIONS in mote.h). */
 #define MOTE__SHADE_ONE (1 << 24)
-#define MOTE__WEIGHT_BITS 20
 #define MOTE__DEPTH_MAX ((1u << 24) - 1u)
 #define MOTE__DEPTH_FRAC 16
+
+/* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
+ * negative numbers (implementation-defined in C99). */
+static inline int64_t mote__floor_shift64(int64_t v, int k)
+{
+    return v >= 0 ? (int64_t)((uint64_t)v >> k) : (int64_t)~(~(uint64_t)v >> k);
+}
 
 /* ---- vertex stage -------------------------------------------------------- */
 

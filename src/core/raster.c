@@ -41,11 +41,8 @@ static void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, i
 
 static int mote__first_row(int32_t Yv, int F)
 {
-    /* smallest y with y * 2^F + 2^(F-1) >= Yv: ceil((Yv - 2^(F-1)) / 2^F),
-     * as a floor division by a power of two that does not rely on how >>
-     * treats negative numbers */
-    int64_t n = (int64_t)Yv - ((int64_t)1 << (F - 1)) + ((int64_t)1 << F) - 1;
-    return (int)(n >= 0 ? n >> F : ~(~n >> F));
+    /* smallest y with y * 2^F + 2^(F-1) >= Yv: ceil((Yv - 2^(F-1)) / 2^F) */
+    return (int)mote__floor_shift64((int64_t)Yv - ((int64_t)1 << (F - 1)) + ((int64_t)1 << F) - 1, F);
 }
 
 bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)

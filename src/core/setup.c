@@ -73,13 +73,6 @@ static int64_t mote__round_f(float f)
     return t;
 }
 
-/* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
- * negative numbers (implementation-defined in C99). */
-static int64_t mote__floor_shift64(int64_t v, int k)
-{
-    return v >= 0 ? (int64_t)((uint64_t)v >> k) : (int64_t)~(~(uint64_t)v >> k);
-}
-
 static int64_t mote__floor_div64(int64_t a, int64_t b)
 {
     int64_t q = a / b;
@@ -109,12 +102,6 @@ static int64_t mote__scaled_div(int64_t n, int64_t d)
     return q * 65536 + ((r * 65536 + d / 2) / d);
 }
 
-/* floor(a / 2^s) for signed a */
-static int32_t mote__floor_shift(int32_t a, int s)
-{
-    return a >= 0 ? a >> s : -(int32_t)((-(int64_t)a + (1 << s) - 1) >> s);
-}
-
 /* A shade in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
 static int32_t mote__shade_fixed(float s)
 {
@@ -134,8 +121,8 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     /* Pixel bounding box: pixels whose centre can be inside. */
     int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
     int32_t miny = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), maxy = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
-    int x0 = mote__floor_shift(minx - (int32_t)half, F), x1 = mote__floor_shift(maxx - (int32_t)half, F) + 1;
-    int y0 = mote__floor_shift(miny - (int32_t)half, F), y1 = mote__floor_shift(maxy - (int32_t)half, F) + 1;
+    int x0 = (int)mote__floor_shift64(minx - half, F), x1 = (int)mote__floor_shift64(maxx - half, F) + 1;
+    int y0 = (int)mote__floor_shift64(miny - half, F), y1 = (int)mote__floor_shift64(maxy - half, F) + 1;
     x0 = MOTE__MAX(x0, 0);
     y0 = MOTE__MAX(y0, 0);
     x1 = MOTE__MIN(x1, width - 1);
@@ -154,7 +141,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     t->ymin = (int16_t)y0;
     t->ymax = (int16_t)y1;
     /* origin: the pixel holding vertex 0 (in the guard band, so int16 fits) */
-    const int ox = mote__floor_shift(X[0], F), oy = mote__floor_shift(Y[0], F);
+    const int ox = (int)mote__floor_shift64(X[0], F), oy = (int)mote__floor_shift64(Y[0], F);
     t->ox = (int16_t)ox;
     t->oy = (int16_t)oy;
 
@@ -178,6 +165,8 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     }
     int64_t a2 = area2 * sign;
 
+    for (int c = 0; c < 3; c++)   /* the shade at vertex 0: every draw has one */
+        t->a0[c] = mote__shade_fixed(v[0]->s[c]);
     bool needs_weights = rs->gouraud || rs->tex != MOTE__TEX_NONE;
     if (needs_weights) {
         /* Precision: each qi ~ 1/wi needs many bits, the far vertex's most
@@ -221,11 +210,9 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         int64_t d1[MOTE__ATTRS] = {0}, d2[MOTE__ATTRS] = {0};
         bool grey = true, constant = true;
         for (int c = 0; c < 3; c++) {
-            int32_t s0 = mote__shade_fixed(v[0]->s[c]);
-            t->a0[c] = s0;
-            d1[c] = mote__shade_fixed(v[1]->s[c]) - s0;
-            d2[c] = mote__shade_fixed(v[2]->s[c]) - s0;
-            grey = grey && s0 == t->a0[0] && d1[c] == d1[0] && d2[c] == d2[0];
+            d1[c] = mote__shade_fixed(v[1]->s[c]) - t->a0[c];
+            d2[c] = mote__shade_fixed(v[2]->s[c]) - t->a0[c];
+            grey = grey && t->a0[c] == t->a0[0] && d1[c] == d1[0] && d2[c] == d2[0];
             constant = constant && d1[c] == 0 && d2[c] == 0;
         }
         if (rs->gouraud && !constant)
@@ -270,9 +257,6 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                                        + (uint64_t)mote__mul_shift(d2[a], p2[j], t->shift + 10));
         }
         t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen((uint64_t)dmax) - 27, 0), 20));
-    } else {
-        for (int c = 0; c < 3; c++)
-            t->a0[c] = mote__shade_fixed(v[0]->s[c]);
     }
 
     if (rs->depth_test || rs->depth_write) {

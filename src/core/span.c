@@ -246,14 +246,14 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 if (x >= seg_x1) {
                     seg_x0 = x & ~(c->seg_len - 1);
                     seg_x1 = seg_x0 + c->seg_len;
-                    int64_t qa = mote__plane_at(q, qdx, 0, seg_x0 - x, 0) >> shift;
-                    int64_t qb = mote__plane_at(q, qdx, 0, seg_x1 - x, 0) >> shift;
+                    int64_t qa = mote__plane_at(q, qdx, 0, seg_x0 - x, 0);
+                    int64_t qb = mote__plane_at(q, qdx, 0, seg_x1 - x, 0);
                     /* an end outside the triangle may have no valid Q:
                      * then this segment is exact at every pixel */
-                    seg_exact = qa <= 0 || qb <= 0;
+                    seg_exact = (qa >> shift) <= 0 || (qb >> shift) <= 0;
                     if (!seg_exact) {
-                        seg_r0 = ((uint64_t)1 << k) / (uint64_t)qa;
-                        seg_step = ((int64_t)(((uint64_t)1 << k) / (uint64_t)qb) - (int64_t)seg_r0) / c->seg_len;
+                        seg_r0 = mote__recip_k(qa, shift, k);
+                        seg_step = ((int64_t)mote__recip_k(qb, shift, k) - (int64_t)seg_r0) / c->seg_len;
                     }
                 }
                 r = seg_exact ? mote__recip_k(q, shift, k) : seg_r0 + (uint64_t)(seg_step * (x - seg_x0));
