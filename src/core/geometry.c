@@ -204,9 +204,8 @@ static unsigned mote__outcode(const mote__ctx *cx, const mote__cvert *v)
 {
     float d[MOTE__CLIP_PLANES];
     mote__plane_dists(cx, v, d);
-    unsigned c = 0;
-    for (int p = 0; p < MOTE__CLIP_PLANES; p++)
-        c |= (unsigned)(d[p] < 0.0f) << p;
+    unsigned c = (unsigned)(d[0] < 0.0f) | (unsigned)(d[1] < 0.0f) << 1 | (unsigned)(d[2] < 0.0f) << 2
+               | (unsigned)(d[3] < 0.0f) << 3 | (unsigned)(d[4] < 0.0f) << 4 | (unsigned)(d[5] < 0.0f) << 5;
     c |= (unsigned)(v->x > v->w) << 8;
     c |= (unsigned)(v->x < -v->w) << 9;
     c |= (unsigned)(v->y > v->w) << 10;
@@ -224,25 +223,21 @@ static bool mote__snap_axis(float n, int64_t h, int64_t lim, int32_t *out)
 {
     union { float f; uint32_t u; } b;
     b.f = n;
-    int exp = (int)((b.u >> 23) & 0xff);
+    /* |n| = m * 2^-k with the 24-bit mantissa m; zero and denormals (exponent
+     * field 0) give k = 150, far enough to round to 0 like any k >= 62 */
+    int k = 150 - (int)((b.u >> 23) & 0xff);
+    int64_t p = (int64_t)((b.u & 0x7fffffu) | 0x800000u) * h;  /* < 2^24 * 2^20 */
+    int64_t neg = (int64_t)(b.u >> 31);
     int64_t v;                    /* round_half_up(n * h) */
-    if (exp == 0) {
-        v = 0;                    /* zero or denormal */
+    if (k > 0) {
+        k = k < 62 ? k : 62;
+        /* half up for n >= 0; for n < 0, -round_half_down(|n| h), hence the -1 */
+        int64_t m = (p + ((int64_t)1 << (k - 1)) - neg) >> k;
+        v = neg ? -m : m;
     } else {
-        int64_t p = (int64_t)((b.u & 0x7fffffu) | 0x800000u) * h;  /* < 2^24 * 2^20 */
-        int e = exp - 127 - 23;
-        bool neg = (b.u >> 31) != 0;
-        if (e >= 0) {
-            if (e > 16)
-                return false;     /* |n| >= 2^40: far outside the guard band */
-            v = neg ? -(p << e) : (p << e);
-        } else if (-e >= 62) {
-            v = 0;
-        } else {
-            int k = -e;
-            int64_t half = (int64_t)1 << (k - 1);
-            v = neg ? -((p + half - 1) >> k) : (p + half) >> k;
-        }
+        if (k < -16)
+            return false;         /* |n| >= 2^40: far outside the guard band */
+        v = neg ? -(p << -k) : p << -k;
     }
     v += h;
     if (v <= -lim || v >= lim)
