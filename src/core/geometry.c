@@ -15,6 +15,7 @@ typedef struct mote__tvert {
     int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
     uint16_t outcode;             /* see mote__outcode */
     uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
+    bool lit;                     /* c.s is final (see mote__shade) */
     uint32_t index;
 } mote__tvert;
 
@@ -277,12 +278,10 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
                           + cx->nrm[k * 3 + 2] * in->normal[2];
         }
         mote__normalize(tv->normal);
-        if (!cx->flat)
-            mote__light(cx, tv->world, tv->normal, tv->c.s);
-    } else {
-        for (int k = 0; k < 3; k++)
-            tv->c.s[k] = cx->color[k];
     }
+    tv->lit = !cx->lit || cx->flat;
+    for (int k = 0; k < 3; k++)
+        tv->c.s[k] = cx->color[k];
     if (cx->rs->tex != MOTE__TEX_NONE) {
         float u = in->uv[0] * cx->uscale + cx->uoff;
         float v = in->uv[1] * cx->vscale + cx->voff;
@@ -306,15 +305,32 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
     }
 }
 
-/* The full cache is filled before the draw's triangles; the small one on
- * demand, so the entry returned may be evicted by the next lookup. */
-static const mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
+/* Gouraud lighting, the costliest per-vertex step. It cannot make a vertex
+ * invalid, so with the full cache it waits until a triangle using the
+ * vertex survives culling: about half of a closed mesh's vertices are only
+ * on back faces (grid, tex-nearest: 11.6 -> 10.8 ms of draws). Flat
+ * shading's per-vertex part is too cheap to be worth the unpredictable
+ * branch this adds (measured slower deferred). */
+static void mote__shade(const mote__ctx *cx, mote__tvert *tv)
+{
+    if (tv->lit)
+        return;
+    tv->lit = true;
+    mote__light(cx, tv->world, tv->normal, tv->c.s);
+}
+
+/* The full cache is filled before the draw's triangles and shaded on use;
+ * the small one is filled and shaded on demand (its entries are copied and
+ * may be evicted by the next lookup, so shading later would not stick). */
+static mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
 {
     if (!cx->cache_mask)
         return &cx->cache[index];
     mote__tvert *tv = &cx->cache[index & cx->cache_mask];
-    if (tv->state == 0 || tv->index != index)
+    if (tv->state == 0 || tv->index != index) {
         mote__transform(cx, index, tv);
+        mote__shade(cx, tv);
+    }
     return tv;
 }
 
@@ -377,7 +393,7 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
     }
 }
 
-static void mote__flat_shade(const mote__ctx *cx, const mote__tvert *const tv[3], float s[3])
+static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], float s[3])
 {
     float e1[3], e2[3], n[3], c[3];
     for (int k = 0; k < 3; k++) {
@@ -399,87 +415,91 @@ static void mote__flat_shade(const mote__ctx *cx, const mote__tvert *const tv[3]
     mote__light(cx, c, n, s);
 }
 
-/* A convex polygon (the triangle, or what clipping left of it), snapped:
- * culled, then drawn as lines or as a fan of triangles. v[k] are its
- * vertices, tv the original triangle's (for flat shading), orig[k] whether
- * the edge k..k+1 is an original one. */
-static void mote__polygon(mote__ctx *cx, const mote__tvert *const tv[3], const mote__cvert *const v[],
-                          const int32_t X[], const int32_t Y[], const bool orig[], int n)
+/* A triangle, or one of the fan a clipped one became: counted and dropped
+ * when degenerate or culled, else shaded and emitted. tv is the original
+ * triangle, whose vertices are shaded (v may point into them). */
+static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], const mote__cvert *v0,
+                               const mote__cvert *v1, const mote__cvert *v2, const int32_t X[3],
+                               const int32_t Y[3])
 {
-    mote_device *dev = cx->dev;
-    if (cx->d.mode == MOTE_MODE_WIREFRAME) {
-        int64_t area = 0;
-        for (int k = 0; k < n; k++) {
-            int j = (k + 1) % n;
-            area += (int64_t)X[k] * Y[j] - (int64_t)X[j] * Y[k];
-        }
-        if (area != 0 && mote__culled(cx, area)) {
-            dev->stats.triangles_backface++;
-            return;
-        }
-        mote_rgba col = cx->d.point_color;
-        int F = dev->desc.subpixel_bits;
-        dev->stats.triangles_drawn++;
-        for (int k = 0; k < n; k++) {
-            if (!orig[k])
-                continue;
-            int j = (k + 1) % n;
-            mote__draw_line(cx->tg, cx->region, X[k] >> F, Y[k] >> F, X[j] >> F, Y[j] >> F, col);
-        }
+    int64_t area = mote__area2(X, Y);
+    if (area == 0) {
+        cx->dev->stats.triangles_degenerate++;
         return;
     }
+    if (mote__culled(cx, area)) {
+        cx->dev->stats.triangles_backface++;
+        return;
+    }
+    for (int i = 0; i < 3; i++)
+        mote__shade(cx, tv[i]);
+    const mote__cvert *v[3] = {v0, v1, v2};
+    mote__cvert flat[3];
+    if (cx->flat) {
+        float s[3];
+        mote__flat_shade(cx, tv, s);
+        for (int i = 0; i < 3; i++) {
+            flat[i] = *v[i];
+            memcpy(flat[i].s, s, sizeof s);
+            v[i] = &flat[i];
+        }
+    }
+    mote__emit(cx, X, Y, v);
+}
 
-    bool shaded = false;
-    float s[3];
-    for (int k = 1; k + 1 < n; k++) {
-        int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
-        int64_t area = mote__area2(tx, ty);
-        if (area == 0) {
-            dev->stats.triangles_degenerate++;
+/* Wireframe: a polygon (the triangle, or what clipping left of it) culled
+ * as a whole, then its original edges (orig[k]: edge k..k+1) drawn. */
+static void mote__wire_polygon(mote__ctx *cx, const int32_t X[], const int32_t Y[], const bool orig[], int n)
+{
+    mote_device *dev = cx->dev;
+    int64_t area = 0;
+    for (int k = 0; k < n; k++) {
+        int j = (k + 1) % n;
+        area += (int64_t)X[k] * Y[j] - (int64_t)X[j] * Y[k];
+    }
+    if (area != 0 && mote__culled(cx, area)) {
+        dev->stats.triangles_backface++;
+        return;
+    }
+    mote_rgba col = cx->d.point_color;
+    int F = dev->desc.subpixel_bits;
+    dev->stats.triangles_drawn++;
+    for (int k = 0; k < n; k++) {
+        if (!orig[k])
             continue;
-        }
-        if (mote__culled(cx, area)) {
-            dev->stats.triangles_backface++;
-            continue;
-        }
-        const mote__cvert *vv[3] = {v[0], v[k], v[k + 1]};
-        mote__cvert flat[3];
-        if (cx->flat) {
-            /* one colour for the whole polygon, worked out once a part of it survives culling */
-            if (!shaded)
-                mote__flat_shade(cx, tv, s);
-            shaded = true;
-            for (int i = 0; i < 3; i++) {
-                flat[i] = *vv[i];
-                memcpy(flat[i].s, s, sizeof s);
-                vv[i] = &flat[i];
-            }
-        }
-        mote__emit(cx, tx, ty, vv);
+        int j = (k + 1) % n;
+        mote__draw_line(cx->tg, cx->region, X[k] >> F, Y[k] >> F, X[j] >> F, Y[j] >> F, col);
     }
 }
 
-static void mote__clip_polygon(mote__ctx *cx, const mote__tvert *const tv[3], unsigned planes)
+static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned planes)
 {
     mote__cvert poly[MOTE__MAX_POLY];
     bool orig[MOTE__MAX_POLY] = {true, true, true};
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
+        mote__shade(cx, tv[k]);   /* clipping interpolates the lit colour */
         poly[k] = tv[k]->c;
+    }
     int n = mote__clip(cx, poly, orig, 3, planes);
     if (n < 3) {
         cx->dev->stats.triangles_clipped_away++;
         return;
     }
     int32_t X[MOTE__MAX_POLY], Y[MOTE__MAX_POLY];
-    const mote__cvert *v[MOTE__MAX_POLY];
     for (int k = 0; k < n; k++) {
         if (!mote__snap(cx, &poly[k], &X[k], &Y[k])) {
             cx->dev->stats.triangles_invalid++;
             return;
         }
-        v[k] = &poly[k];
     }
-    mote__polygon(cx, tv, v, X, Y, orig, n);
+    if (cx->d.mode == MOTE_MODE_WIREFRAME) {
+        mote__wire_polygon(cx, X, Y, orig, n);
+        return;
+    }
+    for (int k = 1; k + 1 < n; k++) {
+        int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
+        mote__fan_triangle(cx, tv, &poly[0], &poly[k], &poly[k + 1], tx, ty);
+    }
 }
 
 static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
@@ -490,13 +510,14 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         dev->stats.triangles_invalid++;
         return;
     }
-    const mote__tvert *tv[3];
+    mote__tvert *tv[3];
     mote__tvert keep[3];
     for (int k = 0; k < 3; k++) {
-        tv[k] = mote__vertex(cx, idx[k]);
-        if (cx->cache_mask) {
+        if (!cx->cache_mask) {
+            tv[k] = &cx->cache[idx[k]];
+        } else {
             /* the small cache's next lookup may evict this entry */
-            keep[k] = *tv[k];
+            keep[k] = *mote__vertex(cx, idx[k]);
             tv[k] = &keep[k];
         }
     }
@@ -518,10 +539,14 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         dev->stats.triangles_invalid++;
         return;
     }
-    static const bool orig[3] = {true, true, true};
-    const mote__cvert *v[3] = {&tv[0]->c, &tv[1]->c, &tv[2]->c};
+    /* no clipping: the cached snapped points, culled before anything else */
     int32_t X[3] = {tv[0]->X, tv[1]->X, tv[2]->X}, Y[3] = {tv[0]->Y, tv[1]->Y, tv[2]->Y};
-    mote__polygon(cx, tv, v, X, Y, orig, 3);
+    if (cx->d.mode == MOTE_MODE_WIREFRAME) {
+        static const bool orig[3] = {true, true, true};
+        mote__wire_polygon(cx, X, Y, orig, 3);
+        return;
+    }
+    mote__fan_triangle(cx, tv, &tv[0]->c, &tv[1]->c, &tv[2]->c, X, Y);
 }
 
 /* ---- the draw -------------------------------------------------------------- */
