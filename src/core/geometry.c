@@ -9,14 +9,15 @@
  * it would otherwise recompute per corner: its outcode and, when it is
  * inside every clip plane, its snapped screen position. */
 typedef struct mote__tvert {
+    /* small fields first, within reach of Thumb-1's short load offsets */
+    uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
+    bool lit;                     /* c.s is final (see mote__shade) */
+    uint16_t outcode;             /* see mote__outcode */
+    uint32_t index;
+    int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
     mote__cvert c;
     float world[3];
     float normal[3];              /* world-space, normalised */
-    int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
-    uint16_t outcode;             /* see mote__outcode */
-    uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
-    bool lit;                     /* c.s is final (see mote__shade) */
-    uint32_t index;
 } mote__tvert;
 
 /* Direct-mapped vertex cache used without an arena (a power of two; each
@@ -26,86 +27,60 @@ typedef struct mote__tvert {
 #endif
 #define MOTE__SMALL_CACHE MOTE_VERTEX_CACHE
 
-/* A light with what does not depend on the vertex worked out once per draw. */
-typedef struct mote__light_k {
-    mote_light_type type;
-    float col[3];                 /* colour, white for {0,0,0} */
-    float k;                      /* intensity, 1 for 0 */
-    float kcol[3];                /* k * col, the directional and point term's factor */
-    float L[3];                   /* point: position; otherwise toward the light */
-    float rlen;                   /* 1/|L| for directional and hemispheric */
-    const float *ground;
-} mote__light_k;
-
+/* Scalars first: Thumb-1 loads reach only small offsets, so this order
+ * keeps the M0+ code shorter. */
 typedef struct mote__ctx {
     mote_device *dev;
     const mote_mesh *mesh;
-    mote_draw_desc d;
-    float mvp[16], world[16], nrm[9];
+    mote__raster_state *rs;
+    mote__tvert *cache;
+    uint32_t cache_mask;          /* 0: full cache indexed by vertex, filled up front */
+    bool lit, flat;
+    bool cull_cw, cull_ccw;       /* which screen windings are culled */
+    float guard_x, guard_y;       /* guard band in NDC units */
     float color[3];               /* material colour 0..1 */
     float uscale, vscale, uoff, voff;
     float tex_w, tex_h;
-    bool lit, flat;
-    bool cull_cw, cull_ccw;       /* which screen windings are culled */
-    mote__raster_state *rs;
     mote__sink_kind sink;
     const mote__target *tg;
     mote__rect region;
-    float guard_x, guard_y;       /* guard band in NDC units */
-    int64_t snap_hw, snap_hh, snap_lim;
-    mote__tvert *cache;
-    uint32_t cache_mask;          /* 0: full cache indexed by vertex, filled up front */
-    int light_count;
-    mote__light_k lights[MOTE_MAX_LIGHTS];
+    mote_draw_desc d;
+    float nrm[9], mvp[16], world[16];
 } mote__ctx;
 
 /* ---- lighting ------------------------------------------------------------ */
 
-static void mote__prepare_lights(mote__ctx *cx)
-{
-    const mote_frame_desc *f = &cx->dev->frame;
-    cx->light_count = 0;
-    for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
-        const mote_light *l = &f->lights[i];
-        if (l->type != MOTE_LIGHT_POINT && l->type != MOTE_LIGHT_DIRECTIONAL
-            && l->type != MOTE_LIGHT_HEMISPHERIC)
-            continue;
-        mote__light_k *lk = &cx->lights[cx->light_count++];
-        lk->type = l->type;
-        bool black = l->color[0] == 0.0f && l->color[1] == 0.0f && l->color[2] == 0.0f;
-        lk->k = l->intensity != 0.0f ? l->intensity : 1.0f;
-        for (int c = 0; c < 3; c++) {
-            lk->col[c] = black ? 1.0f : l->color[c];
-            lk->kcol[c] = lk->k * lk->col[c];
-        }
-        lk->ground = l->ground_color;
-        float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
-        for (int c = 0; c < 3; c++)
-            lk->L[c] = l->type == MOTE_LIGHT_POINT ? l->position[c] : s * l->direction[c];
-        lk->rlen = mote__rsqrtf(lk->L[0] * lk->L[0] + lk->L[1] * lk->L[1] + lk->L[2] * lk->L[2]);
-    }
-}
-
 static void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
 {
-    const float *amb = cx->dev->frame.ambient;
-    float acc[3] = {amb[0], amb[1], amb[2]};
-    for (int i = 0; i < cx->light_count; i++) {
-        const mote__light_k *l = &cx->lights[i];
-        float ndl;
+    const mote_frame_desc *f = &cx->dev->frame;
+    float acc[3] = {f->ambient[0], f->ambient[1], f->ambient[2]};
+    for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
+        const mote_light *l = &f->lights[i];
+        float col[3] = {l->color[0], l->color[1], l->color[2]};
+        if (col[0] == 0.0f && col[1] == 0.0f && col[2] == 0.0f)
+            col[0] = col[1] = col[2] = 1.0f;
+        float k = l->intensity != 0.0f ? l->intensity : 1.0f;
+        float L[3];
         if (l->type == MOTE_LIGHT_POINT) {
-            float L[3] = {l->L[0] - p[0], l->L[1] - p[1], l->L[2] - p[2]};
-            ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+            L[0] = l->position[0] - p[0];
+            L[1] = l->position[1] - p[1];
+            L[2] = l->position[2] - p[2];
+        } else if (l->type == MOTE_LIGHT_DIRECTIONAL || l->type == MOTE_LIGHT_HEMISPHERIC) {
+            float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
+            L[0] = s * l->direction[0];
+            L[1] = s * l->direction[1];
+            L[2] = s * l->direction[2];
         } else {
-            ndl = (n[0] * l->L[0] + n[1] * l->L[1] + n[2] * l->L[2]) * l->rlen;
+            continue;
         }
+        float ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
-                acc[c] += l->k * (l->col[c] * w + l->ground[c] * (1.0f - w));
+                acc[c] += k * (col[c] * w + l->ground_color[c] * (1.0f - w));
         } else if (ndl > 0.0f) {
             for (int c = 0; c < 3; c++)
-                acc[c] += l->kcol[c] * ndl;
+                acc[c] += k * col[c] * ndl;
         }
     }
     for (int c = 0; c < 3; c++) {
@@ -140,6 +115,13 @@ static void mote__plane_dists(const mote__ctx *cx, const mote__cvert *v, float d
     d[5] = gy - v->y;             /* top */
 }
 
+static float mote__plane_dist(const mote__ctx *cx, const mote__cvert *v, int p)
+{
+    float d[MOTE__CLIP_PLANES];
+    mote__plane_dists(cx, v, d);
+    return d[p];
+}
+
 static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote__cvert *out)
 {
     out->x = a->x + (b->x - a->x) * t;
@@ -164,16 +146,10 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
     for (int p = 0; p < MOTE__CLIP_PLANES && n > 0; p++) {
         if (!(planes & (1u << p)))
             continue;
-        float dist[MOTE__MAX_POLY];
-        for (int i = 0; i < n; i++) {
-            float d[MOTE__CLIP_PLANES];
-            mote__plane_dists(cx, &poly[i], d);
-            dist[i] = d[p];
-        }
         int m = 0;
         for (int i = 0; i < n; i++) {
             const mote__cvert *a = &poly[i], *b = &poly[(i + 1) % n];
-            float da = dist[i], db = dist[(i + 1) % n];
+            float da = mote__plane_dist(cx, a, p), db = mote__plane_dist(cx, b, p);
             bool ain = da >= 0.0f, bin = db >= 0.0f;
             if (ain) {
                 tmp[m] = *a;
@@ -205,8 +181,9 @@ static unsigned mote__outcode(const mote__ctx *cx, const mote__cvert *v)
 {
     float d[MOTE__CLIP_PLANES];
     mote__plane_dists(cx, v, d);
-    unsigned c = (unsigned)(d[0] < 0.0f) | (unsigned)(d[1] < 0.0f) << 1 | (unsigned)(d[2] < 0.0f) << 2
-               | (unsigned)(d[3] < 0.0f) << 3 | (unsigned)(d[4] < 0.0f) << 4 | (unsigned)(d[5] < 0.0f) << 5;
+    unsigned c = 0;
+    for (int p = 0; p < MOTE__CLIP_PLANES; p++)
+        c |= (unsigned)(d[p] < 0.0f) << p;
     c |= (unsigned)(v->x > v->w) << 8;
     c |= (unsigned)(v->x < -v->w) << 9;
     c |= (unsigned)(v->y > v->w) << 10;
@@ -251,9 +228,12 @@ static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, in
 {
     if (!(v->w > 0.0f))
         return false;
+    const mote_device *dev = cx->dev;
+    int F = dev->desc.subpixel_bits;
+    int64_t hw = (int64_t)dev->desc.width << (F - 1), hh = (int64_t)dev->desc.height << (F - 1);
     /* the guard band bounds these; the limit only catches float rounding */
-    return mote__snap_axis(v->x / v->w, cx->snap_hw, cx->snap_lim, X)
-        && mote__snap_axis(-(v->y / v->w), cx->snap_hh, cx->snap_lim, Y);
+    int64_t lim = (int64_t)1 << (MOTE_GUARD_BITS + 1 + F);
+    return mote__snap_axis(v->x / v->w, hw, lim, X) && mote__snap_axis(-(v->y / v->w), hh, lim, Y);
 }
 
 /* ---- vertices ------------------------------------------------------------ */
@@ -531,7 +511,9 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         return;
     }
     unsigned any = oc0 | oc1 | oc2;
-    if (any & MOTE__OC_CLIP) {
+    if ((any & MOTE__OC_CLIP) || cx->d.mode == MOTE_MODE_WIREFRAME) {
+        /* wireframe takes the polygon path even unclipped (clipping to no
+         * plane leaves the triangle as it is): lines are not worth a second path */
         mote__clip_polygon(cx, tv, any & MOTE__OC_CLIP);
         return;
     }
@@ -541,11 +523,6 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
     }
     /* no clipping: the cached snapped points, culled before anything else */
     int32_t X[3] = {tv[0]->X, tv[1]->X, tv[2]->X}, Y[3] = {tv[0]->Y, tv[1]->Y, tv[2]->Y};
-    if (cx->d.mode == MOTE_MODE_WIREFRAME) {
-        static const bool orig[3] = {true, true, true};
-        mote__wire_polygon(cx, X, Y, orig, 3);
-        return;
-    }
     mote__fan_triangle(cx, tv, &tv[0]->c, &tv[1]->c, &tv[2]->c, X, Y);
 }
 
@@ -648,9 +625,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     cx.guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);
     cx.guard_y = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.height * 0.5f);
     int F = dev->desc.subpixel_bits;
-    cx.snap_hw = (int64_t)dev->desc.width << (F - 1);
-    cx.snap_hh = (int64_t)dev->desc.height << (F - 1);
-    cx.snap_lim = (int64_t)1 << (MOTE_GUARD_BITS + 1 + F);
 
     mote__raster_state rs_local;
     memset(&rs_local, 0, sizeof rs_local);
@@ -661,8 +635,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         cx.lit = false;
     cx.flat = mode == MOTE_MODE_FLAT && cx.lit;   /* unlit flat is one colour anyway */
     rs_local.gouraud = cx.lit && !cx.flat;
-    if (cx.lit)
-        mote__prepare_lights(&cx);
     bool front_cw = cx.d.front_face == MOTE_FRONT_CW;
     cx.cull_cw = cx.d.cull == (front_cw ? MOTE_CULL_FRONT : MOTE_CULL_BACK);
     cx.cull_ccw = cx.d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);
