@@ -397,10 +397,12 @@ static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], floa
 
 /* A triangle, or one of the fan a clipped one became: counted and dropped
  * when degenerate or culled, else shaded and emitted. tv is the original
- * triangle, whose vertices are shaded (v may point into them). */
-static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], const mote__cvert *v0,
-                               const mote__cvert *v1, const mote__cvert *v2, const int32_t X[3],
-                               const int32_t Y[3])
+ * triangle, whose vertices are shaded (v may point into them). Flat
+ * shading writes the triangle's colour into v's colours, which nothing
+ * else reads in that mode: setup takes them at once, and the next
+ * triangle sharing a vertex writes its own. */
+static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__cvert *v0,
+                               mote__cvert *v1, mote__cvert *v2, const int32_t X[3], const int32_t Y[3])
 {
     int64_t area = mote__area2(X, Y);
     if (area == 0) {
@@ -413,17 +415,12 @@ static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], const mo
     }
     for (int i = 0; i < 3; i++)
         mote__shade(cx, tv[i]);
-    const mote__cvert *v[3] = {v0, v1, v2};
-    mote__cvert flat[3];
     if (cx->flat) {
-        float s[3];
-        mote__flat_shade(cx, tv, s);
-        for (int i = 0; i < 3; i++) {
-            flat[i] = *v[i];
-            memcpy(flat[i].s, s, sizeof s);
-            v[i] = &flat[i];
-        }
+        mote__flat_shade(cx, tv, v0->s);
+        memcpy(v1->s, v0->s, sizeof v0->s);
+        memcpy(v2->s, v0->s, sizeof v0->s);
     }
+    const mote__cvert *v[3] = {v0, v1, v2};
     mote__emit(cx, X, Y, v);
 }
 
