@@ -9,13 +9,15 @@
  * it would otherwise recompute per corner: its outcode and, when it is
  * inside every clip plane, its snapped screen position. */
 typedef struct mote__tvert {
+    /* small fields first, within reach of Thumb-1's short load offsets */
+    uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
+    bool lit;                     /* c.s is final (see mote__shade) */
+    uint16_t outcode;             /* see mote__outcode */
+    uint32_t index;
+    int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
     mote__cvert c;
     float world[3];
     float normal[3];              /* world-space, normalised */
-    int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
-    uint16_t outcode;             /* see mote__outcode */
-    uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
-    uint32_t index;
 } mote__tvert;
 
 /* Direct-mapped vertex cache used without an arena (a power of two; each
@@ -25,86 +27,60 @@ typedef struct mote__tvert {
 #endif
 #define MOTE__SMALL_CACHE MOTE_VERTEX_CACHE
 
-/* A light with what does not depend on the vertex worked out once per draw. */
-typedef struct mote__light_k {
-    mote_light_type type;
-    float col[3];                 /* colour, white for {0,0,0} */
-    float k;                      /* intensity, 1 for 0 */
-    float kcol[3];                /* k * col, the directional and point term's factor */
-    float L[3];                   /* point: position; otherwise toward the light */
-    float rlen;                   /* 1/|L| for directional and hemispheric */
-    const float *ground;
-} mote__light_k;
-
+/* Scalars first: Thumb-1 loads reach only small offsets, so this order
+ * keeps the M0+ code shorter. */
 typedef struct mote__ctx {
     mote_device *dev;
     const mote_mesh *mesh;
-    mote_draw_desc d;
-    float mvp[16], world[16], nrm[9];
+    mote__raster_state *rs;
+    mote__tvert *cache;
+    uint32_t cache_mask;          /* 0: full cache indexed by vertex, filled up front */
+    bool lit, flat;
+    bool cull_cw, cull_ccw;       /* which screen windings are culled */
+    float guard_x, guard_y;       /* guard band in NDC units */
     float color[3];               /* material colour 0..1 */
     float uscale, vscale, uoff, voff;
     float tex_w, tex_h;
-    bool lit, flat;
-    bool cull_cw, cull_ccw;       /* which screen windings are culled */
-    mote__raster_state *rs;
     mote__sink_kind sink;
     const mote__target *tg;
     mote__rect region;
-    float guard_x, guard_y;       /* guard band in NDC units */
-    int64_t snap_hw, snap_hh, snap_lim;
-    mote__tvert *cache;
-    uint32_t cache_mask;          /* 0: full cache indexed by vertex, filled up front */
-    int light_count;
-    mote__light_k lights[MOTE_MAX_LIGHTS];
+    mote_draw_desc d;
+    float nrm[9], mvp[16], world[16];
 } mote__ctx;
 
 /* ---- lighting ------------------------------------------------------------ */
 
-static void mote__prepare_lights(mote__ctx *cx)
-{
-    const mote_frame_desc *f = &cx->dev->frame;
-    cx->light_count = 0;
-    for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
-        const mote_light *l = &f->lights[i];
-        if (l->type != MOTE_LIGHT_POINT && l->type != MOTE_LIGHT_DIRECTIONAL
-            && l->type != MOTE_LIGHT_HEMISPHERIC)
-            continue;
-        mote__light_k *lk = &cx->lights[cx->light_count++];
-        lk->type = l->type;
-        bool black = l->color[0] == 0.0f && l->color[1] == 0.0f && l->color[2] == 0.0f;
-        lk->k = l->intensity != 0.0f ? l->intensity : 1.0f;
-        for (int c = 0; c < 3; c++) {
-            lk->col[c] = black ? 1.0f : l->color[c];
-            lk->kcol[c] = lk->k * lk->col[c];
-        }
-        lk->ground = l->ground_color;
-        float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
-        for (int c = 0; c < 3; c++)
-            lk->L[c] = l->type == MOTE_LIGHT_POINT ? l->position[c] : s * l->direction[c];
-        lk->rlen = mote__rsqrtf(lk->L[0] * lk->L[0] + lk->L[1] * lk->L[1] + lk->L[2] * lk->L[2]);
-    }
-}
-
 static void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
 {
-    const float *amb = cx->dev->frame.ambient;
-    float acc[3] = {amb[0], amb[1], amb[2]};
-    for (int i = 0; i < cx->light_count; i++) {
-        const mote__light_k *l = &cx->lights[i];
-        float ndl;
+    const mote_frame_desc *f = &cx->dev->frame;
+    float acc[3] = {f->ambient[0], f->ambient[1], f->ambient[2]};
+    for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
+        const mote_light *l = &f->lights[i];
+        float col[3] = {l->color[0], l->color[1], l->color[2]};
+        if (col[0] == 0.0f && col[1] == 0.0f && col[2] == 0.0f)
+            col[0] = col[1] = col[2] = 1.0f;
+        float k = l->intensity != 0.0f ? l->intensity : 1.0f;
+        float L[3];
         if (l->type == MOTE_LIGHT_POINT) {
-            float L[3] = {l->L[0] - p[0], l->L[1] - p[1], l->L[2] - p[2]};
-            ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+            L[0] = l->position[0] - p[0];
+            L[1] = l->position[1] - p[1];
+            L[2] = l->position[2] - p[2];
+        } else if (l->type == MOTE_LIGHT_DIRECTIONAL || l->type == MOTE_LIGHT_HEMISPHERIC) {
+            float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
+            L[0] = s * l->direction[0];
+            L[1] = s * l->direction[1];
+            L[2] = s * l->direction[2];
         } else {
-            ndl = (n[0] * l->L[0] + n[1] * l->L[1] + n[2] * l->L[2]) * l->rlen;
+            continue;
         }
+        float ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
-                acc[c] += l->k * (l->col[c] * w + l->ground[c] * (1.0f - w));
+                acc[c] += k * (col[c] * w + l->ground_color[c] * (1.0f - w));
         } else if (ndl > 0.0f) {
             for (int c = 0; c < 3; c++)
-                acc[c] += l->kcol[c] * ndl;
+                acc[c] += k * col[c] * ndl;
         }
     }
     for (int c = 0; c < 3; c++) {
@@ -139,6 +115,13 @@ static void mote__plane_dists(const mote__ctx *cx, const mote__cvert *v, float d
     d[5] = gy - v->y;             /* top */
 }
 
+static float mote__plane_dist(const mote__ctx *cx, const mote__cvert *v, int p)
+{
+    float d[MOTE__CLIP_PLANES];
+    mote__plane_dists(cx, v, d);
+    return d[p];
+}
+
 static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote__cvert *out)
 {
     out->x = a->x + (b->x - a->x) * t;
@@ -163,16 +146,10 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
     for (int p = 0; p < MOTE__CLIP_PLANES && n > 0; p++) {
         if (!(planes & (1u << p)))
             continue;
-        float dist[MOTE__MAX_POLY];
-        for (int i = 0; i < n; i++) {
-            float d[MOTE__CLIP_PLANES];
-            mote__plane_dists(cx, &poly[i], d);
-            dist[i] = d[p];
-        }
         int m = 0;
         for (int i = 0; i < n; i++) {
             const mote__cvert *a = &poly[i], *b = &poly[(i + 1) % n];
-            float da = dist[i], db = dist[(i + 1) % n];
+            float da = mote__plane_dist(cx, a, p), db = mote__plane_dist(cx, b, p);
             bool ain = da >= 0.0f, bin = db >= 0.0f;
             if (ain) {
                 tmp[m] = *a;
@@ -224,25 +201,21 @@ static bool mote__snap_axis(float n, int64_t h, int64_t lim, int32_t *out)
 {
     union { float f; uint32_t u; } b;
     b.f = n;
-    int exp = (int)((b.u >> 23) & 0xff);
+    /* |n| = m * 2^-k with the 24-bit mantissa m; zero and denormals (exponent
+     * field 0) give k = 150, far enough to round to 0 like any k >= 62 */
+    int k = 150 - (int)((b.u >> 23) & 0xff);
+    int64_t p = (int64_t)((b.u & 0x7fffffu) | 0x800000u) * h;  /* < 2^24 * 2^20 */
+    int64_t neg = (int64_t)(b.u >> 31);
     int64_t v;                    /* round_half_up(n * h) */
-    if (exp == 0) {
-        v = 0;                    /* zero or denormal */
+    if (k > 0) {
+        k = k < 62 ? k : 62;
+        /* half up for n >= 0; for n < 0, -round_half_down(|n| h), hence the -1 */
+        int64_t m = (p + ((int64_t)1 << (k - 1)) - neg) >> k;
+        v = neg ? -m : m;
     } else {
-        int64_t p = (int64_t)((b.u & 0x7fffffu) | 0x800000u) * h;  /* < 2^24 * 2^20 */
-        int e = exp - 127 - 23;
-        bool neg = (b.u >> 31) != 0;
-        if (e >= 0) {
-            if (e > 16)
-                return false;     /* |n| >= 2^40: far outside the guard band */
-            v = neg ? -(p << e) : (p << e);
-        } else if (-e >= 62) {
-            v = 0;
-        } else {
-            int k = -e;
-            int64_t half = (int64_t)1 << (k - 1);
-            v = neg ? -((p + half - 1) >> k) : (p + half) >> k;
-        }
+        if (k < -16)
+            return false;         /* |n| >= 2^40: far outside the guard band */
+        v = neg ? -(p << -k) : p << -k;
     }
     v += h;
     if (v <= -lim || v >= lim)
@@ -255,9 +228,12 @@ static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, in
 {
     if (!(v->w > 0.0f))
         return false;
+    const mote_device *dev = cx->dev;
+    int F = dev->desc.subpixel_bits;
+    int64_t hw = (int64_t)dev->desc.width << (F - 1), hh = (int64_t)dev->desc.height << (F - 1);
     /* the guard band bounds these; the limit only catches float rounding */
-    return mote__snap_axis(v->x / v->w, cx->snap_hw, cx->snap_lim, X)
-        && mote__snap_axis(-(v->y / v->w), cx->snap_hh, cx->snap_lim, Y);
+    int64_t lim = (int64_t)1 << (MOTE_GUARD_BITS + 1 + F);
+    return mote__snap_axis(v->x / v->w, hw, lim, X) && mote__snap_axis(-(v->y / v->w), hh, lim, Y);
 }
 
 /* ---- vertices ------------------------------------------------------------ */
@@ -282,12 +258,10 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
                           + cx->nrm[k * 3 + 2] * in->normal[2];
         }
         mote__normalize(tv->normal);
-        if (!cx->flat)
-            mote__light(cx, tv->world, tv->normal, tv->c.s);
-    } else {
-        for (int k = 0; k < 3; k++)
-            tv->c.s[k] = cx->color[k];
     }
+    tv->lit = !cx->lit || cx->flat;
+    for (int k = 0; k < 3; k++)
+        tv->c.s[k] = cx->color[k];
     if (cx->rs->tex != MOTE__TEX_NONE) {
         float u = in->uv[0] * cx->uscale + cx->uoff;
         float v = in->uv[1] * cx->vscale + cx->voff;
@@ -311,15 +285,32 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
     }
 }
 
-/* The full cache is filled before the draw's triangles; the small one on
- * demand, so the entry returned may be evicted by the next lookup. */
-static const mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
+/* Gouraud lighting, the costliest per-vertex step. It cannot make a vertex
+ * invalid, so with the full cache it waits until a triangle using the
+ * vertex survives culling: about half of a closed mesh's vertices are only
+ * on back faces (grid, tex-nearest: 11.6 -> 10.8 ms of draws). Flat
+ * shading's per-vertex part is too cheap to be worth the unpredictable
+ * branch this adds (measured slower deferred). */
+static void mote__shade(const mote__ctx *cx, mote__tvert *tv)
+{
+    if (tv->lit)
+        return;
+    tv->lit = true;
+    mote__light(cx, tv->world, tv->normal, tv->c.s);
+}
+
+/* The full cache is filled before the draw's triangles and shaded on use;
+ * the small one is filled and shaded on demand (its entries are copied and
+ * may be evicted by the next lookup, so shading later would not stick). */
+static mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
 {
     if (!cx->cache_mask)
         return &cx->cache[index];
     mote__tvert *tv = &cx->cache[index & cx->cache_mask];
-    if (tv->state == 0 || tv->index != index)
+    if (tv->state == 0 || tv->index != index) {
         mote__transform(cx, index, tv);
+        mote__shade(cx, tv);
+    }
     return tv;
 }
 
@@ -382,7 +373,7 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
     }
 }
 
-static void mote__flat_shade(const mote__ctx *cx, const mote__tvert *const tv[3], float s[3])
+static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], float s[3])
 {
     float e1[3], e2[3], n[3], c[3];
     for (int k = 0; k < 3; k++) {
@@ -404,87 +395,88 @@ static void mote__flat_shade(const mote__ctx *cx, const mote__tvert *const tv[3]
     mote__light(cx, c, n, s);
 }
 
-/* A convex polygon (the triangle, or what clipping left of it), snapped:
- * culled, then drawn as lines or as a fan of triangles. v[k] are its
- * vertices, tv the original triangle's (for flat shading), orig[k] whether
- * the edge k..k+1 is an original one. */
-static void mote__polygon(mote__ctx *cx, const mote__tvert *const tv[3], const mote__cvert *const v[],
-                          const int32_t X[], const int32_t Y[], const bool orig[], int n)
+/* A triangle, or one of the fan a clipped one became: counted and dropped
+ * when degenerate or culled, else shaded and emitted. tv is the original
+ * triangle, whose vertices are shaded (v may point into them). Flat
+ * shading writes the triangle's colour into v's colours, which nothing
+ * else reads in that mode: setup takes them at once, and the next
+ * triangle sharing a vertex writes its own. */
+static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__cvert *v0,
+                               mote__cvert *v1, mote__cvert *v2, const int32_t X[3], const int32_t Y[3])
 {
-    mote_device *dev = cx->dev;
-    if (cx->d.mode == MOTE_MODE_WIREFRAME) {
-        int64_t area = 0;
-        for (int k = 0; k < n; k++) {
-            int j = (k + 1) % n;
-            area += (int64_t)X[k] * Y[j] - (int64_t)X[j] * Y[k];
-        }
-        if (area != 0 && mote__culled(cx, area)) {
-            dev->stats.triangles_backface++;
-            return;
-        }
-        mote_rgba col = cx->d.point_color;
-        int F = dev->desc.subpixel_bits;
-        dev->stats.triangles_drawn++;
-        for (int k = 0; k < n; k++) {
-            if (!orig[k])
-                continue;
-            int j = (k + 1) % n;
-            mote__draw_line(cx->tg, cx->region, X[k] >> F, Y[k] >> F, X[j] >> F, Y[j] >> F, col);
-        }
+    int64_t area = mote__area2(X, Y);
+    if (area == 0) {
+        cx->dev->stats.triangles_degenerate++;
         return;
     }
+    if (mote__culled(cx, area)) {
+        cx->dev->stats.triangles_backface++;
+        return;
+    }
+    for (int i = 0; i < 3; i++)
+        mote__shade(cx, tv[i]);
+    if (cx->flat) {
+        mote__flat_shade(cx, tv, v0->s);
+        memcpy(v1->s, v0->s, sizeof v0->s);
+        memcpy(v2->s, v0->s, sizeof v0->s);
+    }
+    const mote__cvert *v[3] = {v0, v1, v2};
+    mote__emit(cx, X, Y, v);
+}
 
-    bool shaded = false;
-    float s[3];
-    for (int k = 1; k + 1 < n; k++) {
-        int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
-        int64_t area = mote__area2(tx, ty);
-        if (area == 0) {
-            dev->stats.triangles_degenerate++;
+/* Wireframe: a polygon (the triangle, or what clipping left of it) culled
+ * as a whole, then its original edges (orig[k]: edge k..k+1) drawn. */
+static void mote__wire_polygon(mote__ctx *cx, const int32_t X[], const int32_t Y[], const bool orig[], int n)
+{
+    mote_device *dev = cx->dev;
+    int64_t area = 0;
+    for (int k = 0; k < n; k++) {
+        int j = (k + 1) % n;
+        area += (int64_t)X[k] * Y[j] - (int64_t)X[j] * Y[k];
+    }
+    if (area != 0 && mote__culled(cx, area)) {
+        dev->stats.triangles_backface++;
+        return;
+    }
+    mote_rgba col = cx->d.point_color;
+    int F = dev->desc.subpixel_bits;
+    dev->stats.triangles_drawn++;
+    for (int k = 0; k < n; k++) {
+        if (!orig[k])
             continue;
-        }
-        if (mote__culled(cx, area)) {
-            dev->stats.triangles_backface++;
-            continue;
-        }
-        const mote__cvert *vv[3] = {v[0], v[k], v[k + 1]};
-        mote__cvert flat[3];
-        if (cx->flat) {
-            /* one colour for the whole polygon, worked out once a part of it survives culling */
-            if (!shaded)
-                mote__flat_shade(cx, tv, s);
-            shaded = true;
-            for (int i = 0; i < 3; i++) {
-                flat[i] = *vv[i];
-                memcpy(flat[i].s, s, sizeof s);
-                vv[i] = &flat[i];
-            }
-        }
-        mote__emit(cx, tx, ty, vv);
+        int j = (k + 1) % n;
+        mote__draw_line(cx->tg, cx->region, X[k] >> F, Y[k] >> F, X[j] >> F, Y[j] >> F, col);
     }
 }
 
-static void mote__clip_polygon(mote__ctx *cx, const mote__tvert *const tv[3], unsigned planes)
+static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned planes)
 {
     mote__cvert poly[MOTE__MAX_POLY];
     bool orig[MOTE__MAX_POLY] = {true, true, true};
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
+        mote__shade(cx, tv[k]);   /* clipping interpolates the lit colour */
         poly[k] = tv[k]->c;
+    }
     int n = mote__clip(cx, poly, orig, 3, planes);
     if (n < 3) {
         cx->dev->stats.triangles_clipped_away++;
         return;
     }
     int32_t X[MOTE__MAX_POLY], Y[MOTE__MAX_POLY];
-    const mote__cvert *v[MOTE__MAX_POLY];
     for (int k = 0; k < n; k++) {
         if (!mote__snap(cx, &poly[k], &X[k], &Y[k])) {
             cx->dev->stats.triangles_invalid++;
             return;
         }
-        v[k] = &poly[k];
     }
-    mote__polygon(cx, tv, v, X, Y, orig, n);
+    if (cx->d.mode == MOTE_MODE_WIREFRAME) {
+        mote__wire_polygon(cx, X, Y, orig, n);
+        return;
+    }
+    for (int k = 1; k + 1 < n; k++) {
+        int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
+        mote__fan_triangle(cx, tv, &poly[0], &poly[k], &poly[k + 1], tx, ty);
+    }
 }
 
 static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
@@ -495,13 +487,14 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         dev->stats.triangles_invalid++;
         return;
     }
-    const mote__tvert *tv[3];
+    mote__tvert *tv[3];
     mote__tvert keep[3];
     for (int k = 0; k < 3; k++) {
-        tv[k] = mote__vertex(cx, idx[k]);
-        if (cx->cache_mask) {
+        if (!cx->cache_mask) {
+            tv[k] = &cx->cache[idx[k]];
+        } else {
             /* the small cache's next lookup may evict this entry */
-            keep[k] = *tv[k];
+            keep[k] = *mote__vertex(cx, idx[k]);
             tv[k] = &keep[k];
         }
     }
@@ -515,7 +508,9 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         return;
     }
     unsigned any = oc0 | oc1 | oc2;
-    if (any & MOTE__OC_CLIP) {
+    if ((any & MOTE__OC_CLIP) || cx->d.mode == MOTE_MODE_WIREFRAME) {
+        /* wireframe takes the polygon path even unclipped (clipping to no
+         * plane leaves the triangle as it is): lines are not worth a second path */
         mote__clip_polygon(cx, tv, any & MOTE__OC_CLIP);
         return;
     }
@@ -523,10 +518,9 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         dev->stats.triangles_invalid++;
         return;
     }
-    static const bool orig[3] = {true, true, true};
-    const mote__cvert *v[3] = {&tv[0]->c, &tv[1]->c, &tv[2]->c};
+    /* no clipping: the cached snapped points, culled before anything else */
     int32_t X[3] = {tv[0]->X, tv[1]->X, tv[2]->X}, Y[3] = {tv[0]->Y, tv[1]->Y, tv[2]->Y};
-    mote__polygon(cx, tv, v, X, Y, orig, 3);
+    mote__fan_triangle(cx, tv, &tv[0]->c, &tv[1]->c, &tv[2]->c, X, Y);
 }
 
 /* ---- the draw -------------------------------------------------------------- */
@@ -628,9 +622,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     cx.guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);
     cx.guard_y = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.height * 0.5f);
     int F = dev->desc.subpixel_bits;
-    cx.snap_hw = (int64_t)dev->desc.width << (F - 1);
-    cx.snap_hh = (int64_t)dev->desc.height << (F - 1);
-    cx.snap_lim = (int64_t)1 << (MOTE_GUARD_BITS + 1 + F);
 
     mote__raster_state rs_local;
     memset(&rs_local, 0, sizeof rs_local);
@@ -641,8 +632,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         cx.lit = false;
     cx.flat = mode == MOTE_MODE_FLAT && cx.lit;   /* unlit flat is one colour anyway */
     rs_local.gouraud = cx.lit && !cx.flat;
-    if (cx.lit)
-        mote__prepare_lights(&cx);
     bool front_cw = cx.d.front_face == MOTE_FRONT_CW;
     cx.cull_cw = cx.d.cull == (front_cw ? MOTE_CULL_FRONT : MOTE_CULL_BACK);
     cx.cull_ccw = cx.d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);
