@@ -35,7 +35,12 @@ void every_specialised_span_should_match_the_generic_span(void)
     for (size_t i = 0; i < sizeof texels; i++)
         texels[i] = (uint8_t)next_u32();
     mote_texture tex = {16, 8, MOTE_FORMAT_RGBA8888, 64, texels};
-    int variants = 0;
+    int variants = 0, wide = 0;
+    /* texture addressing: 0 = repeat x mirror (any size), 1 = power-of-two
+     * repeat (its own loop), 2 = the same with texel ranges so wide that
+     * setup lowers the reciprocal's K (the variants hand those to the
+     * generic loop) */
+    for (int addr = 0; addr < 3; addr++)
     for (int fmt = 0; fmt < 2; fmt++)
     for (int dfmt = 0; dfmt < 3; dfmt++)
     for (int texk = 0; texk < 3; texk++)
@@ -50,7 +55,9 @@ void every_specialised_span_should_match_the_generic_span(void)
         rs.tex_w = 16;
         rs.tex_h = 8;
         rs.wrap_u = MOTE_WRAP_REPEAT;
-        rs.wrap_v = MOTE_WRAP_MIRROR;
+        rs.wrap_v = addr == 0 ? MOTE_WRAP_MIRROR : MOTE_WRAP_REPEAT;
+        rs.pow2_repeat = addr != 0;
+        float uv_range = addr == 2 ? 5000.0f : 40.0f;
         rs.gouraud = sk != MOTE__SHADE_FLAT;
         rs.persp = (mote__persp_kind)p;
         rs.subspan_log2 = 3;
@@ -58,7 +65,7 @@ void every_specialised_span_should_match_the_generic_span(void)
         mote__fill_select(&rs, format, depthf);
         mote__fill_fn special = rs.fill[sk];
         TEST_ASSERT_NOT_NULL(special);
-        variants += special != mote__fill_generic;
+        variants += addr == 0 && special != mote__fill_generic;
         mote__raster_state gen = rs;
         for (int k = 0; k < MOTE__SHADE_COUNT; k++)
             gen.fill[k] = mote__fill_generic;
@@ -73,6 +80,7 @@ void every_specialised_span_should_match_the_generic_span(void)
         for (int t = 0; t < 40; t++) {
             mote__cvert v[3];
             int32_t X[3], Y[3];
+            bool grey = (t & 1) != 0;   /* flat: grey or coloured light */
             for (int k = 0; k < 3; k++) {
                 X[k] = (int32_t)(next_u32() % ((W + 20) << 8)) - (10 << 8);
                 Y[k] = (int32_t)(next_u32() % ((H + 20) << 8)) - (10 << 8);
@@ -82,15 +90,17 @@ void every_specialised_span_should_match_the_generic_span(void)
                 /* flat: one shade for all; mono: grey vertices; RGB: any */
                 for (int c = 0; c < 3; c++)
                     v[k].s[c] = sk == MOTE__SHADE_FLAT && k > 0 ? v[0].s[c]
-                              : sk == MOTE__SHADE_MONO && c > 0 ? v[k].s[0] : frand(0.0f, 1.0f);
-                v[k].u = frand(-40.0f, 40.0f);
-                v[k].v = frand(-20.0f, 20.0f);
+                              : (sk == MOTE__SHADE_MONO || (sk == MOTE__SHADE_FLAT && grey)) && c > 0
+                              ? v[k].s[0] : frand(0.0f, 1.0f);
+                v[k].u = frand(-uv_range, uv_range);
+                v[k].v = frand(-uv_range / 2.0f, uv_range / 2.0f);
             }
             const mote__cvert *vp[3] = {&v[0], &v[1], &v[2]};
             mote__tri tri;
             if (!mote__setup(&tri, &rs, X, Y, vp, 8, W, H))
                 continue;
             TEST_ASSERT_EQUAL_INT(sk, tri.shade);
+            wide += tri.rbits != MOTE__RBITS;
             mote__rect all = {0, 0, W, H};
             mote__raster_tri(&tri, &ta, all, 8);
             /* the oracle: the generic loop, interpolating all three channels */
@@ -101,6 +111,8 @@ void every_specialised_span_should_match_the_generic_span(void)
         TEST_ASSERT_EQUAL_MEMORY(cb, ca, sizeof ca);
         TEST_ASSERT_EQUAL_MEMORY(db, da, sizeof da);
     }
+    /* the wide-range triangles really took the other K */
+    TEST_ASSERT_GREATER_THAN_INT(100, wide);
     /* the table really is used for these combinations */
     TEST_ASSERT_EQUAL_INT(2 * 3 * 3 * MOTE__SHADE_COUNT * 3, variants);
 }

@@ -25,6 +25,9 @@
 #define MOTE__SHADE_ONE (1 << 24)
 #define MOTE__DEPTH_MAX ((1u << 24) - 1u)
 #define MOTE__DEPTH_FRAC 16
+/* K of the reciprocal 2^K / (Q >> shift) for all but triangles whose
+ * attributes span more than 2^27 units (setup.c) */
+#define MOTE__RBITS 54
 
 /* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
  * negative numbers (implementation-defined in C99). */

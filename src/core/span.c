@@ -33,6 +33,21 @@
 #define MOTE__INLINE static
 #endif
 
+/* What the host is, for faster forms with the same results: a texel read as
+ * one word on little-endian machines, two channels in one multiplication
+ * where registers are 64 bits wide (not on 32-bit microcontrollers, where a
+ * 64-bit product is a library call). */
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#define MOTE__LITTLE_ENDIAN 1
+#else
+#define MOTE__LITTLE_ENDIAN 0
+#endif
+#if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ >= 8
+#define MOTE__WIDE_REGISTERS 1
+#else
+#define MOTE__WIDE_REGISTERS 0
+#endif
+
 /* Depth buffer selector inside the body. */
 enum { MOTE__D_NONE = 0, MOTE__D_16 = 1, MOTE__D_32 = 2 };
 
@@ -78,20 +93,30 @@ MOTE__INLINE void mote__texel(const mote__tex_view *tx, int x, int y, uint32_t c
     case MOTE_FORMAT_GREY8:
         c[0] = c[1] = c[2] = row[x];
         break;
-    default:
+    default: {
+#if MOTE__LITTLE_ENDIAN
+        uint32_t v;                   /* one load instead of three */
+        memcpy(&v, row + 4 * x, 4);
+        c[0] = v & 0xff;
+        c[1] = (v >> 8) & 0xff;
+        c[2] = (v >> 16) & 0xff;
+#else
         c[0] = row[4 * x];
         c[1] = row[4 * x + 1];
         c[2] = row[4 * x + 2];
+#endif
         break;
+    }
     }
 }
 
 /* Samples the texture at (u, v) in 16.16 texels. */
-MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, int64_t u, int64_t v, uint32_t c[3])
+MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, bool pow2_repeat, int64_t u, int64_t v,
+                               uint32_t c[3])
 {
     if (!bilinear) {
         int tu, tv;
-        if (tx->pow2_repeat) {
+        if (pow2_repeat) {
             tu = (int)(u >> 16) & (tx->w - 1);
             tv = (int)(v >> 16) & (tx->h - 1);
         } else {
@@ -106,7 +131,7 @@ MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, int64_t u
     int iu = (int)(u >> 16), iv = (int)(v >> 16);
     uint32_t fu = (uint32_t)(u >> 8) & 0xff, fv = (uint32_t)(v >> 8) & 0xff;
     int u0, u1, v0, v1;
-    if (tx->pow2_repeat) {
+    if (pow2_repeat) {
         u0 = iu & (tx->w - 1);
         u1 = (iu + 1) & (tx->w - 1);
         v0 = iv & (tx->h - 1);
@@ -155,10 +180,14 @@ MOTE__INLINE int64_t mote__attr(int64_t a0, int64_t n, uint64_t r, int k)
 MOTE__INLINE uint32_t mote__pack(mote_format fmt, uint32_t r, uint32_t g, uint32_t b)
 {
     if (fmt == MOTE_FORMAT_RGBA8888) {
+#if MOTE__LITTLE_ENDIAN
+        return r | g << 8 | b << 16 | 0xff000000u;
+#else
         uint8_t px[4] = {(uint8_t)r, (uint8_t)g, (uint8_t)b, 255};
         uint32_t v;
         memcpy(&v, px, 4);
         return v;
+#endif
     }
     if (fmt == MOTE_FORMAT_GREY8)
         return (77 * r + 150 * g + 29 * b + 128) >> 8;
@@ -166,7 +195,7 @@ MOTE__INLINE uint32_t mote__pack(mote_format fmt, uint32_t r, uint32_t g, uint32
     return fmt == MOTE_FORMAT_RGB565_SWAPPED ? ((v & 0xff) << 8) | (v >> 8) : v;
 }
 
-MOTE__INLINE void mote__store(uint8_t *row, int x, mote_format fmt, uint32_t v)
+MOTE__INLINE void mote__store(uint8_t *row, ptrdiff_t x, mote_format fmt, uint32_t v)
 {
     if (fmt == MOTE_FORMAT_RGBA8888)
         memcpy(row + 4 * x, &v, 4);
@@ -184,6 +213,17 @@ MOTE__INLINE uint32_t mote__modulate(uint32_t c, uint32_t s)
     return (c * s + (1u << 23)) >> 24;
 }
 
+/* mote__modulate of three channels by one shade, for 64-bit registers: r
+ * and b share one product in 32-bit lanes (c s + 2^23 < 2^32, so no lane
+ * carries into the next, and each lane's bits 24..31 are its result). */
+MOTE__INLINE void mote__modulate_grey(uint32_t c[3], uint32_t s)
+{
+    uint64_t rb = ((uint64_t)c[2] << 32 | c[0]) * s + ((uint64_t)1 << 55 | 1u << 23);
+    c[0] = (uint32_t)(rb >> 24) & 0xff;
+    c[1] = mote__modulate(c[1], s);
+    c[2] = (uint32_t)(rb >> 56);
+}
+
 MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
 {
     return v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
@@ -193,10 +233,11 @@ MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
  * locals (see the top of the file). */
 typedef struct mote__fill_ctx {
     int64_t zdx, qdx, ndx[MOTE__ATTRS];
-    int shift, k;
+    int shift;
     int64_t a0[MOTE__ATTRS];
     uint32_t flat_px;             /* the pixel when nothing varies */
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
+    bool grey;                    /* ... and is the same in all three */
     mote__tex_view tx;
     bool test;
     int seg_len;
@@ -206,13 +247,13 @@ typedef struct mote__fill_ctx {
 /* One row: pixels [x0, x1) given the planes' values at x0 (z, Q and the
  * numerator planes n[]). Returns the number of pixels written. */
 MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
-                                   int x0, int x1, int64_t z, int64_t q, const int64_t n[MOTE__ATTRS],
-                                   const int tex, const int shade, const int persp,
-                                   const int dsel, const int dwrite, const mote_format fmt)
+                                   ptrdiff_t x0, ptrdiff_t x1, int64_t z, int64_t q, const int64_t n[MOTE__ATTRS],
+                                   const int tex, const bool pow2, const int shade, const int persp,
+                                   const int dsel, const int dwrite, const mote_format fmt, const int k)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     const int64_t zdx = c->zdx, qdx = c->qdx;
-    const int shift = c->shift, k = c->k;
+    const int shift = c->shift;
     int64_t nr = n[MOTE__A_R], ng = n[MOTE__A_G], nb = n[MOTE__A_B], nu = n[MOTE__A_U], nv = n[MOTE__A_V];
     const int64_t nrdx = c->ndx[MOTE__A_R], ngdx = c->ndx[MOTE__A_G], nbdx = c->ndx[MOTE__A_B];
     const int64_t nudx = c->ndx[MOTE__A_U], nvdx = c->ndx[MOTE__A_V];
@@ -221,11 +262,11 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
      * linear between, so where a region starts a row changes nothing */
     uint64_t seg_r0 = 0;
     int64_t seg_step = 0;
-    int seg_x0 = 0, seg_x1 = x0;
+    ptrdiff_t seg_x0 = 0, seg_x1 = x0;
     bool seg_exact = false;
     uint32_t written = 0;
 
-    for (int x = x0; x < x1; x++, z += zdx, q += qdx, nr += nrdx, ng += ngdx, nb += nbdx, nu += nudx, nv += nvdx) {
+    for (ptrdiff_t x = x0; x < x1; x++, z += zdx, q += qdx, nr += nrdx, ng += ngdx, nb += nbdx, nu += nudx, nv += nvdx) {
         uint32_t depth = 0;
         if (dsel != MOTE__D_NONE) {
             /* z is a convex combination of in-range depths: only rounding
@@ -269,9 +310,16 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
             }
             if (tex) {
                 uint32_t t[3];
-                mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, mote__attr(c->a0[MOTE__A_U], nu, r, k),
+                mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
                              mote__attr(c->a0[MOTE__A_V], nv, r, k), t);
-                px = mote__pack(fmt, mote__modulate(t[0], sr), mote__modulate(t[1], sg), mote__modulate(t[2], sb));
+                if (MOTE__WIDE_REGISTERS && (shade == MOTE__SHADE_MONO || (shade == MOTE__SHADE_FLAT && c->grey))) {
+                    mote__modulate_grey(t, sr);
+                } else {
+                    t[0] = mote__modulate(t[0], sr);
+                    t[1] = mote__modulate(t[1], sg);
+                    t[2] = mote__modulate(t[2], sb);
+                }
+                px = mote__pack(fmt, t[0], t[1], t[2]);
             } else {
                 px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
             }
@@ -288,25 +336,81 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     return written;
 }
 
-/* A whole triangle inside region r: its constants once, then row by row
- * the edge walk and the pixel loop. tfmt: the texture's format when known
- * at compile time (the specialised variants take RGBA8888 textures),
- * MOTE_FORMAT_DEFAULT to read it. */
+/* Row by row: the edge walk, then the pixel loop over the row's span. The
+ * planes are stepped down from their values at column ox of the first
+ * row (unsigned: exact modulo 2^64, see mote__plane_at). */
+MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote__tri *t, const mote__target *tg,
+                             const int tex, const bool pow2, const int shade, const int persp,
+                             const int dsel, const int dwrite, const mote_format fmt, const int k)
+{
+    const bool varying = shade != MOTE__SHADE_FLAT || tex;
+    uint8_t *const color = tg->color;
+    void *const depthbuf = tg->depth;
+    const int stride = tg->stride, width = tg->width, ty0 = tg->y0;
+    const int64_t dy0 = w->y - t->oy;
+    const int64_t zdy = t->zdy, qdy = t->qdy;
+    uint64_t zr = (uint64_t)mote__plane_at(t->z, 0, zdy, 0, dy0);
+    uint64_t qr = 0, nrow[MOTE__ATTRS] = {0};
+    if (varying) {
+        qr = (uint64_t)mote__plane_at(t->q, 0, qdy, 0, dy0);
+        for (int a = 0; a < MOTE__ATTRS; a++)
+            nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], 0, t->n[a][2], 0, dy0);
+    }
+    const int ox = t->ox;
+    uint64_t tested = 0;
+    uint32_t written = 0;
+    for (; w->y < w->yend; zr += (uint64_t)zdy, qr += (uint64_t)qdy) {
+        const int y = w->y;
+        int x0, x1;
+        mote__walk_row(w, &x0, &x1);
+        if (x0 < x1) {
+            const int64_t dx0 = x0 - ox;
+            const size_t drow = (size_t)(y - ty0) * (size_t)width;
+            int64_t n[MOTE__ATTRS] = {0};
+            if (varying)
+                for (int a = 0; a < MOTE__ATTRS; a++)
+                    n[a] = mote__plane_at((int64_t)nrow[a], c->ndx[a], 0, dx0, 0);
+            written += mote__pixels(c, color + (size_t)(y - ty0) * (size_t)stride,
+                                    dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
+                                    dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
+                                    mote__plane_at((int64_t)zr, c->zdx, 0, dx0, 0),
+                                    varying ? mote__plane_at((int64_t)qr, c->qdx, 0, dx0, 0) : 0, n,
+                                    tex, pow2, shade, persp, dsel, dwrite, fmt, k);
+            tested += (uint64_t)(x1 - x0);
+        }
+        if (varying)
+            for (int a = 0; a < MOTE__ATTRS; a++)
+                nrow[a] += (uint64_t)t->n[a][2];
+    }
+    tg->counts->tested += tested;
+    tg->counts->written += written;
+}
+
+/* A whole triangle inside region r: its constants once, then the rows.
+ * tfmt: the texture's format when known at compile time (the specialised
+ * variants take RGBA8888 textures), MOTE_FORMAT_DEFAULT to read it.
+ * fixed_k: the reciprocal's K when known at compile time (the specialised
+ * variants take MOTE__RBITS, what all but huge-range triangles have), 0 to
+ * read it. */
 MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mote__rect r, int F,
                                   const int tex, const mote_format tfmt, const int shade, const int persp,
-                                  const int dsel, const int dwrite, const mote_format fmt)
+                                  const int dsel, const int dwrite, const mote_format fmt, const int fixed_k)
 {
+    if (fixed_k && t->rbits != fixed_k) {
+        mote__fill_generic(t, tg, r, F);
+        return;
+    }
     mote__walk w;
     if (!mote__walk_begin(&w, t, r, F))
         return;
     const mote__raster_state *rs = t->rs;
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
+    const int k = fixed_k ? fixed_k : t->rbits;
     mote__fill_ctx c;
     memset(&c, 0, sizeof c);
     c.zdx = t->zdx;
     c.qdx = t->qdx;
     c.shift = t->shift;
-    c.k = t->rbits;
     for (int a = 0; a < MOTE__ATTRS; a++) {
         c.a0[a] = t->a0[a];
         c.ndx[a] = t->n[a][1];
@@ -316,6 +420,7 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     c.sr = mote__clamp_shade(c.a0[MOTE__A_R]);
     c.sg = mote__clamp_shade(c.a0[MOTE__A_G]);
     c.sb = mote__clamp_shade(c.a0[MOTE__A_B]);
+    c.grey = c.sr == c.sg && c.sg == c.sb;
     c.flat_px = mote__pack(fmt, mote__modulate(255, c.sr), mote__modulate(255, c.sg), mote__modulate(255, c.sb));
     if (tex) {
         c.tx.pixels = (const uint8_t *)rs->texture->pixels;
@@ -330,49 +435,15 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     c.test = rs->depth_test;
     c.seg_len = 1 << rs->subspan_log2;
     if (varying && persp == MOTE__PERSP_AFFINE)
-        c.affine_r = mote__recip_k(t->q, t->shift, t->rbits);
-    uint8_t *const color = tg->color;
-    void *const depthbuf = tg->depth;
-    const int stride = tg->stride, width = tg->width, ty0 = tg->y0;
-    /* the planes at column ox of the current row, stepped down row by row
-     * (unsigned: exact modulo 2^64, see mote__plane_at) */
-    const int64_t dy0 = w.y - t->oy;
-    const int64_t zdy = t->zdy, qdy = t->qdy;
-    uint64_t zr = (uint64_t)mote__plane_at(t->z, 0, zdy, 0, dy0);
-    uint64_t qr = 0, nrow[MOTE__ATTRS] = {0};
-    if (varying) {
-        qr = (uint64_t)mote__plane_at(t->q, 0, qdy, 0, dy0);
-        for (int a = 0; a < MOTE__ATTRS; a++)
-            nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], 0, t->n[a][2], 0, dy0);
+        c.affine_r = mote__recip_k(t->q, t->shift, k);
+#if MOTE_SPECIALISE_SPANS
+    /* a power-of-two repeating texture: its own loop, texel addresses by masks */
+    if (tex && c.tx.pow2_repeat) {
+        mote__rows(&c, &w, t, tg, tex, true, shade, persp, dsel, dwrite, fmt, k);
+        return;
     }
-    const int ox = t->ox;
-    uint64_t tested = 0;
-    uint32_t written = 0;
-    for (; w.y < w.yend; zr += (uint64_t)zdy, qr += (uint64_t)qdy) {
-        const int y = w.y;
-        int x0, x1;
-        mote__walk_row(&w, &x0, &x1);
-        if (x0 < x1) {
-            const int64_t dx0 = x0 - ox;
-            const size_t drow = (size_t)(y - ty0) * (size_t)width;
-            int64_t n[MOTE__ATTRS] = {0};
-            if (varying)
-                for (int a = 0; a < MOTE__ATTRS; a++)
-                    n[a] = mote__plane_at((int64_t)nrow[a], c.ndx[a], 0, dx0, 0);
-            written += mote__pixels(&c, color + (size_t)(y - ty0) * (size_t)stride,
-                                    dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
-                                    dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
-                                    mote__plane_at((int64_t)zr, c.zdx, 0, dx0, 0),
-                                    varying ? mote__plane_at((int64_t)qr, c.qdx, 0, dx0, 0) : 0, n,
-                                    tex, shade, persp, dsel, dwrite, fmt);
-            tested += (uint64_t)(x1 - x0);
-        }
-        if (varying)
-            for (int a = 0; a < MOTE__ATTRS; a++)
-                nrow[a] += (uint64_t)t->n[a][2];
-    }
-    tg->counts->tested += tested;
-    tg->counts->written += written;
+#endif
+    mote__rows(&c, &w, t, tg, tex, c.tx.pow2_repeat, shade, persp, dsel, dwrite, fmt, k);
 }
 
 void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)
@@ -390,7 +461,7 @@ void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r
     const mote__raster_state *rs = t->rs;
     int dsel = (rs->depth_test || rs->depth_write) ? mote__dsel(tg->depth_format) : MOTE__D_NONE;
     mote__fill_body(t, tg, r, F, rs->tex, MOTE_FORMAT_DEFAULT, t->shade, rs->persp, dsel,
-                    rs->depth_write, tg->format);
+                    rs->depth_write, tg->format, 0);
 }
 
 #if MOTE_SPECIALISE_SPANS
@@ -407,7 +478,7 @@ void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r
     static void mote__fill_##T##S##P##D##_##F(const mote__tri *t, const mote__target *tg,   \
                                               mote__rect r, int bits)                       \
     {                                                                                       \
-        mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, 1, MOTE_FORMAT_##F); \
+        mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, 1, MOTE_FORMAT_##F, MOTE__RBITS); \
     }
 MOTE__ALL(MOTE__DEFINE)
 #undef MOTE__DEFINE
