@@ -73,7 +73,7 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
         } else {
             continue;
         }
-        float ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+        float ndl = mote__dot3(n, L) * mote__rsqrtf(mote__dot3(L, L));
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
@@ -92,7 +92,7 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
 
 static void mote__normalize(float v[3])
 {
-    float k = mote__rsqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    float k = mote__rsqrtf(mote__dot3(v, v));
     v[0] *= k;
     v[1] *= k;
     v[2] *= k;
@@ -122,16 +122,18 @@ static float mote__plane_dist(const mote__ctx *cx, const mote__cvert *v, int p)
     return d[p];
 }
 
+/* every field of a vertex, as one array of floats */
+#define MOTE__CVERT_FLOATS (sizeof(mote__cvert) / sizeof(float))
+typedef char mote__cvert_is_floats[sizeof(mote__cvert) == 9 * sizeof(float) ? 1 : -1];
+
 static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote__cvert *out)
 {
-    out->x = a->x + (b->x - a->x) * t;
-    out->y = a->y + (b->y - a->y) * t;
-    out->z = a->z + (b->z - a->z) * t;
-    out->w = a->w + (b->w - a->w) * t;
-    for (int k = 0; k < 3; k++)
-        out->s[k] = a->s[k] + (b->s[k] - a->s[k]) * t;
-    out->u = a->u + (b->u - a->u) * t;
-    out->v = a->v + (b->v - a->v) * t;
+    float fa[MOTE__CVERT_FLOATS], fb[MOTE__CVERT_FLOATS];
+    memcpy(fa, a, sizeof fa);
+    memcpy(fb, b, sizeof fb);
+    for (size_t k = 0; k < MOTE__CVERT_FLOATS; k++)
+        fa[k] += (fb[k] - fa[k]) * t;
+    memcpy(out, fa, sizeof fa);
 }
 
 /* Sutherland-Hodgman in homogeneous space. orig[i] tells whether the edge
@@ -244,24 +246,22 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
     tv->index = index;
     float out[4];
     mote__mat4_point(cx->mvp, in->position, out);
-    tv->c.x = out[0];
-    tv->c.y = out[1];
-    tv->c.z = out[2];
-    tv->c.w = out[3];
-    tv->state = (mote__finite(out[0]) && mote__finite(out[1]) && mote__finite(out[2]) && mote__finite(out[3])) ? 1 : 2;
+    memcpy(&tv->c, out, sizeof out);        /* x, y, z, w */
+    tv->state = 1;
+    for (int k = 0; k < 4; k++)
+        if (!mote__finite(out[k]))
+            tv->state = 2;
     if (cx->lit) {
         float wp[4];
         mote__mat4_point(cx->world, in->position, wp);
         for (int k = 0; k < 3; k++) {
             tv->world[k] = wp[k];
-            tv->normal[k] = cx->nrm[k * 3 + 0] * in->normal[0] + cx->nrm[k * 3 + 1] * in->normal[1]
-                          + cx->nrm[k * 3 + 2] * in->normal[2];
+            tv->normal[k] = mote__dot3(&cx->nrm[k * 3], in->normal);
         }
         mote__normalize(tv->normal);
     }
     tv->lit = !cx->lit || cx->flat;
-    for (int k = 0; k < 3; k++)
-        tv->c.s[k] = cx->color[k];
+    memcpy(tv->c.s, cx->color, sizeof tv->c.s);
     if (cx->rs->tex != MOTE__TEX_NONE) {
         float u = in->uv[0] * cx->uscale + cx->uoff;
         float v = in->uv[1] * cx->vscale + cx->voff;
@@ -269,8 +269,8 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
             v = 1.0f - v;
         tv->c.u = u * cx->tex_w;
         tv->c.v = v * cx->tex_h;
-        if (!mote__finite(tv->c.u) || !mote__finite(tv->c.v) || tv->c.u > 1e9f || tv->c.u < -1e9f
-            || tv->c.v > 1e9f || tv->c.v < -1e9f)
+        /* also false for NaN and +-Inf */
+        if (!(tv->c.u >= -1e9f && tv->c.u <= 1e9f && tv->c.v >= -1e9f && tv->c.v <= 1e9f))
             tv->state = 2;
     } else {
         tv->c.u = tv->c.v = 0.0f;
@@ -375,20 +375,16 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
 
 static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], float s[3])
 {
-    float e1[3], e2[3], n[3], c[3];
+    float e1[3], e2[3], n[3], c[3], vsum[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = tv[1]->world[k] - tv[0]->world[k];
         e2[k] = tv[2]->world[k] - tv[0]->world[k];
         c[k] = (tv[0]->world[k] + tv[1]->world[k] + tv[2]->world[k]) / 3.0f;
+        vsum[k] = tv[0]->normal[k] + tv[1]->normal[k] + tv[2]->normal[k];
     }
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    mote__cross3(e1, e2, n);
     /* orient like the vertex normals, which say where outside is */
-    float vn = 0.0f;
-    for (int k = 0; k < 3; k++)
-        vn += n[k] * (tv[0]->normal[k] + tv[1]->normal[k] + tv[2]->normal[k]);
-    if (vn < 0.0f)
+    if (mote__dot3(n, vsum) < 0.0f)
         for (int k = 0; k < 3; k++)
             n[k] = -n[k];
     mote__normalize(n);
@@ -628,8 +624,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     mote_mode mode = cx.d.mode;
     bool tri_mode = mode == MOTE_MODE_FLAT || mode == MOTE_MODE_GOURAUD || mode == MOTE_MODE_TEXTURED;
     cx.lit = tri_mode && !cx.d.unlit;
-    if (cx.d.unlit)
-        cx.lit = false;
     cx.flat = mode == MOTE_MODE_FLAT && cx.lit;   /* unlit flat is one colour anyway */
     rs_local.gouraud = cx.lit && !cx.flat;
     bool front_cw = cx.d.front_face == MOTE_FRONT_CW;
@@ -647,8 +641,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
                             : mat->texture->width * mote_format_bytes(mat->texture->format);
         rs_local.wrap_u = (mat->wrap_u > MOTE_WRAP_DEFAULT && mat->wrap_u < MOTE_WRAP_COUNT) ? mat->wrap_u : MOTE_WRAP_REPEAT;
         rs_local.wrap_v = (mat->wrap_v > MOTE_WRAP_DEFAULT && mat->wrap_v < MOTE_WRAP_COUNT) ? mat->wrap_v : MOTE_WRAP_REPEAT;
-        if (!cx.lit)
-            rs_local.gouraud = false;
         rs_local.pow2_repeat = rs_local.wrap_u == MOTE_WRAP_REPEAT && rs_local.wrap_v == MOTE_WRAP_REPEAT
                             && (rs_local.tex_w & (rs_local.tex_w - 1)) == 0
                             && (rs_local.tex_h & (rs_local.tex_h - 1)) == 0;

@@ -41,6 +41,7 @@ void mote__mat4_point(const float m[16], const float p[3], float out[4]);
 /* Inverse-transpose of the upper 3x3 up to scale (the cofactor matrix, for
  * normals), row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
 void mote__normal_matrix(const float m[16], float out[9]);
+void mote__cross3(const float a[3], const float b[3], float out[3]);
 float mote__sqrtf(float x);
 float mote__rsqrtf(float x);   /* 0 for 0, negative, NaN, Inf */
 
@@ -52,6 +53,11 @@ static inline bool mote__finite(float x)
     union { float f; uint32_t u; } b;
     b.f = x;
     return (b.u & 0x7f800000u) != 0x7f800000u;
+}
+
+static inline float mote__dot3(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 /* A vertex after the vertex stage: clip position and the attributes that
