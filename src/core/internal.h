@@ -26,9 +26,17 @@
 #define MOTE__DEPTH_MAX ((1u << 24) - 1u)
 #define MOTE__DEPTH_FRAC 16
 
+/* Inline in speed builds; out of line in size builds (-Os), where each
+ * copy is a long 64-bit shift sequence on a 32-bit core. */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define MOTE__SPEED_INLINE static __attribute__((unused, noinline))
+#else
+#define MOTE__SPEED_INLINE static inline
+#endif
+
 /* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
  * negative numbers (implementation-defined in C99). */
-static inline int64_t mote__floor_shift64(int64_t v, int k)
+MOTE__SPEED_INLINE int64_t mote__floor_shift64(int64_t v, int k)
 {
     return v >= 0 ? (int64_t)((uint64_t)v >> k) : (int64_t)~(~(uint64_t)v >> k);
 }
@@ -165,7 +173,7 @@ bool mote__walk_begin(mote__walk *w, const struct mote__tri *t, mote__rect r, in
 /* at row ymid: the short edge becomes b-c */
 void mote__walk_switch(mote__walk *w);
 
-static inline void mote__edge_step(mote__edge *e)
+MOTE__SPEED_INLINE void mote__edge_step(mote__edge *e)
 {
     e->x += e->qstep;
     e->err -= e->rstep;
