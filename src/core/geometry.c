@@ -347,7 +347,7 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
         return;
     }
     dev->stats.triangles_drawn++;
-    if (cx->sink == MOTE__SINK_RASTER) {
+    if (!MOTE_ENABLE_BINNING || cx->sink == MOTE__SINK_RASTER) {
         mote__raster_tri(&t, cx->tg, cx->region, dev->desc.subpixel_bits);
     } else {
         if (!mote__bin_triangle(dev, &t)) {
@@ -420,6 +420,7 @@ static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__cv
     mote__emit(cx, X, Y, v);
 }
 
+#if MOTE_ENABLE_LINES
 /* Wireframe: a polygon (the triangle, or what clipping left of it) culled
  * as a whole, then its original edges (orig[k]: edge k..k+1) drawn. */
 static void mote__wire_polygon(mote__ctx *cx, const int32_t X[], const int32_t Y[], const bool orig[], int n)
@@ -444,6 +445,7 @@ static void mote__wire_polygon(mote__ctx *cx, const int32_t X[], const int32_t Y
         mote__draw_line(cx->tg, cx->region, X[k] >> F, Y[k] >> F, X[j] >> F, Y[j] >> F, col);
     }
 }
+#endif
 
 static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned planes)
 {
@@ -465,10 +467,12 @@ static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned
             return;
         }
     }
+#if MOTE_ENABLE_LINES
     if (cx->d.mode == MOTE_MODE_WIREFRAME) {
         mote__wire_polygon(cx, X, Y, orig, n);
         return;
     }
+#endif
     for (int k = 1; k + 1 < n; k++) {
         int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
         mote__fan_triangle(cx, tv, &poly[0], &poly[k], &poly[k + 1], tx, ty);
@@ -504,7 +508,7 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         return;
     }
     unsigned any = oc0 | oc1 | oc2;
-    if ((any & MOTE__OC_CLIP) || cx->d.mode == MOTE_MODE_WIREFRAME) {
+    if ((any & MOTE__OC_CLIP) || (MOTE_ENABLE_LINES && cx->d.mode == MOTE_MODE_WIREFRAME)) {
         /* wireframe takes the polygon path even unclipped (clipping to no
          * plane leaves the triangle as it is): lines are not worth a second path */
         mote__clip_polygon(cx, tv, any & MOTE__OC_CLIP);
@@ -521,24 +525,28 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
 
 /* ---- the draw -------------------------------------------------------------- */
 
-void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh, mote_draw_desc *out)
+/* An enum value of a desc: v when it is a valid non-default one (in
+ * (0, count)), else def. */
+static int mote__enum_or(int v, int count, int def)
+{
+    return v > 0 && v < count ? v : def;
+}
+
+mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh, mote_draw_desc *out)
 {
     if (in)
         *out = *in;
     else
         memset(out, 0, sizeof *out);
-    if (out->mode <= MOTE_MODE_DEFAULT || out->mode >= MOTE_MODE_COUNT)
-        out->mode = MOTE_MODE_TEXTURED;
-    if (out->cull <= MOTE_CULL_DEFAULT || out->cull >= MOTE_CULL_COUNT)
-        out->cull = MOTE_CULL_BACK;
-    if (out->perspective <= MOTE_PERSPECTIVE_DEFAULT || out->perspective >= MOTE_PERSPECTIVE_COUNT)
-        out->perspective = MOTE_PERSPECTIVE_CORRECT;
+    out->mode = (mote_mode)mote__enum_or(out->mode, MOTE_MODE_COUNT, MOTE_MODE_TEXTURED);
+    out->cull = (mote_cull)mote__enum_or(out->cull, MOTE_CULL_COUNT, MOTE_CULL_BACK);
+    out->perspective = (mote_perspective)mote__enum_or(out->perspective, MOTE_PERSPECTIVE_COUNT,
+                                                       MOTE_PERSPECTIVE_CORRECT);
     if (out->subspan_log2 <= 0)
         out->subspan_log2 = 3;
     if (out->subspan_log2 > 6)
         out->subspan_log2 = 6;
-    if (out->filter <= MOTE_FILTER_DEFAULT || out->filter >= MOTE_FILTER_COUNT)
-        out->filter = MOTE_FILTER_NEAREST;
+    out->filter = (mote_filter)mote__enum_or(out->filter, MOTE_FILTER_COUNT, MOTE_FILTER_NEAREST);
     if (out->point_color.r == 0 && out->point_color.g == 0 && out->point_color.b == 0
         && out->point_color.a == 0) {
         if (mesh->material.color_set)
@@ -547,6 +555,12 @@ void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh, mo
             out->point_color.r = out->point_color.g = out->point_color.b = 255;
         out->point_color.a = 255;
     }
+    /* features the build left out (MOTE_ENABLE_* in mote.h) */
+    if ((!MOTE_ENABLE_LINES && (out->mode == MOTE_MODE_POINTS || out->mode == MOTE_MODE_WIREFRAME))
+        || (!MOTE_ENABLE_BILINEAR && out->filter == MOTE_FILTER_BILINEAR)
+        || (!MOTE_ENABLE_SUBSPAN && out->perspective == MOTE_PERSPECTIVE_SUBSPAN))
+        return MOTE_ERR_UNSUPPORTED;
+    return MOTE_OK;
 }
 
 static bool mote__texture_ok(const mote_texture *t)
@@ -571,7 +585,7 @@ static bool mote__mesh_outside(const mote__ctx *cx)
     mote__mat4_point(cx->mvp, m->bounds_center, c);
     for (int p = 0; p < 6; p++) {
         const float *P = planes[p];
-        float f = P[0] * c[0] + P[1] * c[1] + P[2] * c[2] + P[3] * c[3];
+        float f = mote__dot3(P, c) + P[3] * c[3];
         float g2 = 0.0f;
         for (int j = 0; j < 3; j++) {
             float g = 0.0f;
@@ -595,7 +609,9 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     memset(&cx, 0, sizeof cx);
     cx.dev = dev;
     cx.mesh = mesh;
-    mote__resolve_draw_desc(desc, mesh, &cx.d);
+    mote_result res = mote__resolve_draw_desc(desc, mesh, &cx.d);
+    if (res != MOTE_OK)
+        return res;
     cx.sink = sink;
     cx.tg = tg;
     cx.region = region;
@@ -639,8 +655,8 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         cx.tex_h = (float)rs_local.tex_h;
         rs_local.tex_stride = mat->texture->stride > 0 ? mat->texture->stride
                             : mat->texture->width * mote_format_bytes(mat->texture->format);
-        rs_local.wrap_u = (mat->wrap_u > MOTE_WRAP_DEFAULT && mat->wrap_u < MOTE_WRAP_COUNT) ? mat->wrap_u : MOTE_WRAP_REPEAT;
-        rs_local.wrap_v = (mat->wrap_v > MOTE_WRAP_DEFAULT && mat->wrap_v < MOTE_WRAP_COUNT) ? mat->wrap_v : MOTE_WRAP_REPEAT;
+        rs_local.wrap_u = (mote_wrap)mote__enum_or(mat->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+        rs_local.wrap_v = (mote_wrap)mote__enum_or(mat->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
         rs_local.pow2_repeat = rs_local.wrap_u == MOTE_WRAP_REPEAT && rs_local.wrap_v == MOTE_WRAP_REPEAT
                             && (rs_local.tex_w & (rs_local.tex_w - 1)) == 0
                             && (rs_local.tex_h & (rs_local.tex_h - 1)) == 0;
@@ -659,7 +675,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
 
     size_t cache_bytes = 0;
     mote__tvert small_cache[MOTE__SMALL_CACHE];
-    if (sink == MOTE__SINK_BIN) {
+    if (MOTE_ENABLE_BINNING && sink == MOTE__SINK_BIN) {
         mote__raster_state *rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
         if (!rs) {
             mote__bin_flush(dev);
@@ -686,7 +702,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         cx.cache_mask = MOTE__SMALL_CACHE - 1;
     }
 
-    if (mode == MOTE_MODE_POINTS) {
+    if (MOTE_ENABLE_LINES && mode == MOTE_MODE_POINTS) {
         for (uint32_t i = 0; i < mesh->vertex_count; i++) {
             const mote__tvert *tv = mote__vertex(&cx, i);
             /* inside the viewport and every clip plane, and snapped */
@@ -701,7 +717,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         for (uint32_t i = 0; i < tris; i++)
             mote__triangle(&cx, &mesh->indices[3 * i]);
     }
-    if (cache_bytes)
+    if (MOTE_ENABLE_BINNING && cache_bytes)
         mote__bin_top_release(dev, cache_bytes);
     return MOTE_OK;
 }

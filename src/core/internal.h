@@ -225,8 +225,10 @@ typedef enum mote__sink_kind { MOTE__SINK_RASTER, MOTE__SINK_BIN } mote__sink_ki
 mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh,
                                const mote_draw_desc *desc, mote__sink_kind sink,
                                const mote__target *tg, mote__rect region);
-void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh,
-                             mote_draw_desc *out);
+/* Fills the defaults in; MOTE_ERR_UNSUPPORTED for a feature left out of
+ * the build. */
+mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh,
+                                    mote_draw_desc *out);
 
 /* bin.c */
 void mote__bin_reset(mote_device *dev);

@@ -10,6 +10,8 @@
  */
 #include "internal.h"
 
+#if MOTE_ENABLE_LINES
+
 /* Endpoints come from snapped vertices, |coordinate| < 2^(MOTE_GUARD_BITS
  * + 1), so a step along the major axis times the minor extent is under
  * 2^(2 MOTE_GUARD_BITS + 4): 32-bit with the default guard band (no 64-bit
@@ -63,3 +65,5 @@ void mote__draw_line(const mote__target *tg, mote__rect r, int x0, int y0, int x
             mote__draw_pixel(tg, r, (int)a, (int)b, color);
     }
 }
+
+#endif /* MOTE_ENABLE_LINES */
