@@ -1,8 +1,10 @@
 #!/bin/sh
 # Prints .text/.data/.bss of each cross target: the core archive as
-# compiled, and the linked firmware example split by where the bytes come
-# from (after --gc-sections), read from the link map:
-#   core      the mote core objects the example keeps (libmote.a)
+# compiled with every feature (libmote.a) and in the firmware profile
+# (libmote-fw.a, MOTE_ENABLE_* features the example does not use left
+# out), and the linked firmware example split by where the bytes come from
+# (after --gc-sections), read from the link map:
+#   core      the mote core objects the example keeps (libmote-fw.a)
 #   libgcc    soft-float and 64-bit helpers the core and example pull in
 #   example   startup, semihosting, mini libc, main and the baked scene
 # .text here is everything in flash (code and read-only data).
@@ -22,7 +24,7 @@ map_sizes() {
         return v
     }
     function add(name, size, file,   part, kind) {
-        if (file ~ /libmote\.a\(/) part = "core"
+        if (file ~ /libmote(-fw)?\.a\(/) part = "core"
         else if (file ~ /libgcc\.a\(/) part = "libgcc"
         else part = "example"
         if (name ~ /^\.(text|rodata|srodata|ARM\.exidx)/) kind = "text"
@@ -54,6 +56,7 @@ for t in "$@"; do
         *) size=arm-none-eabi-size ;;
     esac
     $size -t "$dir/$t/libmote.a" | awk -v t="$t" 'END { printf "%-14s %-28s %7d %6d %6d\n", t, "core, all of libmote.a", $1, $2, $3 }'
+    $size -t "$dir/$t/libmote-fw.a" | awk -v t="$t" 'END { printf "%-14s %-28s %7d %6d %6d\n", t, "core, firmware profile (.a)", $1, $2, $3 }'
     map_sizes "$dir/$t/mote-firmware.map" | while read -r part text data bss; do
         printf '%-14s %-28s %7d %6d %6d\n' "$t" "firmware: $part" "$text" "$data" "$bss"
     done

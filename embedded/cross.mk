@@ -12,6 +12,11 @@
 # division. The core is built with -DMOTE_SPECIALISE_SPANS=0 (one generic
 # span loop, small flash) and the firmware with -DMOTE_MAX_DRAWS=8 (a small
 # mote_device).
+#
+# Two archives per target: libmote.a with every feature, and libmote-fw.a,
+# the firmware profile, with the features the example does not use left out
+# (CROSS_PROFILE, see MOTE_ENABLE_* in mote.h). The firmware links the
+# profile; the host reference it is compared with has every feature.
 
 CROSS_DIR     := $(BUILD)/cross
 CROSS_TARGETS := cortex-m0plus cortex-m4f rv32imac
@@ -37,6 +42,8 @@ CROSS_CFLAGS := -std=c99 -Os -g -ffp-contract=off -ffreestanding -nostdinc \
                 -Iinclude -Isrc -Iembedded/include -I$(CROSS_DIR)/sysinclude \
                 -DMOTE_MAX_DRAWS=8
 CROSS_CORE_FLAGS := -DMOTE_SPECIALISE_SPANS=0
+CROSS_PROFILE := -DMOTE_ENABLE_LINES=0 -DMOTE_ENABLE_BINNING=0 -DMOTE_ENABLE_BILINEAR=0 \
+                 -DMOTE_ENABLE_SUBSPAN=0
 CROSS_LDFLAGS := -nostdlib -Wl,--gc-sections
 
 # The firmware example's scene, baked at build time.
@@ -62,6 +69,7 @@ $(CROSS_CGLM): | $(DEPS_OK)
 # (with a link map, for the per-archive sizes) and its listing of sizes.
 define CROSS_TARGET_RULES
 CROSS_CORE_OBJ.$(1) := $$(patsubst src/core/%.c,$(CROSS_DIR)/$(1)/core/%.o,$$(CORE_SRC))
+CROSS_PROF_OBJ.$(1) := $$(patsubst src/core/%.c,$(CROSS_DIR)/$(1)/core-fw/%.o,$$(CORE_SRC))
 CROSS_FW_OBJ.$(1)   := $$(patsubst embedded/%,$(CROSS_DIR)/$(1)/fw/%.o,$$(FW_SRC) $$(CROSS_START.$(1)))
 
 $(CROSS_DIR)/$(1)/core/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) | $(CROSS_CGLM)
@@ -69,29 +77,39 @@ $(CROSS_DIR)/$(1)/core/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_CORE_FLAGS) \
 	    -isystem $$$$($$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) -print-file-name=include) -c $$< -o $$@
 
+$(CROSS_DIR)/$(1)/core-fw/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) | $(CROSS_CGLM)
+	@mkdir -p $$(dir $$@)
+	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_CORE_FLAGS) $$(CROSS_PROFILE) \
+	    -isystem $$$$($$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) -print-file-name=include) -c $$< -o $$@
+
 $(CROSS_DIR)/$(1)/fw/%.o: embedded/% $(FW_HEADER) $$(FW_DEPS) | $(CROSS_CGLM)
 	@mkdir -p $$(dir $$@)
-	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) -Iembedded/firmware -I$(dir $(FW_HEADER)) \
+	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_PROFILE) -Iembedded/firmware -I$(dir $(FW_HEADER)) \
 	    -isystem $$$$($$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) -print-file-name=include) -c $$< -o $$@
 
 $(CROSS_DIR)/$(1)/libmote.a: $$(CROSS_CORE_OBJ.$(1))
 	@rm -f $$@
 	$$(CROSS_CC.$(1):gcc=ar) rcs $$@ $$^
 
-$(CROSS_DIR)/$(1)/mote-firmware.elf: $$(CROSS_FW_OBJ.$(1)) $(CROSS_DIR)/$(1)/libmote.a $$(CROSS_LD.$(1))
+$(CROSS_DIR)/$(1)/libmote-fw.a: $$(CROSS_PROF_OBJ.$(1))
+	@rm -f $$@
+	$$(CROSS_CC.$(1):gcc=ar) rcs $$@ $$^
+
+$(CROSS_DIR)/$(1)/mote-firmware.elf: $$(CROSS_FW_OBJ.$(1)) $(CROSS_DIR)/$(1)/libmote-fw.a $$(CROSS_LD.$(1))
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_LDFLAGS) -T $$(CROSS_LD.$(1)) \
 	    -Wl,-Map=$(CROSS_DIR)/$(1)/mote-firmware.map $$(CROSS_FW_OBJ.$(1)) \
-	    $(CROSS_DIR)/$(1)/libmote.a -lgcc -o $$@
+	    $(CROSS_DIR)/$(1)/libmote-fw.a -lgcc -o $$@
 endef
 $(foreach t,$(CROSS_TARGETS),$(eval $(call CROSS_TARGET_RULES,$(t))))
 
-cross-build: $(foreach t,$(CROSS_TARGETS),$(CROSS_DIR)/$(t)/libmote.a $(CROSS_DIR)/$(t)/mote-firmware.elf)
+cross-build: $(foreach t,$(CROSS_TARGETS),$(CROSS_DIR)/$(t)/libmote.a $(CROSS_DIR)/$(t)/libmote-fw.a \
+                                           $(CROSS_DIR)/$(t)/mote-firmware.elf)
 
 # The same firmware source on the host, with the same baked header and
 # MOTE_MAX_DRAWS, for the reference hash. The core is compiled in (not
-# libmote.a, whose mote_device has the default MOTE_MAX_DRAWS) and keeps
-# its specialised spans, so the comparison also checks them against the
-# generic loop the targets use.
+# libmote.a, whose mote_device has the default MOTE_MAX_DRAWS), keeps its
+# specialised spans and every feature, so the comparison also checks them
+# against the generic loop and the firmware profile the targets use.
 $(CROSS_DIR)/host/mote-firmware: embedded/firmware/main.c embedded/firmware/platform_host.c \
         $(CORE_SRC) $(FW_HEADER) $(FW_DEPS) | $(DEPS_OK)
 	@mkdir -p $(dir $@)

@@ -24,10 +24,12 @@ typedef struct mote__block {
 
 static size_t mote__align(size_t n) { return (n + 7u) & ~(size_t)7u; }
 
+#if MOTE_ENABLE_BINNING  /* mote.h; mote_arena_bytes_per_triangle() stays */
 static size_t mote__tiles_bytes(const mote_device *dev)
 {
     return mote__align((size_t)dev->bin.tiles_x * (size_t)dev->bin.tiles_y * sizeof(mote__tile));
 }
+#endif
 
 size_t mote_arena_bytes_per_triangle(void)
 {
@@ -35,6 +37,7 @@ size_t mote_arena_bytes_per_triangle(void)
     return mote__align(sizeof(mote__tri)) + 4 * sizeof(uint32_t) + sizeof(mote__block) / 4;
 }
 
+#if MOTE_ENABLE_BINNING
 void mote__bin_reset(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
@@ -157,3 +160,5 @@ void mote__bin_flush(mote_device *dev)
     mote__bin_reset(dev);
     b->top = top;                 /* a draw in progress keeps its scratch */
 }
+
+#endif /* MOTE_ENABLE_BINNING */

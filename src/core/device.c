@@ -7,14 +7,19 @@
 
 const char *mote_result_string(mote_result result)
 {
-    static const char *const names[] = {
-#define MOTE__NAME(name, text) text,
+    /* one string of NUL-separated names: no table of pointers */
+    static const char names[] =
+#define MOTE__NAME(name, text) text "\0"
         MOTE__RESULTS(MOTE__NAME)
 #undef MOTE__NAME
-    };
+        ;
     if ((unsigned)result >= (unsigned)MOTE_RESULT_COUNT)
         return "unknown result";
-    return names[result];
+    const char *s = names;
+    for (int i = 0; i < (int)result; i++)
+        while (*s++ != '\0')
+            ;
+    return s;
 }
 
 int mote_format_bytes(mote_format format)
@@ -94,6 +99,8 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
         return MOTE_ERR_INVALID_ARGUMENT;
     dev->desc = d;
     if (d.arena) {
+        if (!MOTE_ENABLE_BINNING)
+            return MOTE_ERR_UNSUPPORTED;
         mote__bin *b = &dev->bin;
         b->base = (unsigned char *)d.arena;
         b->size = d.arena_size;
@@ -236,7 +243,7 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
      * by tile inside the tile jobs was tried and measured slower (mote-render
      * --frames, Suzanne at 1080p, 1 / 2 threads: 2.42 / 3.07 ms, against
      * 2.31 / 1.3-1.7 ms in stripes): short scattered rows stream badly. */
-    if (mote__binned(dev))
+    if (MOTE_ENABLE_BINNING && mote__binned(dev))
         mote__bin_reset(dev);
     if (!mote__band_mode(dev)) {
         if (dev->desc.parallel_for)
@@ -256,27 +263,28 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
         return MOTE_ERR_STATE;
     if ((mesh->vertex_count > 0 && !mesh->vertices) || (mesh->index_count > 0 && !mesh->indices))
         return MOTE_ERR_INVALID_ARGUMENT;
+    mote_draw_desc d;
+    mote_result r = mote__resolve_draw_desc(draw, mesh, &d);
+    if (r != MOTE_OK)
+        return r;
     if (mote__band_mode(dev)) {
         if (dev->draw_count >= MOTE_MAX_DRAWS)
             return MOTE_ERR_TOO_MANY_DRAWS;
         mote__draw *rec = &dev->draws[dev->draw_count++];
         rec->mesh = mesh;
-        mote__resolve_draw_desc(draw, mesh, &rec->desc);
+        rec->desc = d;
         return MOTE_OK;
     }
     mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
     mote__target tg;
     mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
-    mote_draw_desc d;
-    mote__resolve_draw_desc(draw, mesh, &d);
     bool triangles = d.mode != MOTE_MODE_POINTS && d.mode != MOTE_MODE_WIREFRAME;
-    mote_result r;
-    if (mote__binned(dev) && triangles) {
+    if (MOTE_ENABLE_BINNING && mote__binned(dev) && triangles) {
         r = mote__process_draw(dev, mesh, &d, MOTE__SINK_BIN, NULL, all);
     } else {
         /* points and lines are drawn at once; earlier binned triangles first */
-        if (mote__binned(dev))
+        if (MOTE_ENABLE_BINNING && mote__binned(dev))
             mote__bin_flush(dev);
         r = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all);
     }
@@ -291,7 +299,7 @@ mote_result mote_end(mote_device *dev)
     if (!dev->ready || !dev->in_frame)
         return MOTE_ERR_STATE;
     dev->in_frame = false;
-    if (mote__binned(dev)) {
+    if (MOTE_ENABLE_BINNING && mote__binned(dev)) {
         mote__bin_flush(dev);
         return MOTE_OK;
     }
@@ -299,8 +307,7 @@ mote_result mote_end(mote_device *dev)
         return MOTE_OK;
     const mote_device_desc *d = &dev->desc;
     mote_result result = MOTE_OK;
-    mote_stats first_band;
-    memset(&first_band, 0, sizeof first_band);
+    mote_stats first_band = dev->stats;
     for (int y0 = 0; y0 < d->height; y0 += d->band_height) {
         int y1 = MOTE__MIN(y0 + d->band_height, d->height);
         mote__target tg;
@@ -317,14 +324,11 @@ mote_result mote_end(mote_device *dev)
         }
         mote__add_counts(dev, &count);
         /* each band replays every draw: count the triangles once */
-        if (y0 == 0) {
+        if (y0 == 0)
             first_band = dev->stats;
-        } else {
-            mote_stats now = dev->stats;
-            dev->stats = first_band;
-            dev->stats.pixels_tested = now.pixels_tested;
-            dev->stats.pixels_written = now.pixels_written;
-        }
+        first_band.pixels_tested = dev->stats.pixels_tested;
+        first_band.pixels_written = dev->stats.pixels_written;
+        dev->stats = first_band;
         d->flush(d->flush_user, y0, y1 - y0, d->color, d->color_stride);
     }
     return result;
@@ -364,10 +368,7 @@ mote_rgba mote_read_pixel(const mote_device *dev, int x, int y)
     const uint8_t *row = (const uint8_t *)dev->desc.color + (size_t)y * (size_t)dev->desc.color_stride;
     uint8_t v[4];
     mote__read_rgb(row, x, dev->desc.color_format, v);
-    c.r = v[0];
-    c.g = v[1];
-    c.b = v[2];
-    c.a = v[3];
+    memcpy(&c, v, sizeof c);      /* r, g, b, a */
     return c;
 }
 

@@ -73,7 +73,7 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
         } else {
             continue;
         }
-        float ndl = (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) * mote__rsqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+        float ndl = mote__dot3(n, L) * mote__rsqrtf(mote__dot3(L, L));
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
@@ -92,7 +92,7 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
 
 static void mote__normalize(float v[3])
 {
-    float k = mote__rsqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    float k = mote__rsqrtf(mote__dot3(v, v));
     v[0] *= k;
     v[1] *= k;
     v[2] *= k;
@@ -122,16 +122,18 @@ static float mote__plane_dist(const mote__ctx *cx, const mote__cvert *v, int p)
     return d[p];
 }
 
+/* every field of a vertex, as one array of floats */
+#define MOTE__CVERT_FLOATS (sizeof(mote__cvert) / sizeof(float))
+typedef char mote__cvert_is_floats[sizeof(mote__cvert) == 9 * sizeof(float) ? 1 : -1];
+
 static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote__cvert *out)
 {
-    out->x = a->x + (b->x - a->x) * t;
-    out->y = a->y + (b->y - a->y) * t;
-    out->z = a->z + (b->z - a->z) * t;
-    out->w = a->w + (b->w - a->w) * t;
-    for (int k = 0; k < 3; k++)
-        out->s[k] = a->s[k] + (b->s[k] - a->s[k]) * t;
-    out->u = a->u + (b->u - a->u) * t;
-    out->v = a->v + (b->v - a->v) * t;
+    float fa[MOTE__CVERT_FLOATS], fb[MOTE__CVERT_FLOATS];
+    memcpy(fa, a, sizeof fa);
+    memcpy(fb, b, sizeof fb);
+    for (size_t k = 0; k < MOTE__CVERT_FLOATS; k++)
+        fa[k] += (fb[k] - fa[k]) * t;
+    memcpy(out, fa, sizeof fa);
 }
 
 /* Sutherland-Hodgman in homogeneous space. orig[i] tells whether the edge
@@ -244,24 +246,22 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
     tv->index = index;
     float out[4];
     mote__mat4_point(cx->mvp, in->position, out);
-    tv->c.x = out[0];
-    tv->c.y = out[1];
-    tv->c.z = out[2];
-    tv->c.w = out[3];
-    tv->state = (mote__finite(out[0]) && mote__finite(out[1]) && mote__finite(out[2]) && mote__finite(out[3])) ? 1 : 2;
+    memcpy(&tv->c, out, sizeof out);        /* x, y, z, w */
+    tv->state = 1;
+    for (int k = 0; k < 4; k++)
+        if (!mote__finite(out[k]))
+            tv->state = 2;
     if (cx->lit) {
         float wp[4];
         mote__mat4_point(cx->world, in->position, wp);
         for (int k = 0; k < 3; k++) {
             tv->world[k] = wp[k];
-            tv->normal[k] = cx->nrm[k * 3 + 0] * in->normal[0] + cx->nrm[k * 3 + 1] * in->normal[1]
-                          + cx->nrm[k * 3 + 2] * in->normal[2];
+            tv->normal[k] = mote__dot3(&cx->nrm[k * 3], in->normal);
         }
         mote__normalize(tv->normal);
     }
     tv->lit = !cx->lit || cx->flat;
-    for (int k = 0; k < 3; k++)
-        tv->c.s[k] = cx->color[k];
+    memcpy(tv->c.s, cx->color, sizeof tv->c.s);
     if (cx->rs->tex != MOTE__TEX_NONE) {
         float u = in->uv[0] * cx->uscale + cx->uoff;
         float v = in->uv[1] * cx->vscale + cx->voff;
@@ -269,8 +269,8 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
             v = 1.0f - v;
         tv->c.u = u * cx->tex_w;
         tv->c.v = v * cx->tex_h;
-        if (!mote__finite(tv->c.u) || !mote__finite(tv->c.v) || tv->c.u > 1e9f || tv->c.u < -1e9f
-            || tv->c.v > 1e9f || tv->c.v < -1e9f)
+        /* also false for NaN and +-Inf */
+        if (!(tv->c.u >= -1e9f && tv->c.u <= 1e9f && tv->c.v >= -1e9f && tv->c.v <= 1e9f))
             tv->state = 2;
     } else {
         tv->c.u = tv->c.v = 0.0f;
@@ -347,7 +347,7 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
         return;
     }
     dev->stats.triangles_drawn++;
-    if (cx->sink == MOTE__SINK_RASTER) {
+    if (!MOTE_ENABLE_BINNING || cx->sink == MOTE__SINK_RASTER) {
         mote__raster_tri(&t, cx->tg, cx->region, dev->desc.subpixel_bits);
     } else {
         if (!mote__bin_triangle(dev, &t)) {
@@ -375,20 +375,16 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
 
 static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], float s[3])
 {
-    float e1[3], e2[3], n[3], c[3];
+    float e1[3], e2[3], n[3], c[3], vsum[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = tv[1]->world[k] - tv[0]->world[k];
         e2[k] = tv[2]->world[k] - tv[0]->world[k];
         c[k] = (tv[0]->world[k] + tv[1]->world[k] + tv[2]->world[k]) / 3.0f;
+        vsum[k] = tv[0]->normal[k] + tv[1]->normal[k] + tv[2]->normal[k];
     }
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    mote__cross3(e1, e2, n);
     /* orient like the vertex normals, which say where outside is */
-    float vn = 0.0f;
-    for (int k = 0; k < 3; k++)
-        vn += n[k] * (tv[0]->normal[k] + tv[1]->normal[k] + tv[2]->normal[k]);
-    if (vn < 0.0f)
+    if (mote__dot3(n, vsum) < 0.0f)
         for (int k = 0; k < 3; k++)
             n[k] = -n[k];
     mote__normalize(n);
@@ -424,6 +420,7 @@ static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__cv
     mote__emit(cx, X, Y, v);
 }
 
+#if MOTE_ENABLE_LINES
 /* Wireframe: a polygon (the triangle, or what clipping left of it) culled
  * as a whole, then its original edges (orig[k]: edge k..k+1) drawn. */
 static void mote__wire_polygon(mote__ctx *cx, const int32_t X[], const int32_t Y[], const bool orig[], int n)
@@ -448,6 +445,7 @@ static void mote__wire_polygon(mote__ctx *cx, const int32_t X[], const int32_t Y
         mote__draw_line(cx->tg, cx->region, X[k] >> F, Y[k] >> F, X[j] >> F, Y[j] >> F, col);
     }
 }
+#endif
 
 static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned planes)
 {
@@ -469,10 +467,12 @@ static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned
             return;
         }
     }
+#if MOTE_ENABLE_LINES
     if (cx->d.mode == MOTE_MODE_WIREFRAME) {
         mote__wire_polygon(cx, X, Y, orig, n);
         return;
     }
+#endif
     for (int k = 1; k + 1 < n; k++) {
         int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
         mote__fan_triangle(cx, tv, &poly[0], &poly[k], &poly[k + 1], tx, ty);
@@ -508,7 +508,7 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
         return;
     }
     unsigned any = oc0 | oc1 | oc2;
-    if ((any & MOTE__OC_CLIP) || cx->d.mode == MOTE_MODE_WIREFRAME) {
+    if ((any & MOTE__OC_CLIP) || (MOTE_ENABLE_LINES && cx->d.mode == MOTE_MODE_WIREFRAME)) {
         /* wireframe takes the polygon path even unclipped (clipping to no
          * plane leaves the triangle as it is): lines are not worth a second path */
         mote__clip_polygon(cx, tv, any & MOTE__OC_CLIP);
@@ -525,24 +525,28 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
 
 /* ---- the draw -------------------------------------------------------------- */
 
-void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh, mote_draw_desc *out)
+/* An enum value of a desc: v when it is a valid non-default one (in
+ * (0, count)), else def. */
+static int mote__enum_or(int v, int count, int def)
+{
+    return v > 0 && v < count ? v : def;
+}
+
+mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh, mote_draw_desc *out)
 {
     if (in)
         *out = *in;
     else
         memset(out, 0, sizeof *out);
-    if (out->mode <= MOTE_MODE_DEFAULT || out->mode >= MOTE_MODE_COUNT)
-        out->mode = MOTE_MODE_TEXTURED;
-    if (out->cull <= MOTE_CULL_DEFAULT || out->cull >= MOTE_CULL_COUNT)
-        out->cull = MOTE_CULL_BACK;
-    if (out->perspective <= MOTE_PERSPECTIVE_DEFAULT || out->perspective >= MOTE_PERSPECTIVE_COUNT)
-        out->perspective = MOTE_PERSPECTIVE_CORRECT;
+    out->mode = (mote_mode)mote__enum_or(out->mode, MOTE_MODE_COUNT, MOTE_MODE_TEXTURED);
+    out->cull = (mote_cull)mote__enum_or(out->cull, MOTE_CULL_COUNT, MOTE_CULL_BACK);
+    out->perspective = (mote_perspective)mote__enum_or(out->perspective, MOTE_PERSPECTIVE_COUNT,
+                                                       MOTE_PERSPECTIVE_CORRECT);
     if (out->subspan_log2 <= 0)
         out->subspan_log2 = 3;
     if (out->subspan_log2 > 6)
         out->subspan_log2 = 6;
-    if (out->filter <= MOTE_FILTER_DEFAULT || out->filter >= MOTE_FILTER_COUNT)
-        out->filter = MOTE_FILTER_NEAREST;
+    out->filter = (mote_filter)mote__enum_or(out->filter, MOTE_FILTER_COUNT, MOTE_FILTER_NEAREST);
     if (out->point_color.r == 0 && out->point_color.g == 0 && out->point_color.b == 0
         && out->point_color.a == 0) {
         if (mesh->material.color_set)
@@ -551,6 +555,12 @@ void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh, mo
             out->point_color.r = out->point_color.g = out->point_color.b = 255;
         out->point_color.a = 255;
     }
+    /* features the build left out (MOTE_ENABLE_* in mote.h) */
+    if ((!MOTE_ENABLE_LINES && (out->mode == MOTE_MODE_POINTS || out->mode == MOTE_MODE_WIREFRAME))
+        || (!MOTE_ENABLE_BILINEAR && out->filter == MOTE_FILTER_BILINEAR)
+        || (!MOTE_ENABLE_SUBSPAN && out->perspective == MOTE_PERSPECTIVE_SUBSPAN))
+        return MOTE_ERR_UNSUPPORTED;
+    return MOTE_OK;
 }
 
 static bool mote__texture_ok(const mote_texture *t)
@@ -575,7 +585,7 @@ static bool mote__mesh_outside(const mote__ctx *cx)
     mote__mat4_point(cx->mvp, m->bounds_center, c);
     for (int p = 0; p < 6; p++) {
         const float *P = planes[p];
-        float f = P[0] * c[0] + P[1] * c[1] + P[2] * c[2] + P[3] * c[3];
+        float f = mote__dot3(P, c) + P[3] * c[3];
         float g2 = 0.0f;
         for (int j = 0; j < 3; j++) {
             float g = 0.0f;
@@ -599,7 +609,9 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     memset(&cx, 0, sizeof cx);
     cx.dev = dev;
     cx.mesh = mesh;
-    mote__resolve_draw_desc(desc, mesh, &cx.d);
+    mote_result res = mote__resolve_draw_desc(desc, mesh, &cx.d);
+    if (res != MOTE_OK)
+        return res;
     cx.sink = sink;
     cx.tg = tg;
     cx.region = region;
@@ -628,8 +640,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     mote_mode mode = cx.d.mode;
     bool tri_mode = mode == MOTE_MODE_FLAT || mode == MOTE_MODE_GOURAUD || mode == MOTE_MODE_TEXTURED;
     cx.lit = tri_mode && !cx.d.unlit;
-    if (cx.d.unlit)
-        cx.lit = false;
     cx.flat = mode == MOTE_MODE_FLAT && cx.lit;   /* unlit flat is one colour anyway */
     rs_local.gouraud = cx.lit && !cx.flat;
     bool front_cw = cx.d.front_face == MOTE_FRONT_CW;
@@ -645,10 +655,8 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         cx.tex_h = (float)rs_local.tex_h;
         rs_local.tex_stride = mat->texture->stride > 0 ? mat->texture->stride
                             : mat->texture->width * mote_format_bytes(mat->texture->format);
-        rs_local.wrap_u = (mat->wrap_u > MOTE_WRAP_DEFAULT && mat->wrap_u < MOTE_WRAP_COUNT) ? mat->wrap_u : MOTE_WRAP_REPEAT;
-        rs_local.wrap_v = (mat->wrap_v > MOTE_WRAP_DEFAULT && mat->wrap_v < MOTE_WRAP_COUNT) ? mat->wrap_v : MOTE_WRAP_REPEAT;
-        if (!cx.lit)
-            rs_local.gouraud = false;
+        rs_local.wrap_u = (mote_wrap)mote__enum_or(mat->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+        rs_local.wrap_v = (mote_wrap)mote__enum_or(mat->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
         rs_local.pow2_repeat = rs_local.wrap_u == MOTE_WRAP_REPEAT && rs_local.wrap_v == MOTE_WRAP_REPEAT
                             && (rs_local.tex_w & (rs_local.tex_w - 1)) == 0
                             && (rs_local.tex_h & (rs_local.tex_h - 1)) == 0;
@@ -667,7 +675,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
 
     size_t cache_bytes = 0;
     mote__tvert small_cache[MOTE__SMALL_CACHE];
-    if (sink == MOTE__SINK_BIN) {
+    if (MOTE_ENABLE_BINNING && sink == MOTE__SINK_BIN) {
         mote__raster_state *rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
         if (!rs) {
             mote__bin_flush(dev);
@@ -694,7 +702,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         cx.cache_mask = MOTE__SMALL_CACHE - 1;
     }
 
-    if (mode == MOTE_MODE_POINTS) {
+    if (MOTE_ENABLE_LINES && mode == MOTE_MODE_POINTS) {
         for (uint32_t i = 0; i < mesh->vertex_count; i++) {
             const mote__tvert *tv = mote__vertex(&cx, i);
             /* inside the viewport and every clip plane, and snapped */
@@ -709,7 +717,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         for (uint32_t i = 0; i < tris; i++)
             mote__triangle(&cx, &mesh->indices[3 * i]);
     }
-    if (cache_bytes)
+    if (MOTE_ENABLE_BINNING && cache_bytes)
         mote__bin_top_release(dev, cache_bytes);
     return MOTE_OK;
 }

@@ -29,9 +29,17 @@
  * attributes span more than 2^27 units (setup.c) */
 #define MOTE__RBITS 54
 
+/* Inline in speed builds; out of line in size builds (-Os), where each
+ * copy is a long 64-bit shift sequence on a 32-bit core. */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define MOTE__SPEED_INLINE static __attribute__((unused, noinline))
+#else
+#define MOTE__SPEED_INLINE static inline
+#endif
+
 /* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
  * negative numbers (implementation-defined in C99). */
-static inline int64_t mote__floor_shift64(int64_t v, int k)
+MOTE__SPEED_INLINE int64_t mote__floor_shift64(int64_t v, int k)
 {
     return v >= 0 ? (int64_t)((uint64_t)v >> k) : (int64_t)~(~(uint64_t)v >> k);
 }
@@ -44,6 +52,7 @@ void mote__mat4_point(const float m[16], const float p[3], float out[4]);
 /* Inverse-transpose of the upper 3x3 up to scale (the cofactor matrix, for
  * normals), row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
 void mote__normal_matrix(const float m[16], float out[9]);
+void mote__cross3(const float a[3], const float b[3], float out[3]);
 float mote__sqrtf(float x);
 float mote__rsqrtf(float x);   /* 0 for 0, negative, NaN, Inf */
 
@@ -55,6 +64,11 @@ static inline bool mote__finite(float x)
     union { float f; uint32_t u; } b;
     b.f = x;
     return (b.u & 0x7f800000u) != 0x7f800000u;
+}
+
+static inline float mote__dot3(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 /* A vertex after the vertex stage: clip position and the attributes that
@@ -162,7 +176,7 @@ bool mote__walk_begin(mote__walk *w, const struct mote__tri *t, mote__rect r, in
 /* at row ymid: the short edge becomes b-c */
 void mote__walk_switch(mote__walk *w);
 
-static inline void mote__edge_step(mote__edge *e)
+MOTE__SPEED_INLINE void mote__edge_step(mote__edge *e)
 {
     e->x += e->qstep;
     e->err -= e->rstep;
@@ -214,8 +228,10 @@ typedef enum mote__sink_kind { MOTE__SINK_RASTER, MOTE__SINK_BIN } mote__sink_ki
 mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh,
                                const mote_draw_desc *desc, mote__sink_kind sink,
                                const mote__target *tg, mote__rect region);
-void mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh,
-                             mote_draw_desc *out);
+/* Fills the defaults in; MOTE_ERR_UNSUPPORTED for a feature left out of
+ * the build. */
+mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh,
+                                    mote_draw_desc *out);
 
 /* bin.c */
 void mote__bin_reset(mote_device *dev);

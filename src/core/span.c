@@ -114,7 +114,7 @@ MOTE__INLINE void mote__texel(const mote__tex_view *tx, int x, int y, uint32_t c
 MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, bool pow2_repeat, int64_t u, int64_t v,
                                uint32_t c[3])
 {
-    if (!bilinear) {
+    if (!MOTE_ENABLE_BILINEAR || !bilinear) {
         int tu, tv;
         if (pow2_repeat) {
             tu = (int)(u >> 16) & (tx->w - 1);
@@ -283,7 +283,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
         uint32_t px = c->flat_px;
         if (varying) {
             uint64_t r;
-            if (persp == MOTE__PERSP_SUBSPAN) {
+            if (MOTE_ENABLE_SUBSPAN && persp == MOTE__PERSP_SUBSPAN) {
                 if (x >= seg_x1) {
                     seg_x0 = x & ~(c->seg_len - 1);
                     seg_x1 = seg_x0 + c->seg_len;

@@ -41,17 +41,17 @@ float mote__sqrtf(float x)
     return r;
 }
 
-/* sin on [-pi/4, pi/4] and cos likewise, minimax-style Taylor terms. */
-static float mote__sin_kernel(float x)
-{
-    float x2 = x * x;
-    return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333310e-3f + x2 * (-1.9840874e-4f + x2 * 2.7525562e-6f))));
-}
+/* sin and cos on [-pi/4, pi/4], minimax-style Taylor terms in x^2, highest
+ * first: sin = x * P(x^2), cos = P(x^2), evaluated by Horner's rule. */
+static const float mote__sin_terms[5] = {2.7525562e-6f, -1.9840874e-4f, 8.3333310e-3f, -1.6666667e-1f, 1.0f};
+static const float mote__cos_terms[5] = {2.4390449e-5f, -1.3888378e-3f, 4.1666638e-2f, -0.5f, 1.0f};
 
-static float mote__cos_kernel(float x)
+static float mote__poly(const float terms[5], float x2)
 {
-    float x2 = x * x;
-    return 1.0f + x2 * (-0.5f + x2 * (4.1666638e-2f + x2 * (-1.3888378e-3f + x2 * 2.4390449e-5f)));
+    float p = terms[0];
+    for (int i = 1; i < 5; i++)
+        p = terms[i] + x2 * p;
+    return p;
 }
 
 /* Reduces x to r in [-pi/4, pi/4] and a quadrant, in double-float steps. */
@@ -71,26 +71,24 @@ static int mote__reduce(float x, float *r)
     return q & 3;
 }
 
-float mote_sinf(float x)
+/* sin(x + shift * pi/2): cos is sin a quadrant on */
+static float mote__sin_quadrant(float x, int shift)
 {
     float r;
-    switch (mote__reduce(x, &r)) {
-    case 0: return mote__sin_kernel(r);
-    case 1: return mote__cos_kernel(r);
-    case 2: return -mote__sin_kernel(r);
-    default: return -mote__cos_kernel(r);
-    }
+    int q = (mote__reduce(x, &r) + shift) & 3;
+    float x2 = r * r;
+    float v = (q & 1) ? mote__poly(mote__cos_terms, x2) : r * mote__poly(mote__sin_terms, x2);
+    return (q & 2) ? -v : v;
+}
+
+float mote_sinf(float x)
+{
+    return mote__sin_quadrant(x, 0);
 }
 
 float mote_cosf(float x)
 {
-    float r;
-    switch (mote__reduce(x, &r)) {
-    case 0: return mote__cos_kernel(r);
-    case 1: return -mote__sin_kernel(r);
-    case 2: return -mote__cos_kernel(r);
-    default: return mote__sin_kernel(r);
-    }
+    return mote__sin_quadrant(x, 1);
 }
 
 float mote_tanf(float x)
@@ -128,44 +126,40 @@ void mote__mat4_point(const float m[16], const float p[3], float out[4])
 void mote__normal_matrix(const float m[16], float out[9])
 {
     /* cofactors of the upper 3x3 = inverse-transpose times the determinant;
-     * the scale does not matter because normals are normalised afterwards. */
-#define M(r, c) m[(c) * 4 + (r)]
-    out[0 * 3 + 0] = M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1);
-    out[0 * 3 + 1] = M(1, 2) * M(2, 0) - M(1, 0) * M(2, 2);
-    out[0 * 3 + 2] = M(1, 0) * M(2, 1) - M(1, 1) * M(2, 0);
-    out[1 * 3 + 0] = M(0, 2) * M(2, 1) - M(0, 1) * M(2, 2);
-    out[1 * 3 + 1] = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
-    out[1 * 3 + 2] = M(0, 1) * M(2, 0) - M(0, 0) * M(2, 1);
-    out[2 * 3 + 0] = M(0, 1) * M(1, 2) - M(0, 2) * M(1, 1);
-    out[2 * 3 + 1] = M(0, 2) * M(1, 0) - M(0, 0) * M(1, 2);
-    out[2 * 3 + 2] = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+     * the scale does not matter because normals are normalised afterwards.
+     * With indices taken cyclically the 3x3 cofactor signs come out alone. */
+#define M(r, c) m[((c) % 3) * 4 + (r) % 3]
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            out[r * 3 + c] = M(r + 1, c + 1) * M(r + 2, c + 2) - M(r + 1, c + 2) * M(r + 2, c + 1);
 #undef M
 }
 
 static void mote__quat_matrix(const float q[4], float m[16])
 {
-    float x = q[0], y = q[1], z = q[2], w = q[3];
-    float n = x * x + y * y + z * z + w * w;
+    float w = q[3];
+    float n = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + w * w;
     float s = n > 0.0f ? 2.0f / n : 0.0f;
     mote__mat4_identity(m);
-    m[0] = 1.0f - s * (y * y + z * z);
-    m[1] = s * (x * y + z * w);
-    m[2] = s * (x * z - y * w);
-    m[4] = s * (x * y - z * w);
-    m[5] = 1.0f - s * (x * x + z * z);
-    m[6] = s * (y * z + x * w);
-    m[8] = s * (x * z + y * w);
-    m[9] = s * (y * z - x * w);
-    m[10] = 1.0f - s * (x * x + y * y);
+    /* axis i with the next two j, k (cyclically) */
+    for (int i = 0; i < 3; i++) {
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        float ij = q[i] * q[j], kw = q[k] * w;
+        m[i * 5] = 1.0f - s * (q[j] * q[j] + q[k] * q[k]);
+        m[i * 4 + j] = s * (ij + kw);
+        m[j * 4 + i] = s * (ij - kw);
+    }
 }
 
 /* Babylon's Quaternion.RotationYawPitchRoll(yaw = ry, pitch = rx, roll = rz). */
 static void mote__euler_quat(const float r[3], float q[4])
 {
-    float hr = r[2] * 0.5f, hp = r[0] * 0.5f, hy = r[1] * 0.5f;
-    float sr = mote_sinf(hr), cr = mote_cosf(hr);
-    float sp = mote_sinf(hp), cp = mote_cosf(hp);
-    float sy = mote_sinf(hy), cy = mote_cosf(hy);
+    float sn[3], cs[3];
+    for (int i = 0; i < 3; i++) {
+        sn[i] = mote_sinf(r[i] * 0.5f);
+        cs[i] = mote_cosf(r[i] * 0.5f);
+    }
+    float sp = sn[0], sy = sn[1], sr = sn[2], cp = cs[0], cy = cs[1], cr = cs[2];
     q[0] = cy * sp * cr + sy * cp * sr;
     q[1] = sy * cp * cr - cy * sp * sr;
     q[2] = cy * cp * sr - sy * sp * cr;
@@ -205,7 +199,7 @@ void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
 
 static void mote__normalize3(float v[3])
 {
-    float len = mote__sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    float len = mote__sqrtf(mote__dot3(v, v));
     if (len > 0.0f) {
         v[0] /= len;
         v[1] /= len;
@@ -213,7 +207,7 @@ static void mote__normalize3(float v[3])
     }
 }
 
-static void mote__cross3(const float a[3], const float b[3], float out[3])
+void mote__cross3(const float a[3], const float b[3], float out[3])
 {
     out[0] = a[1] * b[2] - a[2] * b[1];
     out[1] = a[2] * b[0] - a[0] * b[2];
@@ -249,9 +243,9 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16])
         view[i * 4 + 1] = y[i];
         view[i * 4 + 2] = z[i];
     }
-    view[12] = -(x[0] * e[0] + x[1] * e[1] + x[2] * e[2]);
-    view[13] = -(y[0] * e[0] + y[1] * e[1] + y[2] * e[2]);
-    view[14] = -(z[0] * e[0] + z[1] * e[1] + z[2] * e[2]);
+    view[12] = -mote__dot3(x, e);
+    view[13] = -mote__dot3(y, e);
+    view[14] = -mote__dot3(z, e);
 }
 
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect, float proj[16])
@@ -287,13 +281,18 @@ bool mote_project(const mote_device *dev, const float p[3], float *x, float *y, 
     return true;
 }
 
+static bool mote__finite3(const float p[3])
+{
+    return mote__finite(p[0]) && mote__finite(p[1]) && mote__finite(p[2]);
+}
+
 void mote_mesh_update_bounds(mote_mesh *mesh)
 {
     float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
     for (uint32_t i = 0; i < mesh->vertex_count; i++) {
         const float *p = mesh->vertices[i].position;
-        if (!mote__finite(p[0]) || !mote__finite(p[1]) || !mote__finite(p[2]))
+        if (!mote__finite3(p))
             continue;
         for (int k = 0; k < 3; k++) {
             if (!any || p[k] < lo[k]) lo[k] = p[k];
@@ -306,11 +305,12 @@ void mote_mesh_update_bounds(mote_mesh *mesh)
         mesh->bounds_center[k] = 0.5f * (lo[k] + hi[k]);
     for (uint32_t i = 0; i < mesh->vertex_count; i++) {
         const float *p = mesh->vertices[i].position;
-        if (!mote__finite(p[0]) || !mote__finite(p[1]) || !mote__finite(p[2]))
+        if (!mote__finite3(p))
             continue;
-        float d[3] = {p[0] - mesh->bounds_center[0], p[1] - mesh->bounds_center[1],
-                      p[2] - mesh->bounds_center[2]};
-        float dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        float d[3];
+        for (int k = 0; k < 3; k++)
+            d[k] = p[k] - mesh->bounds_center[k];
+        float dd = mote__dot3(d, d);
         if (dd > r2)
             r2 = dd;
     }
