@@ -109,6 +109,8 @@ typedef struct mote__tri {
     int8_t shift;                 /* brings Q under 2^31 */
     uint8_t shade;                /* mote__shade_kind */
     int8_t rbits;                 /* K of the reciprocal r = 2^K / (Q >> shift) */
+    uint8_t order;                /* walk order (raster.c): bits 0-1, 2-3, 4-5 the top,
+                                   * middle and bottom vertex; bit 6: long edge on the left */
     int64_t q, qdx, qdy;          /* Q = sum Ei qi, qi ~ 1/wi (see setup.c) */
     int64_t z, zdx, zdy;          /* depth, 24.16 */
     /* attributes: values at vertex 0 (shades in 2^24, texels in 16.16) and

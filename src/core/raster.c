@@ -47,18 +47,10 @@ static int mote__first_row(int32_t Yv, int F)
 
 bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
 {
-    /* sort by y (then x, for a fixed order) */
-    int a = 0, b = 1, c = 2, tmp;
-#define MOTE__BEFORE(i, j) (t->Y[i] < t->Y[j] || (t->Y[i] == t->Y[j] && t->X[i] < t->X[j]))
-    if (MOTE__BEFORE(b, a)) { tmp = a; a = b; b = tmp; }
-    if (MOTE__BEFORE(c, b)) { tmp = b; b = c; c = tmp; }
-    if (MOTE__BEFORE(b, a)) { tmp = a; a = b; b = tmp; }
-#undef MOTE__BEFORE
+    /* the vertices sorted by y (then x) and the long edge's side: from setup */
+    const int o = t->order, a = o & 3, b = (o >> 2) & 3, c = (o >> 4) & 3;
     const int32_t xa = t->X[a], ya = t->Y[a], xb = t->X[b], yb = t->Y[b], xc = t->X[c], yc = t->Y[c];
-    int64_t cross = (int64_t)(xb - xa) * (yc - ya) - (int64_t)(yb - ya) * (xc - xa);
-    if (cross == 0 || yc == ya)
-        return false;
-    w->long_left = cross > 0;
+    w->long_left = (o >> 6) & 1;
 
     w->rx0 = MOTE__MAX(r.x0, t->xmin);
     w->rx1 = MOTE__MIN(r.x1, t->xmax + 1);
