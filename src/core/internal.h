@@ -163,12 +163,12 @@ void mote__walk_switch(mote__walk *w);
 
 static inline void mote__edge_step(mote__edge *e)
 {
-    e->x += e->qstep;
+    /* without a branch: whether the remainder wraps changes from row to
+     * row in no pattern a predictor can learn */
     e->err -= e->rstep;
-    if (e->err < 0) {
-        e->x++;
-        e->err += e->den;
-    }
+    int64_t wrap = -(int64_t)(e->err < 0);   /* all ones or zero */
+    e->x += e->qstep - wrap;
+    e->err += e->den & wrap;
 }
 
 /* The pixels [*x0, *x1) of row w->y (empty when *x0 >= *x1), then the walk

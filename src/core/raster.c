@@ -15,28 +15,31 @@
  */
 #include "internal.h"
 
-static int64_t mote__floor_div(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0)))
-        q--;
-    return q;
-}
-
 static void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
                             int y, int F)
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
-    int64_t dy = (int64_t)yb - ya, dx = (int64_t)xb - xa;
-    int64_t Y = (int64_t)y * one + half;
-    int64_t num = (int64_t)xa * dy + (Y - ya) * dx - half * dy;
-    e->den = dy * one;
-    /* x = ceil(num / den) */
-    e->x = -mote__floor_div(-num, e->den);
-    e->err = e->x * e->den - num;
-    int64_t step = dx * one;
-    e->qstep = mote__floor_div(step, e->den);
-    e->rstep = step - e->qstep * e->den;
+    const int32_t dy = yb - ya, dx = xb - xa;   /* dy > 0; both below 2^(MOTE_GUARD_BITS + 10) */
+    const int64_t den = (int64_t)dy * one, u = (int64_t)y * one + half - ya;
+    /* the step dx 2^F / den: floor(dx / dy) = qs, remainder rs, in 32 bits */
+    int32_t qs = dx / dy, rs = dx - qs * dy;
+    if (rs < 0) {
+        qs--;
+        rs += dy;
+    }
+    e->den = den;
+    e->qstep = qs;
+    e->rstep = (int64_t)rs * one;
+    /* x = ceil(num / den), num = (xa - 2^(F-1)) dy + u dx, err = x den - num.
+     * With A = xa - 2^(F-1) + u qs = Aq 2^F + Ar (0 <= Ar < 2^F),
+     * num = Aq den + n2, n2 = Ar dy + u rs >= 0. At the edge's first row
+     * (u < 2^F: every edge of a region that holds the top of the triangle)
+     * n2 < 2 den, and x needs no division. */
+    int64_t A = (int64_t)xa - half + u * qs, Aq = mote__floor_shift64(A, F);
+    int64_t n2 = (A - Aq * one) * dy + u * rs;
+    int64_t c = u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
+    e->x = Aq + c;
+    e->err = c * den - n2;
 }
 
 static int mote__first_row(int32_t Yv, int F)
