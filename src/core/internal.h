@@ -27,10 +27,13 @@
 #define MOTE__DEPTH_FRAC 16
 
 /* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
- * negative numbers (implementation-defined in C99). */
+ * negative numbers (implementation-defined in C99): a negative v is
+ * complemented, shifted and complemented back, through a mask rather than
+ * a branch (setup and the walk take it of numbers of either sign). */
 static inline int64_t mote__floor_shift64(int64_t v, int k)
 {
-    return v >= 0 ? (int64_t)((uint64_t)v >> k) : (int64_t)~(~(uint64_t)v >> k);
+    uint64_t neg = 0u - (uint64_t)(v < 0);
+    return (int64_t)((((uint64_t)v ^ neg) >> k) ^ neg);
 }
 
 /* ---- vertex stage -------------------------------------------------------- */

@@ -22,11 +22,9 @@ static void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, i
     const int32_t dy = yb - ya, dx = xb - xa;   /* dy > 0; both below 2^(MOTE_GUARD_BITS + 10) */
     const int64_t den = (int64_t)dy * one, u = (int64_t)y * one + half - ya;
     /* the step dx 2^F / den: floor(dx / dy) = qs, remainder rs, in 32 bits */
-    int32_t qs = dx / dy, rs = dx - qs * dy;
-    if (rs < 0) {
-        qs--;
-        rs += dy;
-    }
+    int32_t qs = dx / dy, rs = dx - qs * dy, neg = rs < 0;
+    qs -= neg;
+    rs += dy & -neg;
     e->den = den;
     e->qstep = qs;
     e->rstep = (int64_t)rs * one;
@@ -71,12 +69,11 @@ bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
     w->yc = yc;
     w->subpixel_bits = F;
     mote__edge_init(&w->longe, xa, ya, xc, yc, w->y, F);
-    if (w->y < w->ymid) {
-        mote__edge_init(&w->shorte, xa, ya, xb, yb, w->y, F);
-    } else {
-        mote__edge_init(&w->shorte, xb, yb, xc, yc, w->y, F);
-        w->ymid = -1;             /* rows are >= 0: no switch to come */
-    }
+    /* the short edge: a-b, or b-c when the region starts at or below b
+     * (then no switch is to come: rows are >= 0); chosen without a branch */
+    int upper = w->y < w->ymid, s0 = b ^ ((a ^ b) & -upper), s1 = c ^ ((b ^ c) & -upper);
+    mote__edge_init(&w->shorte, t->X[s0], t->Y[s0], t->X[s1], t->Y[s1], w->y, F);
+    w->ymid |= upper - 1;
     return true;
 }
 

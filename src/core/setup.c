@@ -62,24 +62,26 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 #endif
 }
 
+/* Size builds keep a small helper that several places call out of line
+ * (GCC otherwise inlines it where that is not smaller on Cortex-M0+). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define MOTE__OUT_OF_LINE __attribute__((noinline))
+#else
+#define MOTE__OUT_OF_LINE
+#endif
+
 /* round(f) for a float that fits in int64, halves away from zero */
-static int64_t mote__round_f(float f)
+MOTE__OUT_OF_LINE static int64_t mote__round_f(float f)
 {
     int64_t t = (int64_t)f;       /* toward zero */
     float frac = f - (float)t;
-    if (frac >= 0.5f)
-        t++;
-    else if (frac <= -0.5f)
-        t--;
-    return t;
+    return t + (frac >= 0.5f) - (frac <= -0.5f);   /* no branch: frac is noise */
 }
 
 static int64_t mote__floor_div64(int64_t a, int64_t b)
 {
-    int64_t q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0)))
-        q--;
-    return q;
+    int64_t q = a / b, r = a - q * b;   /* r has a's sign */
+    return q - ((r != 0) & ((r < 0) != (b < 0)));
 }
 
 /* round(n * 2^16 / d) for |n| < 2^58 and 0 < d < 2^47, saturated to
@@ -178,7 +180,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
      * x): their order, and whether the long edge a-c is on the left, which
      * is the winding of (a, b, c): area2's sign, flipped by an odd sort. */
     {
-#define MOTE__BEFORE(i, j) (Y[i] < Y[j] || (Y[i] == Y[j] && X[i] < X[j]))
+#define MOTE__BEFORE(i, j) ((Y[i] < Y[j]) | ((Y[i] == Y[j]) & (X[i] < X[j])))
         int b10 = MOTE__BEFORE(1, 0), b20 = MOTE__BEFORE(2, 0), b21 = MOTE__BEFORE(2, 1);
 #undef MOTE__BEFORE
         /* ranks (the vertices are distinct: area2 != 0) */
