@@ -180,11 +180,13 @@ static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
 {
     if (w->y == w->ymid)
         mote__walk_switch(w);
-    const mote__edge *le = w->long_left ? &w->longe : &w->shorte;
-    const mote__edge *re = w->long_left ? &w->shorte : &w->longe;
-    int64_t a = le->x, b = re->x;
-    *x0 = (int)(a < w->rx0 ? w->rx0 : a > w->rx1 ? w->rx1 : a);
-    *x1 = (int)(b > w->rx1 ? w->rx1 : b < w->rx0 ? w->rx0 : b);
+    /* left and right by mask, not by a branch on the triangle's shape */
+    int64_t swap = (w->longe.x ^ w->shorte.x) & -(int64_t)w->long_left;
+    int64_t a = w->shorte.x ^ swap, b = w->longe.x ^ swap;
+    a = MOTE__MAX(a, w->rx0);     /* rx0 < rx1 */
+    b = MOTE__MIN(b, w->rx1);
+    *x0 = (int)MOTE__MIN(a, w->rx1);
+    *x1 = (int)MOTE__MAX(b, w->rx0);
     mote__edge_step(&w->longe);
     mote__edge_step(&w->shorte);
     w->y++;
