@@ -208,12 +208,14 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
          * E then keeps >= 33 bits and qi gets up to 28. */
         int eb = mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
         int k = MOTE__MIN(MOTE__MAX(eb - 33, 0), F);
-        int64_t pe[3], pedx[3], pedy[3];
-        for (int i = 0; i < 3; i++) {    /* steps are multiples of 2^F >= 2^k: exact */
-            pe[i] = mote__floor_shift64(e[i], k);
-            pedx[i] = mote__floor_shift64(edx[i], k);
-            pedy[i] = mote__floor_shift64(edy[i], k);
-        }
+        int64_t pe[3] = {e[0], e[1], e[2]}, pedx[3] = {edx[0], edx[1], edx[2]};
+        int64_t pedy[3] = {edy[0], edy[1], edy[2]};
+        if (k > 0)
+            for (int i = 0; i < 3; i++) {    /* steps are multiples of 2^F >= 2^k: exact */
+                pe[i] = mote__floor_shift64(e[i], k);
+                pedx[i] = mote__floor_shift64(edx[i], k);
+                pedy[i] = mote__floor_shift64(edy[i], k);
+            }
         int64_t a2k = (a2 >> k) + 1;
         int qbits = 61 - 2 - mote__bitlen((uint64_t)MOTE__MAX((emax >> k) + 1, a2k));
         qbits = MOTE__MIN(qbits, 28);
@@ -238,17 +240,27 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
-        /* attribute differences to vertex 0 */
-        int64_t d1[MOTE__ATTRS] = {0}, d2[MOTE__ATTRS] = {0};
-        bool grey = true, constant = true;
+        /* attribute differences to vertex 0; the shade is grey when its
+         * three channels agree at every vertex, constant when no channel
+         * changes (tested with bits, not branches) */
+        int64_t d1[MOTE__ATTRS], d2[MOTE__ATTRS];
+        uint32_t differ = 0, vary = 0;    /* shades and their differences fit in 32 bits */
         for (int c = 0; c < 3; c++) {
-            d1[c] = mote__shade_fixed(v[1]->s[c]) - t->a0[c];
-            d2[c] = mote__shade_fixed(v[2]->s[c]) - t->a0[c];
-            grey = grey && t->a0[c] == t->a0[0] && d1[c] == d1[0] && d2[c] == d2[0];
-            constant = constant && d1[c] == 0 && d2[c] == 0;
+            int32_t s0 = (int32_t)t->a0[c];
+            int32_t e1 = mote__shade_fixed(v[1]->s[c]) - s0, e2 = mote__shade_fixed(v[2]->s[c]) - s0;
+            d1[c] = e1;
+            d2[c] = e2;
+            differ |= (uint32_t)(s0 ^ (int32_t)t->a0[0]) | (uint32_t)(e1 ^ (int32_t)d1[0])
+                    | (uint32_t)(e2 ^ (int32_t)d2[0]);
+            vary |= (uint32_t)(e1 | e2);
         }
-        if (rs->gouraud && !constant)
-            t->shade = grey ? MOTE__SHADE_MONO : MOTE__SHADE_RGB;
+        if (rs->gouraud && vary != 0)
+            t->shade = differ == 0 ? MOTE__SHADE_MONO : MOTE__SHADE_RGB;
+        /* K (below): shade differences are at most 2^24 and never lower
+         * it; texel differences' largest magnitude does, and has the bit
+         * length of all their magnitudes or-ed together */
+        uint64_t dbits = 0;
+        d1[MOTE__A_U] = d2[MOTE__A_U] = d1[MOTE__A_V] = d2[MOTE__A_V] = 0;
         if (rs->tex != MOTE__TEX_NONE) {
             /* texels in 16.16; whole periods removed so numbers stay small */
             for (int a = MOTE__A_U; a <= MOTE__A_V; a++) {
@@ -265,6 +277,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                 t->a0[a] = T[0] - base;
                 d1[a] = T[1] - T[0];
                 d2[a] = T[2] - T[0];
+                dbits |= (uint64_t)mote__abs64(d1[a]) | (uint64_t)mote__abs64(d2[a]);
             }
         }
         /* Numerator planes: A = a0 + (d1 P1 + d2 P2) / Q. With
@@ -277,17 +290,21 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
          * unless an attribute spans more than 2^27 units. Only the planes
          * the pixel loops read are made: red alone for one grey shade,
          * none for a constant one, texels with a texture; the rest are 0. */
-        int64_t dmax = 0;
-        int shades = t->shade == MOTE__SHADE_RGB ? 3 : t->shade == MOTE__SHADE_MONO ? 1 : 0;
+        const int shades = t->shade == MOTE__SHADE_RGB ? 3 : t->shade == MOTE__SHADE_MONO ? 1 : 0;
+        const int ps = t->shift + 10;
         for (int a = 0; a < MOTE__ATTRS; a++) {
-            dmax = MOTE__MAX(dmax, MOTE__MAX(mote__abs64(d1[a]), mote__abs64(d2[a])));
-            bool used = a < MOTE__A_U ? a < shades : rs->tex != MOTE__TEX_NONE;
-            for (int j = 0; j < 3; j++)
-                t->n[a][j] = used ? (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], t->shift + 10)
-                                              + (uint64_t)mote__mul_shift(d2[a], p2[j], t->shift + 10))
-                                  : 0;
+            int64_t *n = t->n[a];
+            if (a < MOTE__A_U ? a >= shades : rs->tex == MOTE__TEX_NONE) {
+                n[0] = n[1] = n[2] = 0;
+                continue;
+            }
+#define MOTE__PLANE(j) (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], ps) + (uint64_t)mote__mul_shift(d2[a], p2[j], ps))
+            n[0] = MOTE__PLANE(0);
+            n[1] = MOTE__PLANE(1);
+            n[2] = MOTE__PLANE(2);
+#undef MOTE__PLANE
         }
-        t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen((uint64_t)dmax) - 27, 0), 20));
+        t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen(dbits) - 27, 0), 20));
     }
 
     t->z = t->zdx = t->zdy = 0;
