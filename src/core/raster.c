@@ -15,7 +15,7 @@
  */
 #include "internal.h"
 
-static void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
+static inline void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
                             int y, int F)
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;

@@ -89,7 +89,7 @@ static int64_t mote__floor_div64(int64_t a, int64_t b)
  * gradient then stays small enough that stepping cannot overflow. The
  * saturation is a clamp: an unsaturated quotient of 2^28 or more (16x the
  * whole depth range per pixel) rounds to at least 2^44. */
-static int64_t mote__scaled_div(int64_t n, int64_t d)
+static inline int64_t mote__scaled_div(int64_t n, int64_t d)
 {
     const int64_t cap = (int64_t)1 << 44, big = (int64_t)1 << 46;
     int64_t q = 0;
