@@ -18,6 +18,17 @@
 #include <mote/mote.h>
 #include <string.h>
 
+/* Shortcuts in setup and the walk that skip work for common (small)
+ * triangles give the same results as the general code they bypass, but
+ * cost flash: size builds (-Os) leave them out unless told otherwise. */
+#ifndef MOTE_SHORTCUTS
+#if defined(__OPTIMIZE_SIZE__)
+#define MOTE_SHORTCUTS 0
+#else
+#define MOTE_SHORTCUTS 1
+#endif
+#endif
+
 #define MOTE__MIN(a, b) ((a) < (b) ? (a) : (b))
 #define MOTE__MAX(a, b) ((a) > (b) ? (a) : (b))
 

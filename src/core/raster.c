@@ -35,7 +35,7 @@ static inline void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_
      * n2 < 2 den, and x needs no division. */
     int64_t A = (int64_t)xa - half + u * qs, Aq = mote__floor_shift64(A, F);
     int64_t n2 = (A - Aq * one) * dy + u * rs;
-    int64_t c = u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
+    int64_t c = MOTE_SHORTCUTS && u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
     e->x = Aq + c;
     e->err = c * den - n2;
 }

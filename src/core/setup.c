@@ -159,20 +159,12 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
      * winding's sign is folded into the edge vector. */
     const int64_t sign = area2 > 0 ? 1 : -1;
     const int64_t cx = (int64_t)ox * one + half, cy = (int64_t)oy * one + half;
-    const int64_t bx0 = x0 - ox, bx1 = x1 - ox, by0 = y0 - oy, by1 = y1 - oy;
-    int64_t e[3], edx[3], edy[3], emax = 0;
+    int64_t e[3], edx[3], edy[3];
     for (int i = 0, j = 1, k = 2; i < 3; j = k, k = i, i++) {
         int64_t ax = sign * (X[k] - X[j]), ay = sign * (Y[k] - Y[j]);
         e[i] = ax * (cy - Y[j]) - ay * (cx - X[j]);
         edx[i] = -ay * one;
         edy[i] = ax * one;
-        /* largest |E| over the box: E is linear, so its largest and
-         * smallest values there take each axis's term at its larger and
-         * smaller end */
-        int64_t xa = edx[i] * bx0, xb = edx[i] * bx1, ya = edy[i] * by0, yb = edy[i] * by1;
-        int64_t hi = e[i] + MOTE__MAX(xa, xb) + MOTE__MAX(ya, yb);
-        int64_t lo = e[i] + MOTE__MIN(xa, xb) + MOTE__MIN(ya, yb);
-        emax = MOTE__MAX(emax, MOTE__MAX(hi, -lo));
     }
     int64_t a2 = area2 * sign;
 
@@ -205,12 +197,31 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
          * (its qi is smallest). |E| qi must stay below 2^61, so big
          * triangles drop up to F low bits of E first: the steps are
          * multiples of 2^F and stay exact, only the origin value rounds.
-         * E then keeps >= 33 bits and qi gets up to 28. */
+         * E then keeps >= 33 bits and qi gets up to 28.
+         * The largest |E| over the box decides. It is at most
+         * 2 Sx Sy + 2^F (Sx + Sy) (Sx, Sy: the triangle's extents; the
+         * box's centres lie within 2^F of them); while that and 2 area stay
+         * below 2^31 - 1, k is 0 and qbits 28 whatever the exact value,
+         * which only larger triangles compute. */
+        const int64_t sx = maxx - minx, sy = maxy - miny;
+        int64_t emax = 2 * sx * sy + one * (sx + sy);
+        if (!MOTE_SHORTCUTS || MOTE__MAX(emax, a2) > ((int64_t)1 << 31) - 2) {
+            /* E is linear: its largest and smallest values over the box
+             * take each axis's term at its larger and smaller end */
+            const int64_t bx0 = x0 - ox, bx1 = x1 - ox, by0 = y0 - oy, by1 = y1 - oy;
+            emax = 0;
+            for (int i = 0; i < 3; i++) {
+                int64_t xa = edx[i] * bx0, xb = edx[i] * bx1, ya = edy[i] * by0, yb = edy[i] * by1;
+                int64_t hi = e[i] + MOTE__MAX(xa, xb) + MOTE__MAX(ya, yb);
+                int64_t lo = e[i] + MOTE__MIN(xa, xb) + MOTE__MIN(ya, yb);
+                emax = MOTE__MAX(emax, MOTE__MAX(hi, -lo));
+            }
+        }
         int eb = mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
         int k = MOTE__MIN(MOTE__MAX(eb - 33, 0), F);
         int64_t pe[3] = {e[0], e[1], e[2]}, pedx[3] = {edx[0], edx[1], edx[2]};
         int64_t pedy[3] = {edy[0], edy[1], edy[2]};
-        if (k > 0)
+        if (!MOTE_SHORTCUTS || k > 0)
             for (int i = 0; i < 3; i++) {    /* steps are multiples of 2^F >= 2^k: exact */
                 pe[i] = mote__floor_shift64(e[i], k);
                 pedx[i] = mote__floor_shift64(edx[i], k);
