@@ -128,7 +128,9 @@ typedef struct mote__tri {
     int64_t q, qdx, qdy;          /* Q = sum Ei qi, qi ~ 1/wi (see setup.c) */
     int64_t z, zdx, zdy;          /* depth, 24.16 */
     /* attributes: values at vertex 0 (shades in 2^24, texels in 16.16) and
-     * numerator planes N (value, x step, y step): A = a0 + N r / 2^(K-10) */
+     * numerator planes N (value, x step, y step): A = a0 + N r / 2^(K-10);
+     * only the planes the shade kind reads are made (red alone for MONO,
+     * none for FLAT, texels with a texture), the others are 0 */
     int64_t a0[MOTE__ATTRS];
     int64_t n[MOTE__ATTRS][3];
 } mote__tri;
