@@ -103,8 +103,13 @@ void every_specialised_span_should_match_the_generic_span(void)
             wide += tri.rbits != MOTE__RBITS;
             mote__rect all = {0, 0, W, H};
             mote__raster_tri(&tri, &ta, all, 8);
-            /* the oracle: the generic loop, interpolating all three channels */
+            /* the oracle: the generic loop, interpolating all three channels
+             * (setup makes only red's plane for one grey shade: the three
+             * are the same plane) */
             tri.rs = &gen;
+            if (tri.shade == MOTE__SHADE_MONO)
+                for (int j = 0; j < 3; j++)
+                    tri.n[MOTE__A_G][j] = tri.n[MOTE__A_B][j] = tri.n[MOTE__A_R][j];
             tri.shade = MOTE__SHADE_RGB;
             mote__raster_tri(&tri, &tb, all, 8);
         }

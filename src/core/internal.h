@@ -18,6 +18,17 @@
 #include <mote/mote.h>
 #include <string.h>
 
+/* Shortcuts in setup and the walk that skip work for common (small)
+ * triangles give the same results as the general code they bypass, but
+ * cost flash: size builds (-Os) leave them out unless told otherwise. */
+#ifndef MOTE_SHORTCUTS
+#if defined(__OPTIMIZE_SIZE__)
+#define MOTE_SHORTCUTS 0
+#else
+#define MOTE_SHORTCUTS 1
+#endif
+#endif
+
 #define MOTE__MIN(a, b) ((a) < (b) ? (a) : (b))
 #define MOTE__MAX(a, b) ((a) > (b) ? (a) : (b))
 
@@ -38,10 +49,13 @@
 #endif
 
 /* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
- * negative numbers (implementation-defined in C99). */
+ * negative numbers (implementation-defined in C99): a negative v is
+ * complemented, shifted and complemented back, through a mask rather than
+ * a branch (setup and the walk take it of numbers of either sign). */
 MOTE__SPEED_INLINE int64_t mote__floor_shift64(int64_t v, int k)
 {
-    return v >= 0 ? (int64_t)((uint64_t)v >> k) : (int64_t)~(~(uint64_t)v >> k);
+    uint64_t neg = 0u - (uint64_t)(v < 0);
+    return (int64_t)((((uint64_t)v ^ neg) >> k) ^ neg);
 }
 
 /* ---- vertex stage -------------------------------------------------------- */
@@ -126,10 +140,14 @@ typedef struct mote__tri {
     int8_t shift;                 /* brings Q under 2^31 */
     uint8_t shade;                /* mote__shade_kind */
     int8_t rbits;                 /* K of the reciprocal r = 2^K / (Q >> shift) */
+    uint8_t order;                /* walk order (raster.c): bits 0-1, 2-3, 4-5 the top,
+                                   * middle and bottom vertex; bit 6: long edge on the left */
     int64_t q, qdx, qdy;          /* Q = sum Ei qi, qi ~ 1/wi (see setup.c) */
     int64_t z, zdx, zdy;          /* depth, 24.16 */
     /* attributes: values at vertex 0 (shades in 2^24, texels in 16.16) and
-     * numerator planes N (value, x step, y step): A = a0 + N r / 2^(K-10) */
+     * numerator planes N (value, x step, y step): A = a0 + N r / 2^(K-10);
+     * only the planes the shade kind reads are made (red alone for MONO,
+     * none for FLAT, texels with a texture), the others are 0 */
     int64_t a0[MOTE__ATTRS];
     int64_t n[MOTE__ATTRS][3];
 } mote__tri;
@@ -178,12 +196,12 @@ void mote__walk_switch(mote__walk *w);
 
 MOTE__SPEED_INLINE void mote__edge_step(mote__edge *e)
 {
-    e->x += e->qstep;
+    /* without a branch: whether the remainder wraps changes from row to
+     * row in no pattern a predictor can learn */
     e->err -= e->rstep;
-    if (e->err < 0) {
-        e->x++;
-        e->err += e->den;
-    }
+    int64_t wrap = -(int64_t)(e->err < 0);   /* all ones or zero */
+    e->x += e->qstep - wrap;
+    e->err += e->den & wrap;
 }
 
 /* The pixels [*x0, *x1) of row w->y (empty when *x0 >= *x1), then the walk
@@ -192,11 +210,13 @@ static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
 {
     if (w->y == w->ymid)
         mote__walk_switch(w);
-    const mote__edge *le = w->long_left ? &w->longe : &w->shorte;
-    const mote__edge *re = w->long_left ? &w->shorte : &w->longe;
-    int64_t a = le->x, b = re->x;
-    *x0 = (int)(a < w->rx0 ? w->rx0 : a > w->rx1 ? w->rx1 : a);
-    *x1 = (int)(b > w->rx1 ? w->rx1 : b < w->rx0 ? w->rx0 : b);
+    /* left and right by mask, not by a branch on the triangle's shape */
+    int64_t swap = (w->longe.x ^ w->shorte.x) & -(int64_t)w->long_left;
+    int64_t a = w->shorte.x ^ swap, b = w->longe.x ^ swap;
+    a = MOTE__MAX(a, w->rx0);     /* rx0 < rx1 */
+    b = MOTE__MIN(b, w->rx1);
+    *x0 = (int)MOTE__MIN(a, w->rx1);
+    *x1 = (int)MOTE__MAX(b, w->rx0);
     mote__edge_step(&w->longe);
     mote__edge_step(&w->shorte);
     w->y++;

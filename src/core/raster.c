@@ -15,28 +15,29 @@
  */
 #include "internal.h"
 
-static int64_t mote__floor_div(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0)))
-        q--;
-    return q;
-}
-
-static void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
+static inline void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
                             int y, int F)
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
-    int64_t dy = (int64_t)yb - ya, dx = (int64_t)xb - xa;
-    int64_t Y = (int64_t)y * one + half;
-    int64_t num = (int64_t)xa * dy + (Y - ya) * dx - half * dy;
-    e->den = dy * one;
-    /* x = ceil(num / den) */
-    e->x = -mote__floor_div(-num, e->den);
-    e->err = e->x * e->den - num;
-    int64_t step = dx * one;
-    e->qstep = mote__floor_div(step, e->den);
-    e->rstep = step - e->qstep * e->den;
+    const int32_t dy = yb - ya, dx = xb - xa;   /* dy > 0; both below 2^(MOTE_GUARD_BITS + 10) */
+    const int64_t den = (int64_t)dy * one, u = (int64_t)y * one + half - ya;
+    /* the step dx 2^F / den: floor(dx / dy) = qs, remainder rs, in 32 bits */
+    int32_t qs = dx / dy, rs = dx - qs * dy, neg = rs < 0;
+    qs -= neg;
+    rs += dy & -neg;
+    e->den = den;
+    e->qstep = qs;
+    e->rstep = (int64_t)rs * one;
+    /* x = ceil(num / den), num = (xa - 2^(F-1)) dy + u dx, err = x den - num.
+     * With A = xa - 2^(F-1) + u qs = Aq 2^F + Ar (0 <= Ar < 2^F),
+     * num = Aq den + n2, n2 = Ar dy + u rs >= 0. At the edge's first row
+     * (u < 2^F: every edge of a region that holds the top of the triangle)
+     * n2 < 2 den, and x needs no division. */
+    int64_t A = (int64_t)xa - half + u * qs, Aq = mote__floor_shift64(A, F);
+    int64_t n2 = (A - Aq * one) * dy + u * rs;
+    int64_t c = MOTE_SHORTCUTS && u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
+    e->x = Aq + c;
+    e->err = c * den - n2;
 }
 
 static int mote__first_row(int32_t Yv, int F)
@@ -47,18 +48,10 @@ static int mote__first_row(int32_t Yv, int F)
 
 bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
 {
-    /* sort by y (then x, for a fixed order) */
-    int a = 0, b = 1, c = 2, tmp;
-#define MOTE__BEFORE(i, j) (t->Y[i] < t->Y[j] || (t->Y[i] == t->Y[j] && t->X[i] < t->X[j]))
-    if (MOTE__BEFORE(b, a)) { tmp = a; a = b; b = tmp; }
-    if (MOTE__BEFORE(c, b)) { tmp = b; b = c; c = tmp; }
-    if (MOTE__BEFORE(b, a)) { tmp = a; a = b; b = tmp; }
-#undef MOTE__BEFORE
+    /* the vertices sorted by y (then x) and the long edge's side: from setup */
+    const int o = t->order, a = o & 3, b = (o >> 2) & 3, c = (o >> 4) & 3;
     const int32_t xa = t->X[a], ya = t->Y[a], xb = t->X[b], yb = t->Y[b], xc = t->X[c], yc = t->Y[c];
-    int64_t cross = (int64_t)(xb - xa) * (yc - ya) - (int64_t)(yb - ya) * (xc - xa);
-    if (cross == 0 || yc == ya)
-        return false;
-    w->long_left = cross > 0;
+    w->long_left = (o >> 6) & 1;
 
     w->rx0 = MOTE__MAX(r.x0, t->xmin);
     w->rx1 = MOTE__MIN(r.x1, t->xmax + 1);
@@ -76,12 +69,11 @@ bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
     w->yc = yc;
     w->subpixel_bits = F;
     mote__edge_init(&w->longe, xa, ya, xc, yc, w->y, F);
-    if (w->y < w->ymid) {
-        mote__edge_init(&w->shorte, xa, ya, xb, yb, w->y, F);
-    } else {
-        mote__edge_init(&w->shorte, xb, yb, xc, yc, w->y, F);
-        w->ymid = -1;             /* rows are >= 0: no switch to come */
-    }
+    /* the short edge: a-b, or b-c when the region starts at or below b
+     * (then no switch is to come: rows are >= 0); chosen without a branch */
+    int upper = w->y < w->ymid, s0 = b ^ ((a ^ b) & -upper), s1 = c ^ ((b ^ c) & -upper);
+    mote__edge_init(&w->shorte, t->X[s0], t->Y[s0], t->X[s1], t->Y[s1], w->y, F);
+    w->ymid |= upper - 1;
     return true;
 }
 

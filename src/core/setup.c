@@ -37,10 +37,11 @@ static int mote__bitlen(uint64_t v)
 static int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
 
 /* floor(a b / 2^s) for 0 <= s < 64, exact (128-bit product), modulo 2^64
- * when it does not fit: the same bits on every target. */
+ * when it does not fit: the same bits on every target. Define
+ * MOTE_NO_INT128 to test the portable path on a host that has __int128. */
 static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 {
-#if defined(__SIZEOF_INT128__)
+#if defined(__SIZEOF_INT128__) && !defined(MOTE_NO_INT128)
     __extension__ typedef __int128 mote__i128;
     return (int64_t)(uint64_t)(((mote__i128)a * b) >> s);
 #else
@@ -61,45 +62,45 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 #endif
 }
 
+/* Size builds keep a small helper that several places call out of line
+ * (GCC otherwise inlines it where that is not smaller on Cortex-M0+). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define MOTE__OUT_OF_LINE __attribute__((noinline))
+#else
+#define MOTE__OUT_OF_LINE
+#endif
+
 /* round(f) for a float that fits in int64, halves away from zero */
-static int64_t mote__round_f(float f)
+MOTE__OUT_OF_LINE static int64_t mote__round_f(float f)
 {
     int64_t t = (int64_t)f;       /* toward zero */
     float frac = f - (float)t;
-    if (frac >= 0.5f)
-        t++;
-    else if (frac <= -0.5f)
-        t--;
-    return t;
+    return t + (frac >= 0.5f) - (frac <= -0.5f);   /* no branch: frac is noise */
 }
 
 static int64_t mote__floor_div64(int64_t a, int64_t b)
 {
-    int64_t q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0)))
-        q--;
-    return q;
+    int64_t q = a / b, r = a - q * b;   /* r has a's sign */
+    return q - ((r != 0) & ((r < 0) != (b < 0)));
 }
 
 /* round(n * 2^16 / d) for |n| < 2^58 and 0 < d < 2^47, saturated to
  * +-2^44: only slivers far thinner than a pixel reach that, and their depth
- * gradient then stays small enough that stepping cannot overflow. */
-static int64_t mote__scaled_div(int64_t n, int64_t d)
+ * gradient then stays small enough that stepping cannot overflow. The
+ * saturation is a clamp: an unsaturated quotient of 2^28 or more (16x the
+ * whole depth range per pixel) rounds to at least 2^44. */
+static inline int64_t mote__scaled_div(int64_t n, int64_t d)
 {
-    const int64_t cap = (int64_t)1 << 28;  /* 16x the whole depth range per pixel */
-    if (n > -((int64_t)1 << 46) && n < ((int64_t)1 << 46)) {
-        /* the usual case: n * 2^16 fits, one division; floor(n / d) >= cap
-         * is n >= cap d, which only a d below 2^18 can reach here */
-        if (d < ((int64_t)1 << 18) && (n >= cap * d || n < -cap * d))
-            return n > 0 ? cap * 65536 : -cap * 65536;
-        return mote__floor_div64(n * 65536 + d / 2, d);
+    const int64_t cap = (int64_t)1 << 44, big = (int64_t)1 << 46;
+    int64_t q = 0;
+    if (n >= big || n <= -big) {  /* rare: n * 2^16 would not fit; whole part first */
+        q = mote__floor_div64(n, d);
+        if (q >= cap >> 16 || q < -(cap >> 16))
+            return q > 0 ? cap : -cap;
+        n -= q * d;               /* now in [0, d) */
     }
-    int64_t q = mote__floor_div64(n, d), r = n - q * d;   /* 0 <= r < d */
-    if (q >= cap)
-        return cap * 65536;
-    if (q < -cap)
-        return -cap * 65536;
-    return q * 65536 + ((r * 65536 + d / 2) / d);
+    int64_t v = q * 65536 + mote__floor_div64(n * 65536 + d / 2, d);
+    return v > cap ? cap : v < -cap ? -cap : v;
 }
 
 /* A shade in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
@@ -107,6 +108,15 @@ static int32_t mote__shade_fixed(float s)
 {
     int32_t v = (int32_t)(s * (float)MOTE__SHADE_ONE + 0.5f);
     return v < 0 ? 0 : v > MOTE__SHADE_ONE ? MOTE__SHADE_ONE : v;
+}
+
+/* v rounded down to a multiple of period (> 0); a shift and a mask for the
+ * usual power-of-two texture */
+static int64_t mote__floor_multiple(int64_t v, int64_t period)
+{
+    if ((period & (period - 1)) == 0)
+        return (int64_t)((uint64_t)v & ~(uint64_t)(period - 1));
+    return mote__floor_div64(v, period) * period;
 }
 
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
@@ -129,9 +139,8 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     y1 = MOTE__MIN(y1, height - 1);
     if (x0 > x1 || y0 > y1)
         return false;
-    memset(t, 0, sizeof *t);      /* planes a draw does not use stay zero */
+    /* every field is written below: no memset of the whole record */
     t->rs = rs;
-    t->rbits = 54;                /* any pixel loop stays defined (N = 0: A = a0) */
     for (int i = 0; i < 3; i++) {
         t->X[i] = X[i];
         t->Y[i] = Y[i];
@@ -145,43 +154,79 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     t->ox = (int16_t)ox;
     t->oy = (int16_t)oy;
 
-    /* Edge function of vertex i (zero on the opposite edge, 2*area at vertex
-     * i), at the origin pixel centre, and its steps per pixel. */
+    /* Edge function of vertex i (zero on the opposite edge j-k, 2*area at
+     * vertex i), at the origin pixel centre, and its steps per pixel; the
+     * winding's sign is folded into the edge vector. */
     const int64_t sign = area2 > 0 ? 1 : -1;
     const int64_t cx = (int64_t)ox * one + half, cy = (int64_t)oy * one + half;
-    int64_t e[3], edx[3], edy[3], emax = 0;
-    for (int i = 0; i < 3; i++) {
-        int j = (i + 1) % 3, k = (i + 2) % 3;
-        int64_t ax = X[k] - X[j], ay = Y[k] - Y[j];
-        e[i] = sign * (ax * (cy - Y[j]) - ay * (cx - X[j]));
-        edx[i] = -sign * ay * one;
-        edy[i] = sign * ax * one;
-        /* largest |E| over the box: at one of its corners (E is linear) */
-        int64_t ex0 = (int64_t)(x0 - ox), ex1 = (int64_t)(x1 - ox), ey0 = (int64_t)(y0 - oy), ey1 = (int64_t)(y1 - oy);
-        int64_t c0 = e[i] + edx[i] * ex0 + edy[i] * ey0, c1 = e[i] + edx[i] * ex1 + edy[i] * ey0;
-        int64_t c2 = e[i] + edx[i] * ex0 + edy[i] * ey1, c3 = e[i] + edx[i] * ex1 + edy[i] * ey1;
-        emax = MOTE__MAX(emax, MOTE__MAX(MOTE__MAX(mote__abs64(c0), mote__abs64(c1)),
-                                         MOTE__MAX(mote__abs64(c2), mote__abs64(c3))));
+    int64_t e[3], edx[3], edy[3];
+    for (int i = 0, j = 1, k = 2; i < 3; j = k, k = i, i++) {
+        int64_t ax = sign * (X[k] - X[j]), ay = sign * (Y[k] - Y[j]);
+        e[i] = ax * (cy - Y[j]) - ay * (cx - X[j]);
+        edx[i] = -ay * one;
+        edy[i] = ax * one;
     }
     int64_t a2 = area2 * sign;
 
+    /* Rows are walked from the top vertex a, via b, to c (sorted by y, then
+     * x): their order, and whether the long edge a-c is on the left, which
+     * is the winding of (a, b, c): area2's sign, flipped by an odd sort. */
+    {
+#define MOTE__BEFORE(i, j) ((Y[i] < Y[j]) | ((Y[i] == Y[j]) & (X[i] < X[j])))
+        int b10 = MOTE__BEFORE(1, 0), b20 = MOTE__BEFORE(2, 0), b21 = MOTE__BEFORE(2, 1);
+#undef MOTE__BEFORE
+        /* ranks (the vertices are distinct: area2 != 0) */
+        int r0 = b10 + b20, r1 = 1 - b10 + b21, r2 = 2 - b20 - b21;
+        bool odd = ((b10 + b20 + b21) & 1) != 0;
+        t->order = (uint8_t)((1 << (2 * r1)) | (2 << (2 * r2)) | ((area2 > 0) != odd) << 6);
+        (void)r0;                 /* vertex 0 holds the remaining rank: its bits stay 0 */
+    }
+
+    t->shift = 0;
+    t->shade = MOTE__SHADE_FLAT;
+    t->rbits = 54;                /* any pixel loop stays defined (N = 0: A = a0) */
+    t->q = t->qdx = t->qdy = 0;
     for (int c = 0; c < 3; c++)   /* the shade at vertex 0: every draw has one */
         t->a0[c] = mote__shade_fixed(v[0]->s[c]);
+    t->a0[MOTE__A_U] = t->a0[MOTE__A_V] = 0;
     bool needs_weights = rs->gouraud || rs->tex != MOTE__TEX_NONE;
-    if (needs_weights) {
+    if (!needs_weights)
+        memset(t->n, 0, sizeof t->n);
+    else {
         /* Precision: each qi ~ 1/wi needs many bits, the far vertex's most
          * (its qi is smallest). |E| qi must stay below 2^61, so big
          * triangles drop up to F low bits of E first: the steps are
          * multiples of 2^F and stay exact, only the origin value rounds.
-         * E then keeps >= 33 bits and qi gets up to 28. */
+         * E then keeps >= 33 bits and qi gets up to 28.
+         * The largest |E| over the box decides. It is at most
+         * 2 Sx Sy + 2^F (Sx + Sy) (Sx, Sy: the triangle's extents; the
+         * box's centres lie within 2^F of them); while that and 2 area stay
+         * below 2^31 - 1, k is 0 and qbits 28 whatever the exact value,
+         * which only larger triangles compute. */
+        const int64_t sx = maxx - minx, sy = maxy - miny;
+        int64_t emax = 2 * sx * sy + one * (sx + sy);
+        if (!MOTE_SHORTCUTS || MOTE__MAX(emax, a2) > ((int64_t)1 << 31) - 2) {
+            /* E is linear: its largest and smallest values over the box
+             * take each axis's term at its larger and smaller end */
+            const int64_t bx0 = x0 - ox, bx1 = x1 - ox, by0 = y0 - oy, by1 = y1 - oy;
+            emax = 0;
+            for (int i = 0; i < 3; i++) {
+                int64_t xa = edx[i] * bx0, xb = edx[i] * bx1, ya = edy[i] * by0, yb = edy[i] * by1;
+                int64_t hi = e[i] + MOTE__MAX(xa, xb) + MOTE__MAX(ya, yb);
+                int64_t lo = e[i] + MOTE__MIN(xa, xb) + MOTE__MIN(ya, yb);
+                emax = MOTE__MAX(emax, MOTE__MAX(hi, -lo));
+            }
+        }
         int eb = mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
         int k = MOTE__MIN(MOTE__MAX(eb - 33, 0), F);
-        int64_t pe[3], pedx[3], pedy[3];
-        for (int i = 0; i < 3; i++) {    /* steps are multiples of 2^F >= 2^k: exact */
-            pe[i] = mote__floor_shift64(e[i], k);
-            pedx[i] = mote__floor_shift64(edx[i], k);
-            pedy[i] = mote__floor_shift64(edy[i], k);
-        }
+        int64_t pe[3] = {e[0], e[1], e[2]}, pedx[3] = {edx[0], edx[1], edx[2]};
+        int64_t pedy[3] = {edy[0], edy[1], edy[2]};
+        if (!MOTE_SHORTCUTS || k > 0)
+            for (int i = 0; i < 3; i++) {    /* steps are multiples of 2^F >= 2^k: exact */
+                pe[i] = mote__floor_shift64(e[i], k);
+                pedx[i] = mote__floor_shift64(edx[i], k);
+                pedy[i] = mote__floor_shift64(edy[i], k);
+            }
         int64_t a2k = (a2 >> k) + 1;
         int qbits = 61 - 2 - mote__bitlen((uint64_t)MOTE__MAX((emax >> k) + 1, a2k));
         qbits = MOTE__MIN(qbits, 28);
@@ -206,40 +251,45 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
-        /* attribute differences to vertex 0 */
-        int64_t d1[MOTE__ATTRS] = {0}, d2[MOTE__ATTRS] = {0};
-        bool grey = true, constant = true;
+        /* attribute differences to vertex 0; the shade is grey when its
+         * three channels agree at every vertex, constant when no channel
+         * changes (tested with bits, not branches) */
+        int64_t d1[MOTE__ATTRS], d2[MOTE__ATTRS];
+        uint32_t differ = 0, vary = 0;    /* shades and their differences fit in 32 bits */
         for (int c = 0; c < 3; c++) {
-            d1[c] = mote__shade_fixed(v[1]->s[c]) - t->a0[c];
-            d2[c] = mote__shade_fixed(v[2]->s[c]) - t->a0[c];
-            grey = grey && t->a0[c] == t->a0[0] && d1[c] == d1[0] && d2[c] == d2[0];
-            constant = constant && d1[c] == 0 && d2[c] == 0;
+            int32_t s0 = (int32_t)t->a0[c];
+            int32_t e1 = mote__shade_fixed(v[1]->s[c]) - s0, e2 = mote__shade_fixed(v[2]->s[c]) - s0;
+            d1[c] = e1;
+            d2[c] = e2;
+            differ |= (uint32_t)(s0 ^ (int32_t)t->a0[0]) | (uint32_t)(e1 ^ (int32_t)d1[0])
+                    | (uint32_t)(e2 ^ (int32_t)d2[0]);
+            vary |= (uint32_t)(e1 | e2);
         }
-        if (rs->gouraud && !constant)
-            t->shade = grey ? MOTE__SHADE_MONO : MOTE__SHADE_RGB;
+        if (rs->gouraud && vary != 0)
+            t->shade = differ == 0 ? MOTE__SHADE_MONO : MOTE__SHADE_RGB;
+        /* K (below): shade differences are at most 2^24 and never lower
+         * it; texel differences' largest magnitude does, and has the bit
+         * length of all their magnitudes or-ed together */
+        uint64_t dbits = 0;
+        d1[MOTE__A_U] = d2[MOTE__A_U] = d1[MOTE__A_V] = d2[MOTE__A_V] = 0;
         if (rs->tex != MOTE__TEX_NONE) {
             /* texels in 16.16; whole periods removed so numbers stay small */
-            int64_t U[3], V[3];
-            for (int i = 0; i < 3; i++) {
-                U[i] = mote__round_f(v[i]->u * 65536.0f);
-                V[i] = mote__round_f(v[i]->v * 65536.0f);
+            for (int a = MOTE__A_U; a <= MOTE__A_V; a++) {
+                int64_t T[3];
+                for (int i = 0; i < 3; i++)
+                    T[i] = mote__round_f((a == MOTE__A_U ? v[i]->u : v[i]->v) * 65536.0f);
+                mote_wrap wrap = a == MOTE__A_U ? rs->wrap_u : rs->wrap_v;
+                int64_t base = 0;
+                if (wrap != MOTE_WRAP_CLAMP) {
+                    int64_t period = ((int64_t)(a == MOTE__A_U ? rs->tex_w : rs->tex_h) << 16)
+                                   * (wrap == MOTE_WRAP_MIRROR ? 2 : 1);
+                    base = mote__floor_multiple(MOTE__MIN(T[0], MOTE__MIN(T[1], T[2])), period);
+                }
+                t->a0[a] = T[0] - base;
+                d1[a] = T[1] - T[0];
+                d2[a] = T[2] - T[0];
+                dbits |= (uint64_t)mote__abs64(d1[a]) | (uint64_t)mote__abs64(d2[a]);
             }
-            int64_t umin = MOTE__MIN(U[0], MOTE__MIN(U[1], U[2])), vmin = MOTE__MIN(V[0], MOTE__MIN(V[1], V[2]));
-            int64_t pu = 0, pv = 0;
-            if (rs->wrap_u != MOTE_WRAP_CLAMP) {
-                int64_t period = ((int64_t)rs->tex_w << 16) * (rs->wrap_u == MOTE_WRAP_MIRROR ? 2 : 1);
-                pu = mote__floor_div64(umin, period) * period;
-            }
-            if (rs->wrap_v != MOTE_WRAP_CLAMP) {
-                int64_t period = ((int64_t)rs->tex_h << 16) * (rs->wrap_v == MOTE_WRAP_MIRROR ? 2 : 1);
-                pv = mote__floor_div64(vmin, period) * period;
-            }
-            t->a0[MOTE__A_U] = U[0] - pu;
-            d1[MOTE__A_U] = U[1] - U[0];
-            d2[MOTE__A_U] = U[2] - U[0];
-            t->a0[MOTE__A_V] = V[0] - pv;
-            d1[MOTE__A_V] = V[1] - V[0];
-            d2[MOTE__A_V] = V[2] - V[0];
         }
         /* Numerator planes: A = a0 + (d1 P1 + d2 P2) / Q. With
          * N = (d1 P1 + d2 P2) / 2^(shift + 10) as an integer plane (so a
@@ -248,17 +298,27 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
          * an attribute unit) and r = 2^K / (Q >> shift),
          * A = a0 + (N >> 10) r / 2^(K - 20). N r is about (A - a0) 2^(K-20),
          * so K is 54 (r keeps >= 23 bits, Q >> shift being below 2^31)
-         * unless an attribute spans more than 2^27 units. */
-        int64_t dmax = 0;
+         * unless an attribute spans more than 2^27 units. Only the planes
+         * the pixel loops read are made: red alone for one grey shade,
+         * none for a constant one, texels with a texture; the rest are 0. */
+        const int shades = t->shade == MOTE__SHADE_RGB ? 3 : t->shade == MOTE__SHADE_MONO ? 1 : 0;
+        const int ps = t->shift + 10;
         for (int a = 0; a < MOTE__ATTRS; a++) {
-            dmax = MOTE__MAX(dmax, MOTE__MAX(mote__abs64(d1[a]), mote__abs64(d2[a])));
-            for (int j = 0; j < 3; j++)
-                t->n[a][j] = (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], t->shift + 10)
-                                       + (uint64_t)mote__mul_shift(d2[a], p2[j], t->shift + 10));
+            int64_t *n = t->n[a];
+            if (a < MOTE__A_U ? a >= shades : rs->tex == MOTE__TEX_NONE) {
+                n[0] = n[1] = n[2] = 0;
+                continue;
+            }
+#define MOTE__PLANE(j) (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], ps) + (uint64_t)mote__mul_shift(d2[a], p2[j], ps))
+            n[0] = MOTE__PLANE(0);
+            n[1] = MOTE__PLANE(1);
+            n[2] = MOTE__PLANE(2);
+#undef MOTE__PLANE
         }
-        t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen((uint64_t)dmax) - 27, 0), 20));
+        t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen(dbits) - 27, 0), 20));
     }
 
+    t->z = t->zdx = t->zdy = 0;
     if (rs->depth_test || rs->depth_write) {
         int64_t d[3];
         for (int i = 0; i < 3; i++) {
