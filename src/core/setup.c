@@ -44,18 +44,15 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
     __extension__ typedef __int128 mote__i128;
     return (int64_t)(uint64_t)(((mote__i128)a * b) >> s);
 #else
-    bool neg = (a < 0) != (b < 0);
-    uint64_t x = a < 0 ? 0u - (uint64_t)a : (uint64_t)a, y = b < 0 ? 0u - (uint64_t)b : (uint64_t)b;
-    /* |a b| as hi:lo from 32-bit halves */
+    /* the unsigned 128-bit product of a's and b's bits, then the signed
+     * one: a negative a read as unsigned is a + 2^64, which adds 2^64 b
+     * to the product (and a negative b adds 2^64 a): take those from hi */
+    uint64_t x = (uint64_t)a, y = (uint64_t)b;
     uint64_t xl = x & 0xffffffffu, xh = x >> 32, yl = y & 0xffffffffu, yh = y >> 32;
     uint64_t ll = xl * yl, lh = xl * yh, hl = xh * yl, hh = xh * yh;
     uint64_t mid = (ll >> 32) + (lh & 0xffffffffu) + (hl & 0xffffffffu);
     uint64_t lo = (ll & 0xffffffffu) | (mid << 32);
-    uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
-    if (neg) {                    /* two's complement of the 128-bit value */
-        lo = ~lo + 1u;
-        hi = ~hi + (lo == 0 ? 1u : 0u);
-    }
+    uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32) - (a < 0 ? y : 0) - (b < 0 ? x : 0);
     /* arithmetic shift of hi:lo by s, low 64 bits */
     return (int64_t)(s == 0 ? lo : (lo >> s) | (hi << (64 - s)));
 #endif
@@ -256,7 +253,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         } else {
             float wmin = MOTE__MIN(v[0]->w, MOTE__MIN(v[1]->w, v[2]->w));
             for (int i = 0; i < 3; i++) {
-                q[i] = mote__round_f((float)((int64_t)1 << qbits) * (wmin / v[i]->w));
+                q[i] = mote__round_f((float)((int32_t)1 << qbits) * (wmin / v[i]->w));   /* qbits <= 28 */
                 if (q[i] < 1)
                     q[i] = 1;
             }
