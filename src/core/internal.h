@@ -58,6 +58,13 @@ MOTE__SPEED_INLINE int64_t mote__floor_shift64(int64_t v, int k)
     return (int64_t)((((uint64_t)v ^ neg) >> k) ^ neg);
 }
 
+/* the same for a 32-bit v, 0 <= k < 31 (short enough to inline anywhere) */
+static inline int32_t mote__floor_shift32(int32_t v, int k)
+{
+    uint32_t neg = 0u - (uint32_t)(v < 0);
+    return (int32_t)((((uint32_t)v ^ neg) >> k) ^ neg);
+}
+
 /* ---- vertex stage -------------------------------------------------------- */
 
 void mote__mat4_identity(float m[16]);

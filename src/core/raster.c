@@ -20,21 +20,22 @@ static inline void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
     const int32_t dy = yb - ya, dx = xb - xa;   /* dy > 0; both below 2^(MOTE_GUARD_BITS + 10) */
-    const int64_t den = (int64_t)dy * one, u = (int64_t)y * one + half - ya;
+    /* u in 32 bits: y is a row of the screen, ya within the guard band */
+    const int64_t den = (int64_t)dy << F, u = (int32_t)(((int32_t)y << F) + (int32_t)half - ya);
     /* the step dx 2^F / den: floor(dx / dy) = qs, remainder rs, in 32 bits */
     int32_t qs = dx / dy, rs = dx - qs * dy, neg = rs < 0;
     qs -= neg;
     rs += dy & -neg;
     e->den = den;
     e->qstep = qs;
-    e->rstep = (int64_t)rs * one;
+    e->rstep = (int64_t)rs << F;  /* rs >= 0 */
     /* x = ceil(num / den), num = (xa - 2^(F-1)) dy + u dx, err = x den - num.
      * With A = xa - 2^(F-1) + u qs = Aq 2^F + Ar (0 <= Ar < 2^F),
      * num = Aq den + n2, n2 = Ar dy + u rs >= 0. At the edge's first row
      * (u < 2^F: every edge of a region that holds the top of the triangle)
      * n2 < 2 den, and x needs no division. */
     int64_t A = (int64_t)xa - half + u * qs, Aq = mote__floor_shift64(A, F);
-    int64_t n2 = (A - Aq * one) * dy + u * rs;
+    int64_t n2 = (int64_t)(int32_t)(A & (one - 1)) * dy + u * rs;   /* A - Aq 2^F */
     int64_t c = MOTE_SHORTCUTS && u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
     e->x = Aq + c;
     e->err = c * den - n2;
@@ -43,7 +44,7 @@ static inline void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_
 static int mote__first_row(int32_t Yv, int F)
 {
     /* smallest y with y * 2^F + 2^(F-1) >= Yv: ceil((Yv - 2^(F-1)) / 2^F) */
-    return (int)mote__floor_shift64((int64_t)Yv - ((int64_t)1 << (F - 1)) + ((int64_t)1 << F) - 1, F);
+    return mote__floor_shift32(Yv + (1 << (F - 1)) - 1, F);   /* no overflow: |Yv| < 2^24 */
 }
 
 bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)

@@ -34,7 +34,6 @@ static int mote__bitlen(uint64_t v)
 #endif
 }
 
-static int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
 
 /* floor(a b / 2^s) for 0 <= s < 64, exact (128-bit product), modulo 2^64
  * when it does not fit: the same bits on every target. Define
@@ -45,18 +44,15 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
     __extension__ typedef __int128 mote__i128;
     return (int64_t)(uint64_t)(((mote__i128)a * b) >> s);
 #else
-    bool neg = (a < 0) != (b < 0);
-    uint64_t x = a < 0 ? 0u - (uint64_t)a : (uint64_t)a, y = b < 0 ? 0u - (uint64_t)b : (uint64_t)b;
-    /* |a b| as hi:lo from 32-bit halves */
+    /* the unsigned 128-bit product of a's and b's bits, then the signed
+     * one: a negative a read as unsigned is a + 2^64, which adds 2^64 b
+     * to the product (and a negative b adds 2^64 a): take those from hi */
+    uint64_t x = (uint64_t)a, y = (uint64_t)b;
     uint64_t xl = x & 0xffffffffu, xh = x >> 32, yl = y & 0xffffffffu, yh = y >> 32;
     uint64_t ll = xl * yl, lh = xl * yh, hl = xh * yl, hh = xh * yh;
     uint64_t mid = (ll >> 32) + (lh & 0xffffffffu) + (hl & 0xffffffffu);
     uint64_t lo = (ll & 0xffffffffu) | (mid << 32);
-    uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
-    if (neg) {                    /* two's complement of the 128-bit value */
-        lo = ~lo + 1u;
-        hi = ~hi + (lo == 0 ? 1u : 0u);
-    }
+    uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32) - (a < 0 ? y : 0) - (b < 0 ? x : 0);
     /* arithmetic shift of hi:lo by s, low 64 bits */
     return (int64_t)(s == 0 ? lo : (lo >> s) | (hi << (64 - s)));
 #endif
@@ -70,6 +66,8 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 #define MOTE__OUT_OF_LINE
 #endif
 
+MOTE__OUT_OF_LINE static int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
+
 /* round(f) for a float that fits in int64, halves away from zero */
 MOTE__OUT_OF_LINE static int64_t mote__round_f(float f)
 {
@@ -78,7 +76,7 @@ MOTE__OUT_OF_LINE static int64_t mote__round_f(float f)
     return t + (frac >= 0.5f) - (frac <= -0.5f);   /* no branch: frac is noise */
 }
 
-static int64_t mote__floor_div64(int64_t a, int64_t b)
+MOTE__OUT_OF_LINE static int64_t mote__floor_div64(int64_t a, int64_t b)
 {
     int64_t q = a / b, r = a - q * b;   /* r has a's sign */
     return q - ((r != 0) & ((r < 0) != (b < 0)));
@@ -99,12 +97,12 @@ static inline int64_t mote__scaled_div(int64_t n, int64_t d)
             return q > 0 ? cap : -cap;
         n -= q * d;               /* now in [0, d) */
     }
-    int64_t v = q * 65536 + mote__floor_div64(n * 65536 + d / 2, d);
+    int64_t v = q * 65536 + mote__floor_div64(n * 65536 + (d >> 1), d);   /* d > 0 */
     return v > cap ? cap : v < -cap ? -cap : v;
 }
 
 /* A shade in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
-static int32_t mote__shade_fixed(float s)
+MOTE__OUT_OF_LINE static int32_t mote__shade_fixed(float s)
 {
     int32_t v = (int32_t)(s * (float)MOTE__SHADE_ONE + 0.5f);
     return v < 0 ? 0 : v > MOTE__SHADE_ONE ? MOTE__SHADE_ONE : v;
@@ -119,6 +117,12 @@ static int64_t mote__floor_multiple(int64_t v, int64_t period)
     return mote__floor_div64(v, period) * period;
 }
 
+/* whether vertex i comes before vertex j in the walk: by y, then x */
+MOTE__OUT_OF_LINE static int mote__before(const int32_t X[3], const int32_t Y[3], int i, int j)
+{
+    return (Y[i] < Y[j]) | ((Y[i] == Y[j]) & (X[i] < X[j]));
+}
+
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                  const int32_t Y[3], const mote__cvert *v[3], int F,
                  int width, int height)
@@ -131,8 +135,9 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     /* Pixel bounding box: pixels whose centre can be inside. */
     int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
     int32_t miny = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), maxy = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
-    int x0 = (int)mote__floor_shift64(minx - half, F), x1 = (int)mote__floor_shift64(maxx - half, F) + 1;
-    int y0 = (int)mote__floor_shift64(miny - half, F), y1 = (int)mote__floor_shift64(maxy - half, F) + 1;
+    const int32_t h32 = (int32_t)half;
+    int x0 = mote__floor_shift32(minx - h32, F), x1 = mote__floor_shift32(maxx - h32, F) + 1;
+    int y0 = mote__floor_shift32(miny - h32, F), y1 = mote__floor_shift32(maxy - h32, F) + 1;
     x0 = MOTE__MAX(x0, 0);
     y0 = MOTE__MAX(y0, 0);
     x1 = MOTE__MIN(x1, width - 1);
@@ -150,31 +155,35 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     t->ymin = (int16_t)y0;
     t->ymax = (int16_t)y1;
     /* origin: the pixel holding vertex 0 (in the guard band, so int16 fits) */
-    const int ox = (int)mote__floor_shift64(X[0], F), oy = (int)mote__floor_shift64(Y[0], F);
+    const int ox = mote__floor_shift32(X[0], F), oy = mote__floor_shift32(Y[0], F);
     t->ox = (int16_t)ox;
     t->oy = (int16_t)oy;
 
     /* Edge function of vertex i (zero on the opposite edge j-k, 2*area at
      * vertex i), at the origin pixel centre, and its steps per pixel; the
      * winding's sign is folded into the edge vector. */
-    const int64_t sign = area2 > 0 ? 1 : -1;
-    const int64_t cx = (int64_t)ox * one + half, cy = (int64_t)oy * one + half;
-    int64_t e[3], edx[3], edy[3];
+    /* in 32 bits: coordinates and their differences are below 2^24, and
+     * the origin pixel's centre is vertex 0 with its low F bits replaced */
+    const int32_t cx = (X[0] & -(int32_t)one) + (int32_t)half, cy = (Y[0] & -(int32_t)one) + (int32_t)half;
+    /* ed[3 j + i]: edge i's value (j = 0), x step (1), y step (2) */
+    int64_t ed[9], *const e = ed, *const edx = ed + 3, *const edy = ed + 6;
     for (int i = 0, j = 1, k = 2; i < 3; j = k, k = i, i++) {
-        int64_t ax = sign * (X[k] - X[j]), ay = sign * (Y[k] - Y[j]);
-        e[i] = ax * (cy - Y[j]) - ay * (cx - X[j]);
-        edx[i] = -ay * one;
-        edy[i] = ax * one;
+        int32_t ax = X[k] - X[j], ay = Y[k] - Y[j];
+        if (area2 < 0) {
+            ax = -ax;
+            ay = -ay;
+        }
+        e[i] = (int64_t)ax * (cy - Y[j]) - (int64_t)ay * (cx - X[j]);
+        edx[i] = (int64_t)((uint64_t)-(int64_t)ay << F);
+        edy[i] = (int64_t)((uint64_t)(int64_t)ax << F);
     }
-    int64_t a2 = area2 * sign;
+    int64_t a2 = area2 < 0 ? -area2 : area2;
 
     /* Rows are walked from the top vertex a, via b, to c (sorted by y, then
      * x): their order, and whether the long edge a-c is on the left, which
      * is the winding of (a, b, c): area2's sign, flipped by an odd sort. */
     {
-#define MOTE__BEFORE(i, j) ((Y[i] < Y[j]) | ((Y[i] == Y[j]) & (X[i] < X[j])))
-        int b10 = MOTE__BEFORE(1, 0), b20 = MOTE__BEFORE(2, 0), b21 = MOTE__BEFORE(2, 1);
-#undef MOTE__BEFORE
+        int b10 = mote__before(X, Y, 1, 0), b20 = mote__before(X, Y, 2, 0), b21 = mote__before(X, Y, 2, 1);
         /* ranks (the vertices are distinct: area2 != 0) */
         int r0 = b10 + b20, r1 = 1 - b10 + b21, r2 = 2 - b20 - b21;
         bool odd = ((b10 + b20 + b21) & 1) != 0;
@@ -208,25 +217,31 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         if (!MOTE_SHORTCUTS || MOTE__MAX(emax, a2) > ((int64_t)1 << 31) - 2) {
             /* E is linear: its largest and smallest values over the box
              * take each axis's term at its larger and smaller end */
-            const int64_t bx0 = x0 - ox, bx1 = x1 - ox, by0 = y0 - oy, by1 = y1 - oy;
+            const int32_t b0[2] = {x0 - ox, y0 - oy}, b1[2] = {x1 - ox, y1 - oy};
             emax = 0;
             for (int i = 0; i < 3; i++) {
-                int64_t xa = edx[i] * bx0, xb = edx[i] * bx1, ya = edy[i] * by0, yb = edy[i] * by1;
-                int64_t hi = e[i] + MOTE__MAX(xa, xb) + MOTE__MAX(ya, yb);
-                int64_t lo = e[i] + MOTE__MIN(xa, xb) + MOTE__MIN(ya, yb);
+                int64_t hi = e[i], lo = e[i];
+                for (int j = 0; j < 2; j++) {
+                    /* b0 <= b1: the step's sign says which end is larger */
+                    int64_t step = ed[3 * j + 3 + i], pa = step * b0[j], pb = step * b1[j];
+                    if (step < 0) {
+                        int64_t tmp = pa;
+                        pa = pb;
+                        pb = tmp;
+                    }
+                    hi += pb;
+                    lo += pa;
+                }
                 emax = MOTE__MAX(emax, MOTE__MAX(hi, -lo));
             }
         }
         int eb = mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
         int k = MOTE__MIN(MOTE__MAX(eb - 33, 0), F);
-        int64_t pe[3] = {e[0], e[1], e[2]}, pedx[3] = {edx[0], edx[1], edx[2]};
-        int64_t pedy[3] = {edy[0], edy[1], edy[2]};
+        int64_t pd[9];            /* ed >> k; steps are multiples of 2^F >= 2^k: exact */
+        memcpy(pd, ed, sizeof pd);
         if (!MOTE_SHORTCUTS || k > 0)
-            for (int i = 0; i < 3; i++) {    /* steps are multiples of 2^F >= 2^k: exact */
-                pe[i] = mote__floor_shift64(e[i], k);
-                pedx[i] = mote__floor_shift64(edx[i], k);
-                pedy[i] = mote__floor_shift64(edy[i], k);
-            }
+            for (int i = 0; i < 9; i++)
+                pd[i] = mote__floor_shift64(ed[i], k);
         int64_t a2k = (a2 >> k) + 1;
         int qbits = 61 - 2 - mote__bitlen((uint64_t)MOTE__MAX((emax >> k) + 1, a2k));
         qbits = MOTE__MIN(qbits, 28);
@@ -238,16 +253,20 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         } else {
             float wmin = MOTE__MIN(v[0]->w, MOTE__MIN(v[1]->w, v[2]->w));
             for (int i = 0; i < 3; i++) {
-                q[i] = mote__round_f((float)((int64_t)1 << qbits) * (wmin / v[i]->w));
+                q[i] = mote__round_f((float)((int32_t)1 << qbits) * (wmin / v[i]->w));   /* qbits <= 28 */
                 if (q[i] < 1)
                     q[i] = 1;
             }
         }
-        const int64_t p1[3] = {pe[1] * q[1], pedx[1] * q[1], pedy[1] * q[1]};
-        const int64_t p2[3] = {pe[2] * q[2], pedx[2] * q[2], pedy[2] * q[2]};
-        t->q = pe[0] * q[0] + p1[0] + p2[0];
-        t->qdx = pedx[0] * q[0] + p1[1] + p2[1];
-        t->qdy = pedy[0] * q[0] + p1[2] + p2[2];
+        int64_t p1[3], p2[3], qp[3];      /* P1, P2 and Q: value, x step, y step */
+        for (int j = 0; j < 3; j++) {
+            p1[j] = pd[3 * j + 1] * q[1];
+            p2[j] = pd[3 * j + 2] * q[2];
+            qp[j] = pd[3 * j] * q[0] + p1[j] + p2[j];
+        }
+        t->q = qp[0];
+        t->qdx = qp[1];
+        t->qdy = qp[2];
         int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
@@ -309,11 +328,9 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                 n[0] = n[1] = n[2] = 0;
                 continue;
             }
-#define MOTE__PLANE(j) (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], ps) + (uint64_t)mote__mul_shift(d2[a], p2[j], ps))
-            n[0] = MOTE__PLANE(0);
-            n[1] = MOTE__PLANE(1);
-            n[2] = MOTE__PLANE(2);
-#undef MOTE__PLANE
+            for (int j = 0; j < 3; j++)
+                n[j] = (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], ps)
+                                 + (uint64_t)mote__mul_shift(d2[a], p2[j], ps));
         }
         t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen(dbits) - 27, 0), 20));
     }
@@ -330,9 +347,12 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
          * the origin are below 2^32 (both vanish at vertex 0), steps below
          * 2^32, depth differences below 2^25: all products fit */
         int64_t d1 = d[1] - d[0], d2 = d[2] - d[0];
-        t->z = d[0] * 65536 + mote__scaled_div(e[1] * d1 + e[2] * d2, a2);
-        t->zdx = mote__scaled_div(edx[1] * d1 + edx[2] * d2, a2);
-        t->zdy = mote__scaled_div(edy[1] * d1 + edy[2] * d2, a2);
+        int64_t zp[3];
+        for (int j = 0; j < 3; j++)
+            zp[j] = mote__scaled_div(ed[3 * j + 1] * d1 + ed[3 * j + 2] * d2, a2);
+        t->z = d[0] * 65536 + zp[0];
+        t->zdx = zp[1];
+        t->zdy = zp[2];
     }
     return true;
 }

@@ -29,8 +29,11 @@
  * generic-only build lets the compiler keep helpers out of line (smaller). */
 #if defined(__GNUC__) && MOTE_SPECIALISE_SPANS
 #define MOTE__INLINE static inline __attribute__((always_inline))
+#define MOTE__SMALL MOTE__INLINE
 #else
 #define MOTE__INLINE static
+/* a few 64-bit steps the pixel loop repeats per attribute: one copy */
+#define MOTE__SMALL MOTE__SPEED_INLINE
 #endif
 
 /* What the host is, for faster forms with the same results: a texel read as
@@ -152,18 +155,18 @@ MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, bool pow2
                 + e[k] * fu * fv + 32768) >> 16;
 }
 
-/* A plane's value at (dx, dy) from its origin. The value at a pixel of the
- * triangle fits in 64 bits, but dx * stepx alone may not (the origin can lie
- * far outside the viewport, and the two products then nearly cancel), so
- * the sum is formed in modular unsigned arithmetic, which is exact whenever
- * the result fits. */
-MOTE__INLINE int64_t mote__plane_at(int64_t base, int64_t stepx, int64_t stepy, int64_t dx, int64_t dy)
+/* A plane's value d steps (of one axis) from base. The value at a pixel of
+ * the triangle fits in 64 bits, but d * step alone may not (the origin can
+ * lie far outside the viewport, and the row and column terms then nearly
+ * cancel), so the sum is formed in modular unsigned arithmetic, which is
+ * exact whenever the result fits. */
+MOTE__INLINE int64_t mote__plane_at(int64_t base, int64_t step, int64_t d)
 {
-    return (int64_t)((uint64_t)base + (uint64_t)stepx * (uint64_t)dx + (uint64_t)stepy * (uint64_t)dy);
+    return (int64_t)((uint64_t)base + (uint64_t)step * (uint64_t)d);
 }
 
 /* 2^k / (q >> shift): the one division per pixel. */
-MOTE__INLINE uint64_t mote__recip_k(int64_t q, int shift, int k)
+MOTE__SMALL uint64_t mote__recip_k(int64_t q, int shift, int k)
 {
     uint64_t qs = (uint64_t)(q >> shift);
     return ((uint64_t)1 << k) / (qs ? qs : 1);
@@ -171,7 +174,7 @@ MOTE__INLINE uint64_t mote__recip_k(int64_t q, int shift, int k)
 
 /* An attribute from its numerator plane value n and r (see setup.c): one
  * multiplication. Modular, so a hostile triangle gives garbage, not UB. */
-MOTE__INLINE int64_t mote__attr(int64_t a0, int64_t n, uint64_t r, int k)
+MOTE__SMALL int64_t mote__attr(int64_t a0, int64_t n, uint64_t r, int k)
 {
     return a0 + ((int64_t)((uint64_t)(n >> 10) * r) >> (k - 20));
 }
@@ -224,9 +227,15 @@ MOTE__INLINE void mote__modulate_grey(uint32_t c[3], uint32_t s)
     c[2] = (uint32_t)(rb >> 56);
 }
 
-MOTE__INLINE uint32_t mote__clamp_shade(int64_t v)
+MOTE__SMALL uint32_t mote__clamp_shade(int64_t v)
 {
     return v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
+}
+
+/* An interpolated shade, clamped. */
+MOTE__SMALL uint32_t mote__shade_at(int64_t a0, int64_t n, uint64_t r, int k)
+{
+    return mote__clamp_shade(mote__attr(a0, n, r, k));
 }
 
 /* What the pixel loop needs of a triangle, read once per triangle into
@@ -287,8 +296,8 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 if (x >= seg_x1) {
                     seg_x0 = x & ~(c->seg_len - 1);
                     seg_x1 = seg_x0 + c->seg_len;
-                    int64_t qa = mote__plane_at(q, qdx, 0, seg_x0 - x, 0);
-                    int64_t qb = mote__plane_at(q, qdx, 0, seg_x1 - x, 0);
+                    int64_t qa = mote__plane_at(q, qdx, seg_x0 - x);
+                    int64_t qb = mote__plane_at(q, qdx, seg_x1 - x);
                     /* an end outside the triangle may have no valid Q:
                      * then this segment is exact at every pixel */
                     seg_exact = (qa >> shift) <= 0 || (qb >> shift) <= 0;
@@ -302,11 +311,11 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 r = persp == MOTE__PERSP_AFFINE ? c->affine_r : mote__recip_k(q, shift, k);
             }
             if (shade == MOTE__SHADE_MONO) {
-                sr = sg = sb = mote__clamp_shade(mote__attr(c->a0[MOTE__A_R], nr, r, k));
+                sr = sg = sb = mote__shade_at(c->a0[MOTE__A_R], nr, r, k);
             } else if (shade == MOTE__SHADE_RGB) {
-                sr = mote__clamp_shade(mote__attr(c->a0[MOTE__A_R], nr, r, k));
-                sg = mote__clamp_shade(mote__attr(c->a0[MOTE__A_G], ng, r, k));
-                sb = mote__clamp_shade(mote__attr(c->a0[MOTE__A_B], nb, r, k));
+                sr = mote__shade_at(c->a0[MOTE__A_R], nr, r, k);
+                sg = mote__shade_at(c->a0[MOTE__A_G], ng, r, k);
+                sb = mote__shade_at(c->a0[MOTE__A_B], nb, r, k);
             }
             if (tex) {
                 uint32_t t[3];
@@ -349,12 +358,12 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
     const int stride = tg->stride, width = tg->width, ty0 = tg->y0;
     const int64_t dy0 = w->y - t->oy;
     const int64_t zdy = t->zdy, qdy = t->qdy;
-    uint64_t zr = (uint64_t)mote__plane_at(t->z, 0, zdy, 0, dy0);
+    uint64_t zr = (uint64_t)mote__plane_at(t->z, zdy, dy0);
     uint64_t qr = 0, nrow[MOTE__ATTRS] = {0};
     if (varying) {
-        qr = (uint64_t)mote__plane_at(t->q, 0, qdy, 0, dy0);
+        qr = (uint64_t)mote__plane_at(t->q, qdy, dy0);
         for (int a = 0; a < MOTE__ATTRS; a++)
-            nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], 0, t->n[a][2], 0, dy0);
+            nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], t->n[a][2], dy0);
     }
     const int ox = t->ox;
     uint64_t tested = 0;
@@ -369,12 +378,12 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
             int64_t n[MOTE__ATTRS] = {0};
             if (varying)
                 for (int a = 0; a < MOTE__ATTRS; a++)
-                    n[a] = mote__plane_at((int64_t)nrow[a], c->ndx[a], 0, dx0, 0);
+                    n[a] = mote__plane_at((int64_t)nrow[a], c->ndx[a], dx0);
             written += mote__pixels(c, color + (size_t)(y - ty0) * (size_t)stride,
                                     dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
                                     dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
-                                    mote__plane_at((int64_t)zr, c->zdx, 0, dx0, 0),
-                                    varying ? mote__plane_at((int64_t)qr, c->qdx, 0, dx0, 0) : 0, n,
+                                    mote__plane_at((int64_t)zr, c->zdx, dx0),
+                                    varying ? mote__plane_at((int64_t)qr, c->qdx, dx0) : 0, n,
                                     tex, pow2, shade, persp, dsel, dwrite, fmt, k);
             tested += (uint64_t)(x1 - x0);
         }

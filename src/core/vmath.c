@@ -128,10 +128,11 @@ void mote__normal_matrix(const float m[16], float out[9])
     /* cofactors of the upper 3x3 = inverse-transpose times the determinant;
      * the scale does not matter because normals are normalised afterwards.
      * With indices taken cyclically the 3x3 cofactor signs come out alone. */
-#define M(r, c) m[((c) % 3) * 4 + (r) % 3]
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            out[r * 3 + c] = M(r + 1, c + 1) * M(r + 2, c + 2) - M(r + 1, c + 2) * M(r + 2, c + 1);
+#define M(r, c) m[(c) * 4 + (r)]
+    /* r1, r2 and c1, c2: the next two indices after r and c, cyclically */
+    for (int r = 0, r1 = 1, r2 = 2; r < 3; r1 = r2, r2 = r, r++)
+        for (int c = 0, c1 = 1, c2 = 2; c < 3; c1 = c2, c2 = c, c++)
+            out[r * 3 + c] = M(r1, c1) * M(r2, c2) - M(r1, c2) * M(r2, c1);
 #undef M
 }
 
@@ -142,8 +143,7 @@ static void mote__quat_matrix(const float q[4], float m[16])
     float s = n > 0.0f ? 2.0f / n : 0.0f;
     mote__mat4_identity(m);
     /* axis i with the next two j, k (cyclically) */
-    for (int i = 0; i < 3; i++) {
-        int j = (i + 1) % 3, k = (i + 2) % 3;
+    for (int i = 0, j = 1, k = 2; i < 3; j = k, k = i, i++) {
         float ij = q[i] * q[j], kw = q[k] * w;
         m[i * 5] = 1.0f - s * (q[j] * q[j] + q[k] * q[k]);
         m[i * 4 + j] = s * (ij + kw);
@@ -154,16 +154,19 @@ static void mote__quat_matrix(const float q[4], float m[16])
 /* Babylon's Quaternion.RotationYawPitchRoll(yaw = ry, pitch = rx, roll = rz). */
 static void mote__euler_quat(const float r[3], float q[4])
 {
-    float sn[3], cs[3];
+    float sc[2][3];               /* cosines, sines of the half angles */
     for (int i = 0; i < 3; i++) {
-        sn[i] = mote_sinf(r[i] * 0.5f);
-        cs[i] = mote_cosf(r[i] * 0.5f);
+        sc[1][i] = mote_sinf(r[i] * 0.5f);
+        sc[0][i] = mote_cosf(r[i] * 0.5f);
     }
-    float sp = sn[0], sy = sn[1], sr = sn[2], cp = cs[0], cy = cs[1], cr = cs[2];
-    q[0] = cy * sp * cr + sy * cp * sr;
-    q[1] = sy * cp * cr - cy * sp * sr;
-    q[2] = cy * cp * sr - sy * sp * cr;
-    q[3] = cy * cp * cr + sy * sp * sr;
+    /* q[i] = fy fp fr +- gy gp gr: each f a sine (bit set in pick[i], bits
+     * y, p, r from high to low) or a cosine, each g the other one */
+    static const uint8_t pick[4] = {2, 4, 1, 0}, minus = 6;
+    for (int i = 0; i < 4; i++) {
+        int y = pick[i] >> 2, p = (pick[i] >> 1) & 1, z = pick[i] & 1;
+        float f = sc[y][1] * sc[p][0] * sc[z][2], g = sc[!y][1] * sc[!p][0] * sc[!z][2];
+        q[i] = f + (((minus >> i) & 1) ? -g : g);     /* a - b is a + (-b), exactly */
+    }
 }
 
 /* translate(position) * rotate * scale(scaling) of one mesh */
