@@ -30,7 +30,13 @@ bench:
 	done
 	@$(MAKE) --no-print-directory bench-run
 
+# The GL backend is chosen by what is installed. The Makefile's .SECONDARY
+# means a missing gl-*.o alone does not relink mote-bench, so a change of
+# backend (OSMesa installed after a first build) removes the binary.
 bench-build: $(LIB)
+	@mkdir -p $(BENCH_DIR)
+	@if [ "$$(cat $(BENCH_DIR)/gl-backend 2>/dev/null)" != "$(BENCH_OSMESA)" ]; then \
+	    rm -f $(BENCH_BIN); echo "$(BENCH_OSMESA)" > $(BENCH_DIR)/gl-backend; fi
 	@$(MAKE) --no-print-directory $(BENCH_BIN)
 
 bench-run: bench-build
