@@ -40,8 +40,9 @@
  * attributes span more than 2^27 units (setup.c) */
 #define MOTE__RBITS 54
 
-/* Inline in speed builds; out of line in size builds (-Os), where each
- * copy is a long 64-bit shift sequence on a 32-bit core. */
+/* Small helpers called from several places: inline in speed builds, one
+ * out-of-line copy in size builds (-Os), where each inlined copy is a long
+ * 64-bit sequence on a 32-bit core. */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
 #define MOTE__SPEED_INLINE static __attribute__((unused, noinline))
 #else

@@ -58,25 +58,17 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 #endif
 }
 
-/* Size builds keep a small helper that several places call out of line
- * (GCC otherwise inlines it where that is not smaller on Cortex-M0+). */
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
-#define MOTE__OUT_OF_LINE __attribute__((noinline))
-#else
-#define MOTE__OUT_OF_LINE
-#endif
-
-MOTE__OUT_OF_LINE static int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
+MOTE__SPEED_INLINE int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
 
 /* round(f) for a float that fits in int64, halves away from zero */
-MOTE__OUT_OF_LINE static int64_t mote__round_f(float f)
+MOTE__SPEED_INLINE int64_t mote__round_f(float f)
 {
     int64_t t = (int64_t)f;       /* toward zero */
     float frac = f - (float)t;
     return t + (frac >= 0.5f) - (frac <= -0.5f);   /* no branch: frac is noise */
 }
 
-MOTE__OUT_OF_LINE static int64_t mote__floor_div64(int64_t a, int64_t b)
+MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
 {
     int64_t q = a / b, r = a - q * b;   /* r has a's sign */
     return q - ((r != 0) & ((r < 0) != (b < 0)));
@@ -102,7 +94,7 @@ static inline int64_t mote__scaled_div(int64_t n, int64_t d)
 }
 
 /* A shade in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
-MOTE__OUT_OF_LINE static int32_t mote__shade_fixed(float s)
+MOTE__SPEED_INLINE int32_t mote__shade_fixed(float s)
 {
     int32_t v = (int32_t)(s * (float)MOTE__SHADE_ONE + 0.5f);
     return v < 0 ? 0 : v > MOTE__SHADE_ONE ? MOTE__SHADE_ONE : v;
@@ -118,7 +110,7 @@ static int64_t mote__floor_multiple(int64_t v, int64_t period)
 }
 
 /* whether vertex i comes before vertex j in the walk: by y, then x */
-MOTE__OUT_OF_LINE static int mote__before(const int32_t X[3], const int32_t Y[3], int i, int j)
+MOTE__SPEED_INLINE int mote__before(const int32_t X[3], const int32_t Y[3], int i, int j)
 {
     return (Y[i] < Y[j]) | ((Y[i] == Y[j]) & (X[i] < X[j]));
 }
@@ -193,7 +185,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
 
     t->shift = 0;
     t->shade = MOTE__SHADE_FLAT;
-    t->rbits = 54;                /* any pixel loop stays defined (N = 0: A = a0) */
+    t->rbits = MOTE__RBITS;       /* any pixel loop stays defined (N = 0: A = a0) */
     t->q = t->qdx = t->qdy = 0;
     for (int c = 0; c < 3; c++)   /* the shade at vertex 0: every draw has one */
         t->a0[c] = mote__shade_fixed(v[0]->s[c]);
@@ -332,7 +324,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                 n[j] = (int64_t)((uint64_t)mote__mul_shift(d1[a], p1[j], ps)
                                  + (uint64_t)mote__mul_shift(d2[a], p2[j], ps));
         }
-        t->rbits = (int8_t)(54 - MOTE__MIN(MOTE__MAX(mote__bitlen(dbits) - 27, 0), 20));
+        t->rbits = (int8_t)(MOTE__RBITS - MOTE__MIN(MOTE__MAX(mote__bitlen(dbits) - 27, 0), 20));
     }
 
     t->z = t->zdx = t->zdy = 0;
