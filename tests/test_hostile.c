@@ -379,6 +379,52 @@ void w_close_to_zero_and_extreme_cameras_should_stay_in_bounds(void)
     guarded_check_free(&g);
 }
 
+/* Texel coordinates at the vertex stage's limit (+-1e9 texels) make the
+ * numerator planes wrap modulo 2^64 inside the triangle: the texels are
+ * then garbage by design, but stepping the planes must stay defined
+ * (UBSan, SAN=1) and nothing may be written out of bounds. */
+void texel_ranges_at_the_limit_should_stay_defined(void)
+{
+    static uint8_t texels[5 * 3 * 4];
+    mote_texture tex = {5, 3, MOTE_FORMAT_RGBA8888, 0, texels};
+    const float big = 1e9f / 5;        /* uv 1 is 5 texels wide */
+    const float uvs[][3][2] = {
+        {{-big, -big}, {big, big}, {big, -big}},
+        {{0, 0}, {big, 0}, {0, big}},
+        {{-big, 3}, {-big, 3}, {big, -big}},
+    };
+    const float tri[3][3] = {{-3, -3, 0}, {0, 3, 4}, {3, -3, 1}};
+    guarded g;
+    guarded_init(&g, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, 0, 0);
+    mote_frame_desc f = plain_frame();
+    for (size_t u = 0; u < sizeof uvs / sizeof uvs[0]; u++)
+        for (int persp = 0; persp < MOTE_PERSPECTIVE_COUNT; persp++)
+            for (int filter = 0; filter < MOTE_FILTER_COUNT; filter++)
+                for (int wrap = 0; wrap < 3; wrap++) {
+                    set_tri(0, &tri[0][0]);
+                    for (int k = 0; k < 3; k++)
+                        memcpy(tri_v[k].uv, uvs[u][k], sizeof tri_v[k].uv);
+                    mote_mesh m = tri_mesh(1);
+                    m.material.texture = &tex;
+                    m.material.wrap_u = m.material.wrap_v = (mote_wrap)wrap;
+                    mote_draw_desc d;
+                    memset(&d, 0, sizeof d);
+                    d.cull = MOTE_CULL_NONE;
+                    d.perspective = (mote_perspective)persp;
+                    d.filter = (mote_filter)filter;
+                    d.mode = MOTE_MODE_TEXTURED;
+                    TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_begin(&g.dev, &f));
+                    TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_draw(&g.dev, &m, &d));
+                    TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_end(&g.dev));
+                    snprintf(msg, sizeof msg, "uv set %zu, perspective %d, filter %d, wrap %d", u, persp,
+                             filter, wrap);
+                    TEST_ASSERT_TRUE_MESSAGE(mote_device_stats(&g.dev)->pixels_written > 100, msg);
+                    TEST_ASSERT_TRUE_MESSAGE(tu_guard_ok(g.color, g.color_bytes), msg);
+                    TEST_ASSERT_TRUE_MESSAGE(tu_guard_ok(g.depth, g.depth_bytes), msg);
+                }
+    guarded_check_free(&g);
+}
+
 void a_very_large_mesh_should_be_drawn_completely(void)
 {
     /* 2^20 triangles tiling the screen: a 1024 x 512 grid of quads */
@@ -425,6 +471,7 @@ int main(void)
     RUN_TEST(indices_out_of_range_should_be_rejected_at_draw);
     RUN_TEST(random_hostile_scenes_should_never_crash_or_write_out_of_bounds);
     RUN_TEST(w_close_to_zero_and_extreme_cameras_should_stay_in_bounds);
+    RUN_TEST(texel_ranges_at_the_limit_should_stay_defined);
     RUN_TEST(a_very_large_mesh_should_be_drawn_completely);
     return UNITY_END();
 }

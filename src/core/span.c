@@ -165,6 +165,15 @@ MOTE__INLINE int64_t mote__plane_at(int64_t base, int64_t step, int64_t d)
     return (int64_t)((uint64_t)base + (uint64_t)step * (uint64_t)d);
 }
 
+/* The next pixel's value, modular for the same reason: a plane may leave
+ * 64 bits past a row's last pixel, or inside a hostile triangle whose
+ * texel range makes its numerator planes wrap (its texels are garbage
+ * then, by design, but the loop stays defined). */
+MOTE__INLINE int64_t mote__plane_next(int64_t value, int64_t step)
+{
+    return (int64_t)((uint64_t)value + (uint64_t)step);
+}
+
 /* 2^k / (q >> shift): the one division per pixel. */
 MOTE__SMALL uint64_t mote__recip_k(int64_t q, int shift, int k)
 {
@@ -275,7 +284,10 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     bool seg_exact = false;
     uint32_t written = 0;
 
-    for (ptrdiff_t x = x0; x < x1; x++, z += zdx, q += qdx, nr += nrdx, ng += ngdx, nb += nbdx, nu += nudx, nv += nvdx) {
+    for (ptrdiff_t x = x0; x < x1; x++, z = mote__plane_next(z, zdx), q = mote__plane_next(q, qdx),
+                                      nr = mote__plane_next(nr, nrdx), ng = mote__plane_next(ng, ngdx),
+                                      nb = mote__plane_next(nb, nbdx), nu = mote__plane_next(nu, nudx),
+                                      nv = mote__plane_next(nv, nvdx)) {
         uint32_t depth = 0;
         if (dsel != MOTE__D_NONE) {
             /* z is a convex combination of in-range depths: only rounding
