@@ -30,7 +30,10 @@
 #if defined(__GNUC__) && MOTE_SPECIALISE_SPANS
 #define MOTE__INLINE static inline __attribute__((always_inline))
 #define MOTE__SMALL MOTE__INLINE
+/* per-attribute loops unrolled, so that a variant keeps only the planes it reads */
+#define MOTE__UNROLL _Pragma("GCC unroll 5")
 #else
+#define MOTE__UNROLL
 #define MOTE__INLINE static
 /* a few 64-bit steps the pixel loop repeats per attribute: one copy */
 #define MOTE__SMALL MOTE__SPEED_INLINE
@@ -357,6 +360,18 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     return written;
 }
 
+/* Whether a pixel loop of this kind reads attribute a's plane: red alone
+ * for one grey shade, all three for RGB, the texels with a texture (setup
+ * makes only those; constant arguments drop the rest at compile time). */
+MOTE__INLINE bool mote__reads_plane(int a, int shade, int tex)
+{
+    if (!MOTE_SPECIALISE_SPANS)   /* one loop for all: fewer tests, less flash */
+        return shade != MOTE__SHADE_FLAT || tex != MOTE__TEX_NONE;
+    if (a >= MOTE__A_U)
+        return tex != MOTE__TEX_NONE;
+    return shade == MOTE__SHADE_RGB || (shade == MOTE__SHADE_MONO && a == MOTE__A_R);
+}
+
 /* Row by row: the edge walk, then the pixel loop over the row's span. The
  * planes are stepped down from their values at column ox of the first
  * row (unsigned: exact modulo 2^64, see mote__plane_at). */
@@ -374,8 +389,10 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
     uint64_t qr = 0, nrow[MOTE__ATTRS] = {0};
     if (varying) {
         qr = (uint64_t)mote__plane_at(t->q, qdy, dy0);
+        MOTE__UNROLL
         for (int a = 0; a < MOTE__ATTRS; a++)
-            nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], t->n[a][2], dy0);
+            if (mote__reads_plane(a, shade, tex))
+                nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], t->n[a][2], dy0);
     }
     const int ox = t->ox;
     uint64_t tested = 0;
@@ -388,8 +405,9 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
             const int64_t dx0 = x0 - ox;
             const size_t drow = (size_t)(y - ty0) * (size_t)width;
             int64_t n[MOTE__ATTRS] = {0};
-            if (varying)
-                for (int a = 0; a < MOTE__ATTRS; a++)
+            MOTE__UNROLL
+            for (int a = 0; a < MOTE__ATTRS; a++)
+                if (mote__reads_plane(a, shade, tex))
                     n[a] = mote__plane_at((int64_t)nrow[a], c->ndx[a], dx0);
             written += mote__pixels(c, color + (size_t)(y - ty0) * (size_t)stride,
                                     dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
@@ -399,8 +417,9 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
                                     tex, pow2, shade, persp, dsel, dwrite, fmt, k);
             tested += (uint64_t)(x1 - x0);
         }
-        if (varying)
-            for (int a = 0; a < MOTE__ATTRS; a++)
+        MOTE__UNROLL
+        for (int a = 0; a < MOTE__ATTRS; a++)
+            if (mote__reads_plane(a, shade, tex))
                 nrow[a] += (uint64_t)t->n[a][2];
     }
     tg->counts->tested += tested;
