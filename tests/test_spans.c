@@ -96,8 +96,9 @@ void every_specialised_span_should_match_the_generic_span(void)
                 v[k].v = frand(-uv_range / 2.0f, uv_range / 2.0f);
             }
             const mote__cvert *vp[3] = {&v[0], &v[1], &v[2]};
+            int64_t area2 = (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
             mote__tri tri;
-            if (!mote__setup(&tri, &rs, X, Y, vp, 8, W, H))
+            if (area2 == 0 || !mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H))
                 continue;
             TEST_ASSERT_EQUAL_INT(sk, tri.shade);
             wide += tri.rbits != MOTE__RBITS;

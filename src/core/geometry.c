@@ -327,7 +327,8 @@ static bool mote__culled(const mote__ctx *cx, int64_t area2)
     return area2 > 0 ? cx->cull_cw : cx->cull_ccw;   /* y grows downward */
 }
 
-static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], const mote__cvert *v[3])
+static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
+                       const mote__cvert *v[3])
 {
     mote_device *dev = cx->dev;
     if (dev->desc.triangle_hook) {
@@ -342,7 +343,8 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], co
         dev->desc.triangle_hook(dev->desc.triangle_hook_user, X, Y, z, w);
     }
     mote__tri t;
-    if (!mote__setup(&t, cx->rs, X, Y, v, dev->desc.subpixel_bits, dev->desc.width, dev->desc.height)) {
+    if (!mote__setup(&t, cx->rs, X, Y, area2, v, dev->desc.subpixel_bits, dev->desc.width,
+                     dev->desc.height)) {
         dev->stats.triangles_clipped_away++;
         return;
     }
@@ -417,7 +419,7 @@ static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__cv
         memcpy(v2->s, v0->s, sizeof v0->s);
     }
     const mote__cvert *v[3] = {v0, v1, v2};
-    mote__emit(cx, X, Y, v);
+    mote__emit(cx, X, Y, area, v);
 }
 
 #if MOTE_ENABLE_LINES

@@ -230,11 +230,12 @@ static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
     w->y++;
 }
 
-/* setup.c: fills t from snapped vertices and clip-space attributes; false
- * when the triangle has no pixels. */
+/* setup.c: fills t from snapped vertices, their doubled signed area (not
+ * 0: the vertex stage drops degenerate triangles) and clip-space
+ * attributes; false when the triangle has no pixels. */
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
-                 const int32_t Y[3], const mote__cvert *v[3], int subpixel_bits,
-                 int width, int height);
+                 const int32_t Y[3], int64_t area2, const mote__cvert *v[3],
+                 int subpixel_bits, int width, int height);
 
 /* raster.c */
 void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,

@@ -116,13 +116,10 @@ MOTE__SPEED_INLINE int mote__before(const int32_t X[3], const int32_t Y[3], int 
 }
 
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
-                 const int32_t Y[3], const mote__cvert *v[3], int F,
+                 const int32_t Y[3], int64_t area2, const mote__cvert *v[3], int F,
                  int width, int height)
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
-    int64_t area2 = (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
-    if (area2 == 0)
-        return false;
 
     /* Pixel bounding box: pixels whose centre can be inside. */
     int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
