@@ -78,26 +78,27 @@ void every_specialised_span_should_match_the_generic_span(void)
         tb.color = cb;
         tb.depth = db;
         for (int t = 0; t < 40; t++) {
-            mote__cvert v[3];
+            mote__svert v[3];
             int32_t X[3], Y[3];
             bool grey = (t & 1) != 0;   /* flat: grey or coloured light */
             for (int k = 0; k < 3; k++) {
                 X[k] = (int32_t)(next_u32() % ((W + 20) << 8)) - (10 << 8);
                 Y[k] = (int32_t)(next_u32() % ((H + 20) << 8)) - (10 << 8);
                 v[k].w = frand(0.2f, 5.0f);
-                v[k].z = frand(0.0f, 1.0f) * v[k].w;
-                v[k].x = v[k].y = 0.0f;
+                v[k].depth = frand(0.0f, 1.0f);
+                v[k].z = (int32_t)(v[k].depth * (float)MOTE__DEPTH_MAX);
                 /* flat: one shade for all; mono: grey vertices; RGB: any */
                 for (int c = 0; c < 3; c++)
                     v[k].s[c] = sk == MOTE__SHADE_FLAT && k > 0 ? v[0].s[c]
                               : (sk == MOTE__SHADE_MONO || (sk == MOTE__SHADE_FLAT && grey)) && c > 0
-                              ? v[k].s[0] : frand(0.0f, 1.0f);
-                v[k].u = frand(-uv_range, uv_range);
-                v[k].v = frand(-uv_range / 2.0f, uv_range / 2.0f);
+                              ? v[k].s[0] : (int32_t)(frand(0.0f, 1.0f) * MOTE__SHADE_ONE);
+                v[k].texel[0] = (int64_t)(frand(-uv_range, uv_range) * 65536.0f);
+                v[k].texel[1] = (int64_t)(frand(-uv_range / 2.0f, uv_range / 2.0f) * 65536.0f);
             }
-            const mote__cvert *vp[3] = {&v[0], &v[1], &v[2]};
+            const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
+            int64_t area2 = (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
             mote__tri tri;
-            if (!mote__setup(&tri, &rs, X, Y, vp, 8, W, H))
+            if (area2 == 0 || !mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H))
                 continue;
             TEST_ASSERT_EQUAL_INT(sk, tri.shade);
             wide += tri.rbits != MOTE__RBITS;

@@ -11,17 +11,18 @@
 typedef struct mote__tvert {
     /* small fields first, within reach of Thumb-1's short load offsets */
     uint8_t state;                /* 0 empty, 1 valid, 2 invalid (NaN/Inf) */
-    bool lit;                     /* c.s is final (see mote__shade) */
+    bool ready;                   /* c.s is lit and sv set (see mote__finish) */
     uint16_t outcode;             /* see mote__outcode */
     uint32_t index;
     int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
     mote__cvert c;
     float world[3];
     float normal[3];              /* world-space, normalised */
+    mote__svert sv;               /* c in setup's units, once ready */
 } mote__tvert;
 
 /* Direct-mapped vertex cache used without an arena (a power of two; each
- * entry is about 80 bytes of stack). */
+ * entry is about 120 bytes of stack). */
 #ifndef MOTE_VERTEX_CACHE
 #define MOTE_VERTEX_CACHE 32
 #endif
@@ -238,6 +239,49 @@ static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, in
     return mote__snap_axis(v->x / v->w, hw, lim, X) && mote__snap_axis(-(v->y / v->w), hh, lim, Y);
 }
 
+/* ---- setup's units -------------------------------------------------------- */
+
+/* A colour in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
+static void mote__shade_fixed(const float s[3], int32_t out[3])
+{
+    for (int c = 0; c < 3; c++) {
+        int32_t v = (int32_t)(s[c] * (float)MOTE__SHADE_ONE + 0.5f);
+        out[c] = v < 0 ? 0 : v > MOTE__SHADE_ONE ? MOTE__SHADE_ONE : v;
+    }
+}
+
+/* round(f 2^s), halves away from zero, for s >= 0 and |f 2^s| < 2^62,
+ * exactly: from the float's 24-bit mantissa and exponent (zero and
+ * denormals give 0), as a float converted to a 64-bit integer would cost a
+ * core without an FPU libgcc's double-precision routines */
+static int64_t mote__round_scaled(float f, int s)
+{
+    union { float f; uint32_t u; } b;
+    b.f = f;
+    /* |f| 2^s = m 2^-r, the mantissa placed at bit 39 so that r >= 1 */
+    int r = 189 - s - (int)((b.u >> 23) & 0xff);
+    uint64_t m = (uint64_t)((b.u & 0x7fffffu) | 0x800000u) << 39;
+    uint64_t mag = r < 64 ? (m + ((uint64_t)1 << (r - 1))) >> r : 0;
+    uint64_t neg = 0u - (uint64_t)(b.u >> 31);
+    return (int64_t)((mag ^ neg) - neg);
+}
+
+/* A final vertex (as transformed, or made by clipping) in setup's units.
+ * Any valid vertex converts (texels within 1e9, see mote__transform), also
+ * one that clipping will drop. */
+static void mote__to_setup(const mote__cvert *v, mote__svert *out)
+{
+    mote__shade_fixed(v->s, out->s);
+    for (int k = 0; k < 2; k++)
+        out->texel[k] = mote__round_scaled(k ? v->v : v->u, 16);
+    /* clipping's float rounding can leave z/w a hair outside [0, 1]; NaN
+     * (0/0, at a vertex behind the eye, which clipping drops) gives 0 */
+    float d = v->z / v->w;
+    out->depth = d > 0.0f ? (d < 1.0f ? d : 1.0f) : 0.0f;
+    out->z = (int32_t)mote__round_scaled(out->depth * (float)MOTE__DEPTH_MAX, 0);
+    out->w = v->w;
+}
+
 /* ---- vertices ------------------------------------------------------------ */
 
 static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
@@ -260,7 +304,7 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
         }
         mote__normalize(tv->normal);
     }
-    tv->lit = !cx->lit || cx->flat;
+    tv->ready = false;
     memcpy(tv->c.s, cx->color, sizeof tv->c.s);
     if (cx->rs->tex != MOTE__TEX_NONE) {
         float u = in->uv[0] * cx->uscale + cx->uoff;
@@ -285,23 +329,25 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
     }
 }
 
-/* Gouraud lighting, the costliest per-vertex step. It cannot make a vertex
- * invalid, so with the full cache it waits until a triangle using the
- * vertex survives culling: about half of a closed mesh's vertices are only
- * on back faces (grid, tex-nearest: 11.6 -> 10.8 ms of draws). Flat
- * shading's per-vertex part is too cheap to be worth the unpredictable
- * branch this adds (measured slower deferred). */
-static void mote__shade(const mote__ctx *cx, mote__tvert *tv)
+/* Gouraud lighting, the costliest per-vertex step, and the conversion to
+ * setup's units. Neither can make a vertex invalid, so with the full cache
+ * they wait until a triangle using the vertex survives culling: about half
+ * of a closed mesh's vertices are only on back faces (grid, tex-nearest:
+ * 11.6 -> 10.8 ms of draws for the lighting). */
+static void mote__finish(const mote__ctx *cx, mote__tvert *tv)
 {
-    if (tv->lit)
+    if (tv->ready)
         return;
-    tv->lit = true;
-    mote__light(cx, tv->world, tv->normal, tv->c.s);
+    tv->ready = true;
+    if (cx->rs->gouraud)
+        mote__light(cx, tv->world, tv->normal, tv->c.s);
+    mote__to_setup(&tv->c, &tv->sv);
 }
 
-/* The full cache is filled before the draw's triangles and shaded on use;
- * the small one is filled and shaded on demand (its entries are copied and
- * may be evicted by the next lookup, so shading later would not stick). */
+/* The full cache is filled before the draw's triangles and finished on
+ * use; the small one is filled and finished on demand (its entries are
+ * copied and may be evicted by the next lookup, so finishing later would
+ * not stick). */
 static mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
 {
     if (!cx->cache_mask)
@@ -309,7 +355,8 @@ static mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
     mote__tvert *tv = &cx->cache[index & cx->cache_mask];
     if (tv->state == 0 || tv->index != index) {
         mote__transform(cx, index, tv);
-        mote__shade(cx, tv);
+        if (tv->state == 1)       /* an invalid one is never drawn, nor converts */
+            mote__finish(cx, tv);
     }
     return tv;
 }
@@ -327,22 +374,18 @@ static bool mote__culled(const mote__ctx *cx, int64_t area2)
     return area2 > 0 ? cx->cull_cw : cx->cull_ccw;   /* y grows downward */
 }
 
-static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], const mote__cvert *v[3])
+static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
+                       const mote__svert *const v[3])
 {
     mote_device *dev = cx->dev;
     if (dev->desc.triangle_hook) {
-        /* depth as the rasteriser uses it: clipping's float rounding can
-         * leave z/w a hair outside [0, 1], and setup clamps it */
-        float z[3];
-        for (int i = 0; i < 3; i++) {
-            float d = v[i]->z / v[i]->w;
-            z[i] = d > 0.0f ? (d < 1.0f ? d : 1.0f) : 0.0f;
-        }
+        float z[3] = {v[0]->depth, v[1]->depth, v[2]->depth};
         float w[3] = {v[0]->w, v[1]->w, v[2]->w};
         dev->desc.triangle_hook(dev->desc.triangle_hook_user, X, Y, z, w);
     }
     mote__tri t;
-    if (!mote__setup(&t, cx->rs, X, Y, v, dev->desc.subpixel_bits, dev->desc.width, dev->desc.height)) {
+    if (!mote__setup(&t, cx->rs, X, Y, area2, v, dev->desc.subpixel_bits, dev->desc.width,
+                     dev->desc.height)) {
         dev->stats.triangles_clipped_away++;
         return;
     }
@@ -392,13 +435,13 @@ static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], floa
 }
 
 /* A triangle, or one of the fan a clipped one became: counted and dropped
- * when degenerate or culled, else shaded and emitted. tv is the original
- * triangle, whose vertices are shaded (v may point into them). Flat
- * shading writes the triangle's colour into v's colours, which nothing
- * else reads in that mode: setup takes them at once, and the next
- * triangle sharing a vertex writes its own. */
-static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__cvert *v0,
-                               mote__cvert *v1, mote__cvert *v2, const int32_t X[3], const int32_t Y[3])
+ * when degenerate or culled, else finished and emitted. tv is the original
+ * triangle, whose vertices are finished (v may point into them: it is set
+ * only then). Flat shading writes the triangle's colour into v's shades,
+ * which nothing else reads in that mode: setup takes them at once, and
+ * the next triangle sharing a vertex writes its own. */
+static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__svert *v0,
+                               mote__svert *v1, mote__svert *v2, const int32_t X[3], const int32_t Y[3])
 {
     int64_t area = mote__area2(X, Y);
     if (area == 0) {
@@ -410,14 +453,16 @@ static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__cv
         return;
     }
     for (int i = 0; i < 3; i++)
-        mote__shade(cx, tv[i]);
+        mote__finish(cx, tv[i]);
     if (cx->flat) {
-        mote__flat_shade(cx, tv, v0->s);
+        float s[3];
+        mote__flat_shade(cx, tv, s);
+        mote__shade_fixed(s, v0->s);
         memcpy(v1->s, v0->s, sizeof v0->s);
         memcpy(v2->s, v0->s, sizeof v0->s);
     }
-    const mote__cvert *v[3] = {v0, v1, v2};
-    mote__emit(cx, X, Y, v);
+    const mote__svert *const v[3] = {v0, v1, v2};
+    mote__emit(cx, X, Y, area, v);
 }
 
 #if MOTE_ENABLE_LINES
@@ -452,7 +497,7 @@ static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned
     mote__cvert poly[MOTE__MAX_POLY];
     bool orig[MOTE__MAX_POLY] = {true, true, true};
     for (int k = 0; k < 3; k++) {
-        mote__shade(cx, tv[k]);   /* clipping interpolates the lit colour */
+        mote__finish(cx, tv[k]);  /* clipping interpolates the lit colour */
         poly[k] = tv[k]->c;
     }
     int n = mote__clip(cx, poly, orig, 3, planes);
@@ -473,9 +518,12 @@ static void mote__clip_polygon(mote__ctx *cx, mote__tvert *const tv[3], unsigned
         return;
     }
 #endif
+    mote__svert sv[MOTE__MAX_POLY];
+    for (int k = 0; k < n; k++)
+        mote__to_setup(&poly[k], &sv[k]);
     for (int k = 1; k + 1 < n; k++) {
         int32_t tx[3] = {X[0], X[k], X[k + 1]}, ty[3] = {Y[0], Y[k], Y[k + 1]};
-        mote__fan_triangle(cx, tv, &poly[0], &poly[k], &poly[k + 1], tx, ty);
+        mote__fan_triangle(cx, tv, &sv[0], &sv[k], &sv[k + 1], tx, ty);
     }
 }
 
@@ -520,7 +568,7 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
     }
     /* no clipping: the cached snapped points, culled before anything else */
     int32_t X[3] = {tv[0]->X, tv[1]->X, tv[2]->X}, Y[3] = {tv[0]->Y, tv[1]->Y, tv[2]->Y};
-    mote__fan_triangle(cx, tv, &tv[0]->c, &tv[1]->c, &tv[2]->c, X, Y);
+    mote__fan_triangle(cx, tv, &tv[0]->sv, &tv[1]->sv, &tv[2]->sv, X, Y);
 }
 
 /* ---- the draw -------------------------------------------------------------- */

@@ -101,6 +101,17 @@ typedef struct mote__cvert {
     float u, v;                   /* texture coordinates in texels */
 } mote__cvert;
 
+/* A vertex as setup reads it: its attributes in the pixel stage's integer
+ * units, converted once per vertex rather than at every corner of every
+ * triangle sharing it. */
+typedef struct mote__svert {
+    int64_t texel[2];             /* u and v, 16.16 texels */
+    int32_t s[3];                 /* lit colour, MOTE__SHADE_ONE = 1 */
+    int32_t z;                    /* depth, 0..MOTE__DEPTH_MAX */
+    float depth;                  /* what z rounds: z/w clamped to [0, 1] (the triangle hook's) */
+    float w;                      /* clip w: setup's perspective ratios */
+} mote__svert;
+
 /* ---- pixel stage --------------------------------------------------------- */
 
 typedef enum mote__tex_kind { MOTE__TEX_NONE, MOTE__TEX_NEAREST, MOTE__TEX_BILINEAR } mote__tex_kind;
@@ -230,11 +241,12 @@ static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
     w->y++;
 }
 
-/* setup.c: fills t from snapped vertices and clip-space attributes; false
- * when the triangle has no pixels. */
+/* setup.c: fills t from snapped vertices, their doubled signed area (not
+ * 0: the vertex stage drops degenerate triangles) and their attributes;
+ * false when the triangle has no pixels. */
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
-                 const int32_t Y[3], const mote__cvert *v[3], int subpixel_bits,
-                 int width, int height);
+                 const int32_t Y[3], int64_t area2, const mote__svert *const v[3],
+                 int subpixel_bits, int width, int height);
 
 /* raster.c */
 void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,

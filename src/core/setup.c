@@ -60,12 +60,13 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 
 MOTE__SPEED_INLINE int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
 
-/* round(f) for a float that fits in int64, halves away from zero */
-MOTE__SPEED_INLINE int64_t mote__round_f(float f)
+/* round(f), halves up, for 0 <= f < 2^31: through a 32-bit integer, as a
+ * float converted to a 64-bit one would cost a core without an FPU
+ * libgcc's double-precision routines */
+MOTE__SPEED_INLINE int32_t mote__round_positive(float f)
 {
-    int64_t t = (int64_t)f;       /* toward zero */
-    float frac = f - (float)t;
-    return t + (frac >= 0.5f) - (frac <= -0.5f);   /* no branch: frac is noise */
+    int32_t t = (int32_t)f;       /* toward zero */
+    return t + (f - (float)t >= 0.5f);   /* no branch: the fraction is noise */
 }
 
 MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
@@ -93,13 +94,6 @@ static inline int64_t mote__scaled_div(int64_t n, int64_t d)
     return v > cap ? cap : v < -cap ? -cap : v;
 }
 
-/* A shade in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
-MOTE__SPEED_INLINE int32_t mote__shade_fixed(float s)
-{
-    int32_t v = (int32_t)(s * (float)MOTE__SHADE_ONE + 0.5f);
-    return v < 0 ? 0 : v > MOTE__SHADE_ONE ? MOTE__SHADE_ONE : v;
-}
-
 /* v rounded down to a multiple of period (> 0); a shift and a mask for the
  * usual power-of-two texture */
 static int64_t mote__floor_multiple(int64_t v, int64_t period)
@@ -116,13 +110,10 @@ MOTE__SPEED_INLINE int mote__before(const int32_t X[3], const int32_t Y[3], int 
 }
 
 bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
-                 const int32_t Y[3], const mote__cvert *v[3], int F,
+                 const int32_t Y[3], int64_t area2, const mote__svert *const v[3], int F,
                  int width, int height)
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
-    int64_t area2 = (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
-    if (area2 == 0)
-        return false;
 
     /* Pixel bounding box: pixels whose centre can be inside. */
     int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
@@ -188,7 +179,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
     t->rbits = MOTE__RBITS;       /* any pixel loop stays defined (N = 0: A = a0) */
     t->q = t->qdx = t->qdy = 0;
     for (int c = 0; c < 3; c++)   /* the shade at vertex 0: every draw has one */
-        t->a0[c] = mote__shade_fixed(v[0]->s[c]);
+        t->a0[c] = v[0]->s[c];
     t->a0[MOTE__A_U] = t->a0[MOTE__A_V] = 0;
     bool needs_weights = rs->gouraud || rs->tex != MOTE__TEX_NONE;
     if (!needs_weights)
@@ -245,7 +236,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         } else {
             float wmin = MOTE__MIN(v[0]->w, MOTE__MIN(v[1]->w, v[2]->w));
             for (int i = 0; i < 3; i++) {
-                q[i] = mote__round_f((float)((int32_t)1 << qbits) * (wmin / v[i]->w));   /* qbits <= 28 */
+                q[i] = mote__round_positive((float)((int32_t)1 << qbits) * (wmin / v[i]->w));   /* qbits <= 28 */
                 if (q[i] < 1)
                     q[i] = 1;
             }
@@ -269,7 +260,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
         uint32_t differ = 0, vary = 0;    /* shades and their differences fit in 32 bits */
         for (int c = 0; c < 3; c++) {
             int32_t s0 = (int32_t)t->a0[c];
-            int32_t e1 = mote__shade_fixed(v[1]->s[c]) - s0, e2 = mote__shade_fixed(v[2]->s[c]) - s0;
+            int32_t e1 = v[1]->s[c] - s0, e2 = v[2]->s[c] - s0;
             d1[c] = e1;
             d2[c] = e2;
             differ |= (uint32_t)(s0 ^ (int32_t)t->a0[0]) | (uint32_t)(e1 ^ (int32_t)d1[0])
@@ -288,7 +279,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
             for (int a = MOTE__A_U; a <= MOTE__A_V; a++) {
                 int64_t T[3];
                 for (int i = 0; i < 3; i++)
-                    T[i] = mote__round_f((a == MOTE__A_U ? v[i]->u : v[i]->v) * 65536.0f);
+                    T[i] = v[i]->texel[a - MOTE__A_U];
                 mote_wrap wrap = a == MOTE__A_U ? rs->wrap_u : rs->wrap_v;
                 int64_t base = 0;
                 if (wrap != MOTE_WRAP_CLAMP) {
@@ -329,12 +320,7 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
 
     t->z = t->zdx = t->zdy = 0;
     if (rs->depth_test || rs->depth_write) {
-        int64_t d[3];
-        for (int i = 0; i < 3; i++) {
-            float z = v[i]->z / v[i]->w;
-            z = z < 0.0f ? 0.0f : z > 1.0f ? 1.0f : z;
-            d[i] = mote__round_f(z * (float)MOTE__DEPTH_MAX);
-        }
+        const int64_t d[3] = {v[0]->z, v[1]->z, v[2]->z};
         /* D(x, y) = D0 + (E1 (D1 - D0) + E2 (D2 - D0)) / (2 area); E1, E2 at
          * the origin are below 2^32 (both vanish at vertex 0), steps below
          * 2^32, depth differences below 2^25: all products fit */
