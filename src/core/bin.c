@@ -24,13 +24,6 @@ typedef struct mote__block {
 
 static size_t mote__align(size_t n) { return (n + 7u) & ~(size_t)7u; }
 
-#if MOTE_ENABLE_BINNING  /* mote.h; mote_arena_bytes_per_triangle() stays */
-static size_t mote__tiles_bytes(const mote_device *dev)
-{
-    return mote__align((size_t)dev->bin.tiles_x * (size_t)dev->bin.tiles_y * sizeof(mote__tile));
-}
-#endif
-
 size_t mote_arena_bytes_per_triangle(void)
 {
     /* the triangle, plus list space for a typical few tiles */
@@ -38,11 +31,16 @@ size_t mote_arena_bytes_per_triangle(void)
 }
 
 #if MOTE_ENABLE_BINNING
+size_t mote__bin_table_bytes(const mote_device *dev)
+{
+    return mote__align((size_t)dev->bin.tiles_x * (size_t)dev->bin.tiles_y * sizeof(mote__tile));
+}
+
 void mote__bin_reset(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
     b->tiles = b->base;
-    b->used = b->batch_start = mote__tiles_bytes(dev);
+    b->used = b->batch_start = mote__bin_table_bytes(dev);
     b->top = b->size;
     b->triangles = 0;
     memset(b->base, 0, b->batch_start);

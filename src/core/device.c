@@ -108,9 +108,10 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
             b->tile_shift++;
         b->tiles_x = (d.width + d.tile_size - 1) / d.tile_size;
         b->tiles_y = (d.height + d.tile_size - 1) / d.tile_size;
-        size_t tiles = (size_t)b->tiles_x * (size_t)b->tiles_y * 16u;
+#if MOTE_ENABLE_BINNING  /* bin.c's functions exist only then */
         /* worth binning only with room for the tile table and some triangles */
-        b->enabled = d.arena_size >= tiles + 64 * mote_arena_bytes_per_triangle() + 4096;
+        b->enabled = d.arena_size >= mote__bin_table_bytes(dev) + 64 * mote_arena_bytes_per_triangle() + 4096;
+#endif
         if (((uintptr_t)d.arena & 7u) != 0)
             return MOTE_ERR_INVALID_ARGUMENT;
     }
