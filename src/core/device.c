@@ -245,7 +245,7 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
      * --frames, Suzanne at 1080p, 1 / 2 threads: 2.42 / 3.07 ms, against
      * 2.31 / 1.3-1.7 ms in stripes): short scattered rows stream badly. */
     if (MOTE_ENABLE_BINNING && mote__binned(dev))
-        mote__bin_reset(dev);
+        mote__bin_begin(dev);
     if (!mote__band_mode(dev)) {
         if (dev->desc.parallel_for)
             dev->desc.parallel_for(dev->desc.parallel_user, MOTE__CLEAR_STRIPES, mote__clear_stripe, dev);
