@@ -463,6 +463,45 @@ void a_very_large_mesh_should_be_drawn_completely(void)
     free(idx);
 }
 
+/* mote_device_init enables binning only where the arena holds the tile
+ * table and some triangles. It counted 16 bytes a tile, fewer than a
+ * table entry takes: arenas just over that passed, and mote_begin then
+ * cleared the table past the arena's end (1920x1080 in 16-pixel tiles:
+ * 195840 table bytes, arenas from 154112 bytes on). */
+void an_arena_just_large_enough_to_bin_should_hold_its_tile_table(void)
+{
+    enum { BW = 640, BH = 320 };  /* 3200 tiles of 8 x 8 */
+    uint8_t *color = (uint8_t *)tu_guard_alloc((size_t)BW * BH);
+    int binned = 0;
+    for (int tile = 8; tile <= 16; tile *= 2)
+        for (size_t bytes = 16u << 10; bytes <= 128u << 10; bytes += 2u << 10) {
+            void *arena = tu_guard_alloc(bytes);
+            mote_device dev;
+            mote_device_desc d;
+            memset(&d, 0, sizeof d);
+            d.width = BW;
+            d.height = BH;
+            d.color_format = MOTE_FORMAT_GREY8;
+            d.color = color;
+            d.depth_format = MOTE_DEPTH_FORMAT_NONE;
+            d.arena = arena;
+            d.arena_size = bytes;
+            d.tile_size = tile;
+            TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_device_init(&dev, &d));
+            binned += dev.bin.enabled;
+            mote_frame_desc f;
+            memset(&f, 0, sizeof f);
+            f.camera.position[2] = -3.0f;
+            TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_begin(&dev, &f));
+            TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_end(&dev));
+            TEST_ASSERT_TRUE_MESSAGE(tu_guard_ok(arena, bytes), "arena overrun");
+            tu_guard_free(arena);
+        }
+    TEST_ASSERT_TRUE(binned > 0);
+    TEST_ASSERT_TRUE(tu_guard_ok(color, (size_t)BW * BH));
+    tu_guard_free(color);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -473,5 +512,6 @@ int main(void)
     RUN_TEST(w_close_to_zero_and_extreme_cameras_should_stay_in_bounds);
     RUN_TEST(texel_ranges_at_the_limit_should_stay_defined);
     RUN_TEST(a_very_large_mesh_should_be_drawn_completely);
+    RUN_TEST(an_arena_just_large_enough_to_bin_should_hold_its_tile_table);
     return UNITY_END();
 }

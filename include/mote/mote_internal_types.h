@@ -20,6 +20,7 @@ typedef struct mote__bin {
     int tiles_x, tiles_y, tile_shift;
     void *tiles;                  /* mote__tile[tiles_x * tiles_y] */
     unsigned triangles;           /* binned in this batch */
+    size_t shared;                /* arena bytes other threads read since the last mote_begin */
     bool enabled;                 /* an arena large enough was given */
 } mote__bin;
 

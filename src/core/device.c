@@ -108,9 +108,10 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
             b->tile_shift++;
         b->tiles_x = (d.width + d.tile_size - 1) / d.tile_size;
         b->tiles_y = (d.height + d.tile_size - 1) / d.tile_size;
-        size_t tiles = (size_t)b->tiles_x * (size_t)b->tiles_y * 16u;
+#if MOTE_ENABLE_BINNING  /* bin.c's functions exist only then */
         /* worth binning only with room for the tile table and some triangles */
-        b->enabled = d.arena_size >= tiles + 64 * mote_arena_bytes_per_triangle() + 4096;
+        b->enabled = d.arena_size >= mote__bin_table_bytes(dev) + 64 * mote_arena_bytes_per_triangle() + 4096;
+#endif
         if (((uintptr_t)d.arena & 7u) != 0)
             return MOTE_ERR_INVALID_ARGUMENT;
     }
@@ -244,7 +245,7 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
      * --frames, Suzanne at 1080p, 1 / 2 threads: 2.42 / 3.07 ms, against
      * 2.31 / 1.3-1.7 ms in stripes): short scattered rows stream badly. */
     if (MOTE_ENABLE_BINNING && mote__binned(dev))
-        mote__bin_reset(dev);
+        mote__bin_begin(dev);
     if (!mote__band_mode(dev)) {
         if (dev->desc.parallel_for)
             dev->desc.parallel_for(dev->desc.parallel_user, MOTE__CLEAR_STRIPES, mote__clear_stripe, dev);

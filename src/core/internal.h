@@ -274,7 +274,11 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
                                     mote_draw_desc *out);
 
 /* bin.c */
+/* Bytes of the tile table at the arena's start (tiles_x, tiles_y set). */
+size_t mote__bin_table_bytes(const mote_device *dev);
 void mote__bin_reset(mote_device *dev);
+/* mote_begin's reset (see bin.c). */
+void mote__bin_begin(mote_device *dev);
 /* Reserves arena bytes for binned data; NULL when the arena is full. */
 void *mote__bin_alloc(mote_device *dev, size_t bytes);
 bool mote__bin_triangle(mote_device *dev, const mote__tri *t);
