@@ -148,6 +148,17 @@ typedef struct mote__raster_state {
 /* Interpolated attributes of a triangle, by index. */
 enum { MOTE__A_R, MOTE__A_G, MOTE__A_B, MOTE__A_U, MOTE__A_V, MOTE__ATTRS };
 
+/* Whether a triangle of this shade kind, with or without a texture, has a
+ * plane for attribute a: red alone for one grey shade, all three for RGB,
+ * none for a constant one, the texels with a texture. Setup makes only
+ * those; the pixel loops read only those. */
+static inline bool mote__has_plane(int a, mote__shade_kind shade, bool textured)
+{
+    if (a >= MOTE__A_U)
+        return textured;
+    return shade == MOTE__SHADE_RGB || (shade == MOTE__SHADE_MONO && a == MOTE__A_R);
+}
+
 /* A set-up triangle. Planes are evaluated at pixel centres relative to the
  * origin pixel (ox, oy) so that values stay small; stepping is exact integer
  * addition, so any region of the triangle gives the same pixels. */

@@ -34,7 +34,6 @@ static int mote__bitlen(uint64_t v)
 #endif
 }
 
-
 /* floor(a b / 2^s) for 0 <= s < 64, exact (128-bit product), modulo 2^64
  * when it does not fit: the same bits on every target. Define
  * MOTE_NO_INT128 to test the portable path on a host that has __int128. */
@@ -301,13 +300,11 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
          * A = a0 + (N >> 10) r / 2^(K - 20). N r is about (A - a0) 2^(K-20),
          * so K is 54 (r keeps >= 23 bits, Q >> shift being below 2^31)
          * unless an attribute spans more than 2^27 units. Only the planes
-         * the pixel loops read are made: red alone for one grey shade,
-         * none for a constant one, texels with a texture; the rest are 0. */
-        const int shades = t->shade == MOTE__SHADE_RGB ? 3 : t->shade == MOTE__SHADE_MONO ? 1 : 0;
+         * the pixel loops read are made (mote__has_plane); the rest are 0. */
         const int ps = t->shift + 10;
         for (int a = 0; a < MOTE__ATTRS; a++) {
             int64_t *n = t->n[a];
-            if (a < MOTE__A_U ? a >= shades : rs->tex == MOTE__TEX_NONE) {
+            if (!mote__has_plane(a, (mote__shade_kind)t->shade, rs->tex != MOTE__TEX_NONE)) {
                 n[0] = n[1] = n[2] = 0;
                 continue;
             }

@@ -360,16 +360,13 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     return written;
 }
 
-/* Whether a pixel loop of this kind reads attribute a's plane: red alone
- * for one grey shade, all three for RGB, the texels with a texture (setup
- * makes only those; constant arguments drop the rest at compile time). */
+/* Whether a pixel loop of this kind steps attribute a's plane: the ones
+ * setup made (constant arguments drop the rest at compile time). */
 MOTE__INLINE bool mote__reads_plane(int a, int shade, int tex)
 {
     if (!MOTE_SPECIALISE_SPANS)   /* one loop for all: fewer tests, less flash */
         return shade != MOTE__SHADE_FLAT || tex != MOTE__TEX_NONE;
-    if (a >= MOTE__A_U)
-        return tex != MOTE__TEX_NONE;
-    return shade == MOTE__SHADE_RGB || (shade == MOTE__SHADE_MONO && a == MOTE__A_R);
+    return mote__has_plane(a, (mote__shade_kind)shade, tex != MOTE__TEX_NONE);
 }
 
 /* Row by row: the edge walk, then the pixel loop over the row's span. The

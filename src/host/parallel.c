@@ -22,6 +22,7 @@
 #ifdef _OPENMP
 #include <omp.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* One thread's run of jobs. taken counts the claims on it (the owner's and
  * thieves'), back the thieves'; each in its own cache line. */
@@ -77,8 +78,7 @@ void mote_parallel_openmp(void *user, int count, mote_task_fn fn, void *task_arg
         mote__run local[16];
         mote__run *runs = threads <= 16 ? local : (mote__run *)calloc((size_t)threads, sizeof *runs);
         if (runs) {
-            for (int i = 0; i < threads && runs == local; i++)
-                local[i].taken = local[i].back = 0;
+            memset(runs, 0, (size_t)threads * sizeof *runs);
             #pragma omp parallel num_threads(threads)
             mote__run_jobs(runs, threads, count, fn, task_arg);
             if (runs != local)
