@@ -78,14 +78,18 @@ void mote__cross3(const float a[3], const float b[3], float out[3]);
 float mote__sqrtf(float x);
 float mote__rsqrtf(float x);   /* 0 for 0, negative, NaN, Inf */
 
-/* false for NaN and +-Inf; a bit test rather than a float operation because
- * it runs several times per vertex and soft-float targets pay a call for
- * the latter */
-static inline bool mote__finite(float x)
+/* A float's bits: tests on them spare soft-float targets a library call. */
+static inline uint32_t mote__float_bits(float x)
 {
     union { float f; uint32_t u; } b;
     b.f = x;
-    return (b.u & 0x7f800000u) != 0x7f800000u;
+    return b.u;
+}
+
+/* false for NaN and +-Inf; a bit test, as it runs several times per vertex */
+static inline bool mote__finite(float x)
+{
+    return (mote__float_bits(x) & 0x7f800000u) != 0x7f800000u;
 }
 
 static inline float mote__dot3(const float a[3], const float b[3])

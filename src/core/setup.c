@@ -233,7 +233,13 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
             q[0] = q[1] = q[2] = 1;
             qbits = 0;
         } else {
-            float wmin = MOTE__MIN(v[0]->w, MOTE__MIN(v[1]->w, v[2]->w));
+            /* w > 0 (mote__snap): a positive float's bits order as its
+             * value does, and comparing them spares a soft-float core two
+             * library calls */
+            float wmin = v[0]->w;
+            for (int i = 1; i < 3; i++)
+                if (mote__float_bits(v[i]->w) < mote__float_bits(wmin))
+                    wmin = v[i]->w;
             for (int i = 0; i < 3; i++) {
                 q[i] = mote__round_positive((float)((int32_t)1 << qbits) * (wmin / v[i]->w));   /* qbits <= 28 */
                 if (q[i] < 1)
