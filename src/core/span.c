@@ -54,8 +54,9 @@
 #define MOTE__WIDE_REGISTERS 0
 #endif
 
-/* Depth buffer selector inside the body. */
+/* Depth buffer selector inside the body, and what a draw does with it. */
 enum { MOTE__D_NONE = 0, MOTE__D_16 = 1, MOTE__D_32 = 2 };
+enum { MOTE__D_TEST = 1, MOTE__D_WRITE = 2 };
 
 MOTE__INLINE int mote__wrap(int i, int n, mote_wrap mode)
 {
@@ -260,7 +261,6 @@ typedef struct mote__fill_ctx {
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
     bool grey;                    /* ... and is the same in all three */
     mote__tex_view tx;
-    bool test;
     int seg_len;
     uint64_t affine_r;            /* affine: all qi are 1, Q is (nearly) constant: one r */
 } mote__fill_ctx;
@@ -270,7 +270,7 @@ typedef struct mote__fill_ctx {
 MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
                                    ptrdiff_t x0, ptrdiff_t x1, int64_t z, int64_t q, const int64_t n[MOTE__ATTRS],
                                    const int tex, const bool pow2, const int shade, const int persp,
-                                   const int dsel, const int dwrite, const mote_format fmt, const int k)
+                                   const int dsel, const int dmode, const mote_format fmt, const int k)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     const int64_t zdx = c->zdx, qdx = c->qdx;
@@ -301,7 +301,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 depth = zz < 0 ? 0u : MOTE__DEPTH_MAX;
             if (dsel == MOTE__D_16)
                 depth >>= 8;
-            if (c->test && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x]))
+            if ((dmode & MOTE__D_TEST) && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x]))
                 continue;
         }
         uint32_t px = c->flat_px;
@@ -349,7 +349,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
             }
         }
         mote__store(crow, x, fmt, px);
-        if (dsel != MOTE__D_NONE && dwrite) {
+        if (dsel != MOTE__D_NONE && (dmode & MOTE__D_WRITE)) {
             if (dsel == MOTE__D_16)
                 d16[x] = (uint16_t)depth;
             else
@@ -374,7 +374,7 @@ MOTE__INLINE bool mote__reads_plane(int a, int shade, int tex)
  * row (unsigned: exact modulo 2^64, see mote__plane_at). */
 MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote__tri *t, const mote__target *tg,
                              const int tex, const bool pow2, const int shade, const int persp,
-                             const int dsel, const int dwrite, const mote_format fmt, const int k)
+                             const int dsel, const int dmode, const mote_format fmt, const int k)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     uint8_t *const color = tg->color;
@@ -411,7 +411,7 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
                                     dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
                                     mote__plane_at((int64_t)zr, c->zdx, dx0),
                                     varying ? mote__plane_at((int64_t)qr, c->qdx, dx0) : 0, n,
-                                    tex, pow2, shade, persp, dsel, dwrite, fmt, k);
+                                    tex, pow2, shade, persp, dsel, dmode, fmt, k);
             tested += (uint64_t)(x1 - x0);
         }
         MOTE__UNROLL
@@ -431,7 +431,7 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
  * read it. */
 MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mote__rect r, int F,
                                   const int tex, const mote_format tfmt, const int shade, const int persp,
-                                  const int dsel, const int dwrite, const mote_format fmt, const int fixed_k)
+                                  const int dsel, const int dmode, const mote_format fmt, const int fixed_k)
 {
     if (fixed_k && t->rbits != fixed_k) {
         mote__fill_generic(t, tg, r, F);
@@ -469,18 +469,17 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
         c.tx.wrap_v = rs->wrap_v;
         c.tx.pow2_repeat = rs->pow2_repeat;
     }
-    c.test = rs->depth_test;
     c.seg_len = 1 << rs->subspan_log2;
     if (varying && persp == MOTE__PERSP_AFFINE)
         c.affine_r = mote__recip_k(t->q, t->shift, k);
 #if MOTE_SPECIALISE_SPANS
     /* a power-of-two repeating texture: its own loop, texel addresses by masks */
     if (tex && c.tx.pow2_repeat) {
-        mote__rows(&c, &w, t, tg, tex, true, shade, persp, dsel, dwrite, fmt, k);
+        mote__rows(&c, &w, t, tg, tex, true, shade, persp, dsel, dmode, fmt, k);
         return;
     }
 #endif
-    mote__rows(&c, &w, t, tg, tex, c.tx.pow2_repeat, shade, persp, dsel, dwrite, fmt, k);
+    mote__rows(&c, &w, t, tg, tex, c.tx.pow2_repeat, shade, persp, dsel, dmode, fmt, k);
 }
 
 void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)
@@ -498,7 +497,7 @@ void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r
     const mote__raster_state *rs = t->rs;
     int dsel = (rs->depth_test || rs->depth_write) ? mote__dsel(tg->depth_format) : MOTE__D_NONE;
     mote__fill_body(t, tg, r, F, rs->tex, MOTE_FORMAT_DEFAULT, t->shade, rs->persp, dsel,
-                    rs->depth_write, tg->format, 0);
+                    (rs->depth_test ? MOTE__D_TEST : 0) | (rs->depth_write ? MOTE__D_WRITE : 0), tg->format, 0);
 }
 
 #if MOTE_SPECIALISE_SPANS
@@ -515,7 +514,7 @@ void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r
     static void mote__fill_##T##S##P##D##_##F(const mote__tri *t, const mote__target *tg,   \
                                               mote__rect r, int bits)                       \
     {                                                                                       \
-        mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, 1, MOTE_FORMAT_##F, MOTE__RBITS); \
+        mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, MOTE__D_TEST | MOTE__D_WRITE, MOTE_FORMAT_##F, MOTE__RBITS); \
     }
 MOTE__ALL(MOTE__DEFINE)
 #undef MOTE__DEFINE
