@@ -1005,7 +1005,7 @@ static bench_table *section_threads(void)
             fprintf(stderr, "  threads %s %d %.3f ms (1 thread %.3f ms)\n", s->name, th, r->t.med, tt[0].med);
         }
     }
-    tbl_note(t, "each thread count timed frame by frame in turns with a 1-thread device, in one run; "
+    tbl_note(t, "each thread count timed in turns of 10 frames with a 1-thread device, in one run; "
                 "speed-up: the ratio of their medians; %d cores online.", opt.max_threads);
     return t;
 }
