@@ -956,7 +956,7 @@ static bench_table *section_llvmpipe(void)
     tbl_note(t, "%s. Same camera, triangles, texture; GL fixed-function per-vertex lighting "
                 "(mote's formula for a diffuse point light); time includes glFinish (OSMesa then has "
                 "the image in the caller's buffer). Each mode's llvmpipe and mote (one thread, serial binned path) "
-                "frames are timed in turns, one of each per round, in one run: mote ms median and mote/lp "
+                "frames are timed in turns of 10 frames, in one run: mote ms median and mote/lp "
                 "time come from that run. mote/lp time < 1: mote is faster. Errors against "
                 "the same reference as above. GL flat shading takes the provoking vertex's lit colour, "
                 "mote's the centroid's: flat errors differ for that reason.",
