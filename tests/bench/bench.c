@@ -922,7 +922,7 @@ static bench_table *section_llvmpipe(void)
             reference_image(s, m, BENCH_ERR_FRAME, &rr, &rc);
             bench_err e = compare(rgba, cov, rr, rc, s->width, s->height);
             dump_image(s, m->name, "llvmpipe", rgba);
-            /* llvmpipe in turns with mote (the modes section's device) */
+            /* llvmpipe in turns with mote, on a device set up as in the modes section */
             gl_ctx ctx = {g, s, m};
             bench_dev bd;
             dev_init(&bd, s, m, RUN_SERIAL, 1);
