@@ -96,7 +96,7 @@ void every_specialised_span_should_match_the_generic_span(void)
                 v[k].texel[1] = (int64_t)(frand(-uv_range / 2.0f, uv_range / 2.0f) * 65536.0f);
             }
             const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
-            int64_t area2 = (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
+            int64_t area2 = mote__area2(X, Y);
             mote__tri tri;
             if (area2 == 0 || !mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H))
                 continue;

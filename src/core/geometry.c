@@ -256,13 +256,12 @@ static void mote__shade_fixed(const float s[3], int32_t out[3])
  * core without an FPU libgcc's double-precision routines */
 static int64_t mote__round_scaled(float f, int s)
 {
-    union { float f; uint32_t u; } b;
-    b.f = f;
+    uint32_t bits = mote__float_bits(f);
     /* |f| 2^s = m 2^-r, the mantissa placed at bit 39 so that r >= 1 */
-    int r = 189 - s - (int)((b.u >> 23) & 0xff);
-    uint64_t m = (uint64_t)((b.u & 0x7fffffu) | 0x800000u) << 39;
+    int r = 189 - s - (int)((bits >> 23) & 0xff);
+    uint64_t m = (uint64_t)((bits & 0x7fffffu) | 0x800000u) << 39;
     uint64_t mag = r < 64 ? (m + ((uint64_t)1 << (r - 1))) >> r : 0;
-    uint64_t neg = 0u - (uint64_t)(b.u >> 31);
+    uint64_t neg = 0u - (uint64_t)(bits >> 31);
     return (int64_t)((mag ^ neg) - neg);
 }
 
@@ -362,11 +361,6 @@ static mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
 }
 
 /* ---- triangles ----------------------------------------------------------- */
-
-static int64_t mote__area2(const int32_t X[3], const int32_t Y[3])
-{
-    return (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
-}
 
 /* true when a triangle of this signed screen area is culled */
 static bool mote__culled(const mote__ctx *cx, int64_t area2)

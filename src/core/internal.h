@@ -256,6 +256,13 @@ static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
     w->y++;
 }
 
+/* Twice the signed area of a triangle of snapped vertices (positive:
+ * clockwise on screen, y growing downward); 0 for a degenerate one. */
+static inline int64_t mote__area2(const int32_t X[3], const int32_t Y[3])
+{
+    return (int64_t)(X[1] - X[0]) * (Y[2] - Y[0]) - (int64_t)(Y[1] - Y[0]) * (X[2] - X[0]);
+}
+
 /* setup.c: fills t from snapped vertices, their doubled signed area (not
  * 0: the vertex stage drops degenerate triangles) and their attributes;
  * false when the triangle has no pixels. */

@@ -76,7 +76,7 @@ void mote_parallel_openmp(void *user, int count, mote_task_fn fn, void *task_arg
     if (threads > 1) {
         /* a few runs on the stack; more from the heap (or one thread) */
         mote__run local[16];
-        mote__run *runs = threads <= 16 ? local : (mote__run *)calloc((size_t)threads, sizeof *runs);
+        mote__run *runs = threads <= 16 ? local : (mote__run *)malloc((size_t)threads * sizeof *runs);
         if (runs) {
             memset(runs, 0, (size_t)threads * sizeof *runs);
             #pragma omp parallel num_threads(threads)
