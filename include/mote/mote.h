@@ -33,10 +33,14 @@
  *   - With an arena (desc.arena, desc.arena_size): triangles are set up once,
  *     binned into tiles, and rasterised in mote_end, tile by tile, through
  *     desc.parallel_for when given (the host's OpenMP loop is
- *     mote_parallel_openmp in <mote/mote_io.h>). When the arena fills up, what
- *     is binned so far is rasterised and binning starts over: slower, never
- *     wrong. mote_arena_bytes_per_triangle() helps to size it. Mesh data
- *     and textures must stay valid until mote_end.
+ *     mote_parallel_openmp in <mote/mote_io.h>). With parallel_for (and no
+ *     triangle_hook), mote_draw only records a triangle draw, and mote_end
+ *     (or every MOTE_MAX_DRAWS-th draw) sets the recorded draws up in
+ *     parallel, in groups of whole draws: a frame of many meshes uses every
+ *     thread for setup too; one big mesh is set up on one. When the arena
+ *     fills up, what is binned so far is rasterised and binning starts
+ *     over: slower, never wrong. mote_arena_bytes_per_triangle() helps to
+ *     size it. Mesh data and textures must stay valid until mote_end.
  *   - Band mode (desc.band_height < desc.height): the colour and depth buffers
  *     hold only band_height rows; mote_end produces the frame band by band and
  *     calls desc.flush after each. Full frame and bands give the same bytes.
@@ -450,7 +454,7 @@ typedef struct mote_device {
     float view_proj[16];          /* column-major, as cglm's mat4 */
     float view[16];
     mote_stats stats;
-    /* band mode / no arena: recorded draws */
+    /* recorded draws: band mode, and binned mode with parallel_for */
     int draw_count;
     mote__draw draws[MOTE_MAX_DRAWS];
     mote__bin bin;                /* binned mode state */

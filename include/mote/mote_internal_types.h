@@ -6,7 +6,7 @@
 #ifndef MOTE_INTERNAL_TYPES_H
 #define MOTE_INTERNAL_TYPES_H
 
-/* A recorded draw (band mode, or full frame without an arena). */
+/* A recorded draw (band mode, or binned through desc.parallel_for). */
 typedef struct mote__draw {
     const struct mote_mesh *mesh;
     struct mote_draw_desc desc;
@@ -22,6 +22,11 @@ typedef struct mote__bin {
     unsigned triangles;           /* binned in this batch */
     size_t shared;                /* arena bytes other threads read since the last mote_begin */
     bool enabled;                 /* an arena large enough was given */
+    unsigned char *cache;         /* a group's vertex cache (cache_size bytes), outside its slice */
+    size_t cache_size;
+    bool group;                   /* a group's private copy of the device: never flushes */
+    bool overflowed;              /* that group ran out of its slice of the arena */
+    bool groups_linked;           /* since the last reset: triangles binned on other cores */
 } mote__bin;
 
 #endif

@@ -43,6 +43,7 @@ void mote__bin_reset(mote_device *dev)
     b->used = b->batch_start = mote__bin_table_bytes(dev);
     b->top = b->size;
     b->triangles = 0;
+    b->groups_linked = false;
     memset(b->base, 0, b->batch_start);
 }
 
@@ -159,7 +160,9 @@ void mote__bin_flush(mote_device *dev)
     if (b->triangles > 0) {
         if (dev->desc.parallel_for) {
             dev->desc.parallel_for(dev->desc.parallel_user, n, mote__raster_tile, dev);
-            b->shared = MOTE__MAX(b->shared, b->used);
+            /* groups set up on other cores and will again: no line to take back */
+            if (!b->groups_linked)
+                b->shared = MOTE__MAX(b->shared, b->used);
         } else {
             for (int i = 0; i < n; i++)
                 mote__raster_tile(dev, i);
@@ -177,6 +180,190 @@ void mote__bin_flush(mote_device *dev)
     size_t top = b->top;
     mote__bin_reset(dev);
     b->top = top;                 /* a draw in progress keeps its scratch */
+}
+
+/* ---- binning in parallel ------------------------------------------------ */
+
+/* With desc.parallel_for (and no triangle hook), mote_draw records binned
+ * draws and mote__bin_run_draws sets them up in groups of whole draws, one
+ * task each. A group bins through a private copy of the device: its own
+ * slice of the free arena, its own tile table, its statistics from zero.
+ * Then each tile's group lists are linked in group order after the
+ * device's, so every tile lists its triangles in submission order and the
+ * bytes are those of the serial path, for any thread count. A group whose
+ * slice runs out stops, and the whole batch is binned serially instead,
+ * which flushes a full arena as usual. The groups depend on the draws
+ * alone; a single draw is binned serially. */
+#define MOTE__BIN_GROUPS 16
+
+typedef struct mote__group {
+    mote_device dev;
+    int first, end;               /* draws [first, end) */
+    mote_result result;
+} mote__group;
+
+typedef struct mote__batch {
+    const mote_device *dev;
+    mote__group *groups;
+} mote__batch;
+
+bool mote__bin_defers(const mote_device *dev)
+{
+    return dev->desc.parallel_for && !dev->desc.triangle_hook;
+}
+
+static void mote__bin_group(void *arg, int g)
+{
+    const mote__batch *batch = (const mote__batch *)arg;
+    const mote_device *dev = batch->dev;
+    mote__group *gr = &batch->groups[g];
+    mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
+    for (int i = gr->first; i < gr->end && !gr->dev.bin.overflowed; i++) {
+        mote_result r = mote__process_draw(&gr->dev, dev->draws[i].mesh, &dev->draws[i].desc,
+                                           MOTE__SINK_BIN, NULL, all);
+        if (r != MOTE_OK && gr->result == MOTE_OK)
+            gr->result = r;
+    }
+}
+
+static void mote__stats_add(mote_stats *to, const mote_stats *from)
+{
+    to->draws += from->draws;
+    to->meshes_culled += from->meshes_culled;
+    to->triangles_in += from->triangles_in;
+    to->triangles_invalid += from->triangles_invalid;
+    to->triangles_clipped_away += from->triangles_clipped_away;
+    to->triangles_backface += from->triangles_backface;
+    to->triangles_degenerate += from->triangles_degenerate;
+    to->triangles_drawn += from->triangles_drawn;
+    to->tiles_empty += from->tiles_empty;
+    to->tiles_drawn += from->tiles_drawn;
+    to->arena_flushes += from->arena_flushes;
+    to->pixels_tested += from->pixels_tested;
+    to->pixels_written += from->pixels_written;
+}
+
+/* Arena bytes a draw's triangles take, about (a typical few tiles each):
+ * what the slices are sized by. */
+static size_t mote__draw_bytes(const mote__draw *d)
+{
+    return (size_t)(d->mesh->index_count / 3) * mote_arena_bytes_per_triangle()
+         + mote__align(sizeof(mote__raster_state));
+}
+
+/* Splits draws [0, n) into groups of about equal arena bytes, each with at
+ * least one draw, and gives each a slice of [from, to): its estimate plus
+ * a list block per tile when all fit so, else a share of the space in
+ * proportion. A slice's unused end stays unused until the next flush, so
+ * the slices are no larger than that. */
+static void mote__bin_plan(const mote_device *dev, mote__group *gr, int groups, int n,
+                           size_t from, size_t to)
+{
+    size_t total = 0, est[MOTE__BIN_GROUPS], sum = 0;
+    for (int i = 0; i < n; i++)
+        total += mote__draw_bytes(&dev->draws[i]);
+    size_t done = 0, blocks = mote__bin_table_bytes(dev) / sizeof(mote__tile) * sizeof(mote__block);
+    int i = 0;
+    for (int g = 0; g < groups; g++) {
+        size_t target = total / (size_t)groups * (size_t)(g + 1);
+        gr[g].first = i;
+        est[g] = blocks;
+        while (i < n - (groups - 1 - g) && (i == gr[g].first || g == groups - 1 || done < target)) {
+            size_t bytes = mote__draw_bytes(&dev->draws[i]);
+            done += bytes;
+            est[g] += bytes;
+            i++;
+        }
+        gr[g].end = i;
+        sum += est[g];
+    }
+    size_t space = to - from;
+    for (int g = 0; g < groups; g++) {
+        size_t cap = est[g];
+        if (sum > space) {        /* space * est / sum, in 1/65536ths of space */
+            uint64_t part = (uint64_t)est[g] * 65536u / sum;
+            cap = (size_t)((uint64_t)space / 65536u * part + (uint64_t)space % 65536u * part / 65536u);
+        }
+        mote_device *gd = &gr[g].dev;
+        gd->bin.used = from;
+        gd->bin.top = from + (cap & ~(size_t)7u);
+        from = gd->bin.top;
+    }
+}
+
+mote_result mote__bin_run_draws(mote_device *dev)
+{
+    int n = dev->draw_count;
+    dev->draw_count = 0;
+    mote__bin *b = &dev->bin;
+    int groups = MOTE__MIN(n, MOTE__BIN_GROUPS);
+    size_t table = mote__bin_table_bytes(dev), cache = 0;
+    for (int i = 0; i < n; i++)
+        cache = MOTE__MAX(cache, mote__align(mote__vertex_cache_bytes(dev->draws[i].mesh)));
+    /* per group: its device, tile table and vertex cache */
+    size_t head = mote__align((size_t)groups * sizeof(mote__group)), free = b->top - b->used;
+    size_t each = table + cache, scratch = 0;
+    mote__group *gr = NULL;
+    if (groups > 1 && head < free && cache < free && each <= (free - head) / (size_t)groups) {
+        scratch = head + (size_t)groups * each;
+        gr = (mote__group *)mote__bin_top_alloc(dev, scratch);
+    }
+    mote_result result = MOTE_OK;
+    if (gr) {
+        for (int g = 0; g < groups; g++) {
+            mote_device *gd = &gr[g].dev;
+            unsigned char *own = (unsigned char *)gr + head + (size_t)g * each;
+            *gd = *dev;
+            memset(&gd->stats, 0, sizeof gd->stats);
+            gd->bin.tiles = own;
+            memset(own, 0, table);
+            gd->bin.cache = own + table;
+            gd->bin.cache_size = cache;
+            gd->bin.triangles = 0;
+            gd->bin.group = true;
+            gd->bin.overflowed = false;
+            gr[g].result = MOTE_OK;
+        }
+        mote__bin_plan(dev, gr, groups, n, b->used, b->top);
+        mote__batch batch = {dev, gr};
+        dev->desc.parallel_for(dev->desc.parallel_user, groups, mote__bin_group, &batch);
+        bool overflowed = false;
+        for (int g = 0; g < groups; g++)
+            overflowed |= gr[g].dev.bin.overflowed;
+        if (!overflowed) {
+            mote__tile *tiles = (mote__tile *)b->tiles;
+            int count = b->tiles_x * b->tiles_y;
+            for (int g = 0; g < groups; g++) {
+                const mote__tile *own = (const mote__tile *)gr[g].dev.bin.tiles;
+                for (int t = 0; t < count; t++) {
+                    if (!own[t].head)
+                        continue;
+                    if (tiles[t].tail)
+                        ((mote__block *)(void *)(b->base + tiles[t].tail))->next = own[t].head;
+                    else
+                        tiles[t].head = own[t].head;
+                    tiles[t].tail = own[t].tail;
+                }
+                mote__stats_add(&dev->stats, &gr[g].dev.stats);
+                b->triangles += gr[g].dev.bin.triangles;
+                if (result == MOTE_OK)
+                    result = gr[g].result;
+            }
+            b->used = gr[groups - 1].dev.bin.used;
+            b->groups_linked = true;
+            mote__bin_top_release(dev, scratch);
+            return result;
+        }
+        mote__bin_top_release(dev, scratch);
+    }
+    mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
+    for (int i = 0; i < n; i++) {
+        mote_result r = mote__process_draw(dev, dev->draws[i].mesh, &dev->draws[i].desc, MOTE__SINK_BIN,
+                                           NULL, all);
+        if (r != MOTE_OK && result == MOTE_OK)
+            result = r;
+    }
+    return result;
 }
 
 #endif /* MOTE_ENABLE_BINNING */

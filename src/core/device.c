@@ -287,13 +287,24 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
     mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
     bool triangles = d.mode != MOTE_MODE_POINTS && d.mode != MOTE_MODE_WIREFRAME;
+    if (MOTE_ENABLE_BINNING && mote__binned(dev) && triangles && mote__bin_defers(dev)) {
+        /* set up later, in parallel (bin.c); a full record is binned first */
+        r = dev->draw_count == MOTE_MAX_DRAWS ? mote__bin_run_draws(dev) : MOTE_OK;
+        mote__draw *rec = &dev->draws[dev->draw_count++];
+        rec->mesh = mesh;
+        rec->desc = d;
+        return r;
+    }
     if (MOTE_ENABLE_BINNING && mote__binned(dev) && triangles) {
         r = mote__process_draw(dev, mesh, &d, MOTE__SINK_BIN, NULL, all);
     } else {
         /* points and lines are drawn at once; earlier binned triangles first */
-        if (MOTE_ENABLE_BINNING && mote__binned(dev))
+        if (MOTE_ENABLE_BINNING && mote__binned(dev)) {
+            r = mote__bin_run_draws(dev);
             mote__bin_flush(dev);
-        r = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all);
+        }
+        mote_result drawn = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all);
+        r = r != MOTE_OK ? r : drawn;
     }
     mote__add_counts(dev, &count);
     return r;
@@ -307,8 +318,9 @@ mote_result mote_end(mote_device *dev)
         return MOTE_ERR_STATE;
     dev->in_frame = false;
     if (MOTE_ENABLE_BINNING && mote__binned(dev)) {
+        mote_result r = mote__bin_run_draws(dev);
         mote__bin_flush(dev);
-        return MOTE_OK;
+        return r;
     }
     if (!mote__band_mode(dev))
         return MOTE_OK;

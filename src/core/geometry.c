@@ -388,6 +388,10 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
         mote__raster_tri(&t, cx->tg, cx->region, dev->desc.subpixel_bits);
     } else {
         if (!mote__bin_triangle(dev, &t)) {
+            if (dev->bin.group) {  /* a group's slice is full: the batch goes serial */
+                dev->bin.overflowed = true;
+                return;
+            }
             /* arena full: draw what is binned, then bin this one afresh */
             mote__bin_flush(dev);
             dev->stats.arena_flushes++;
@@ -644,6 +648,14 @@ static bool mote__mesh_outside(const mote__ctx *cx)
     return false;
 }
 
+#if MOTE_ENABLE_BINNING
+size_t mote__vertex_cache_bytes(const mote_mesh *mesh)
+{
+    size_t bytes = (size_t)mesh->vertex_count * sizeof(mote__tvert);
+    return bytes / sizeof(mote__tvert) == mesh->vertex_count ? bytes : 0;   /* 0: overflow */
+}
+#endif
+
 mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
                                mote__sink_kind sink, const mote__target *tg, mote__rect region)
 {
@@ -719,6 +731,10 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     mote__tvert small_cache[MOTE__SMALL_CACHE];
     if (MOTE_ENABLE_BINNING && sink == MOTE__SINK_BIN) {
         mote__raster_state *rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
+        if (!rs && dev->bin.group) {
+            dev->bin.overflowed = true;
+            return MOTE_OK;
+        }
         if (!rs) {
             mote__bin_flush(dev);
             rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
@@ -727,9 +743,14 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
             return MOTE_ERR_OUT_OF_MEMORY;
         *rs = rs_local;
         cx.rs = rs;
-        cache_bytes = (size_t)mesh->vertex_count * sizeof(mote__tvert);
-        if (mesh->vertex_count > 0 && cache_bytes / sizeof(mote__tvert) == mesh->vertex_count)
+        cache_bytes = mote__vertex_cache_bytes(mesh);
+        if (dev->bin.group) {     /* its own cache, so that its slice holds triangles only */
+            if (cache_bytes > 0 && cache_bytes <= dev->bin.cache_size)
+                cx.cache = (mote__tvert *)(void *)dev->bin.cache;
+            cache_bytes = 0;
+        } else if (cache_bytes > 0) {
             cx.cache = (mote__tvert *)mote__bin_top_alloc(dev, cache_bytes);
+        }
         if (cx.cache)
             for (uint32_t i = 0; i < mesh->vertex_count; i++)
                 mote__transform(&cx, i, &cx.cache[i]);
@@ -756,7 +777,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         if (!mesh->indices)
             tris = 0;
         dev->stats.triangles_in += tris;
-        for (uint32_t i = 0; i < tris; i++)
+        for (uint32_t i = 0; i < tris && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++)
             mote__triangle(&cx, &mesh->indices[3 * i]);
     }
     if (MOTE_ENABLE_BINNING && cache_bytes)

@@ -290,6 +290,8 @@ typedef enum mote__sink_kind { MOTE__SINK_RASTER, MOTE__SINK_BIN } mote__sink_ki
 mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh,
                                const mote_draw_desc *desc, mote__sink_kind sink,
                                const mote__target *tg, mote__rect region);
+/* Arena bytes of a binned draw's vertex cache. */
+size_t mote__vertex_cache_bytes(const mote_mesh *mesh);
 /* Fills the defaults in; MOTE_ERR_UNSUPPORTED for a feature left out of
  * the build. */
 mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh,
@@ -307,6 +309,10 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t);
 void mote__bin_flush(mote_device *dev);
 void *mote__bin_top_alloc(mote_device *dev, size_t bytes);
 void mote__bin_top_release(mote_device *dev, size_t bytes);
+/* Whether mote_draw records binned draws for mote__bin_run_draws, which
+ * bins them in parallel groups (see bin.c). */
+bool mote__bin_defers(const mote_device *dev);
+mote_result mote__bin_run_draws(mote_device *dev);
 
 /* device.c */
 void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *counts);
