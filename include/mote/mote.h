@@ -478,7 +478,10 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame);
 /* Draws (or records, or bins) one mesh. draw may be NULL. Returns
  * MOTE_ERR_UNSUPPORTED, drawing nothing, for a mode, filter or perspective
  * that the library was built without (see MOTE_ENABLE_LINES, _BILINEAR,
- * _SUBSPAN). */
+ * _SUBSPAN). Band mode and binned mode with parallel_for keep the mesh
+ * pointer until mote_end: the mote_mesh itself, not only its arrays, must
+ * not change before then, so drawing one mesh at several places in a
+ * frame takes one mote_mesh per draw. */
 mote_result mote_draw(mote_device *dev, const mote_mesh *mesh,
                       const mote_draw_desc *draw);
 
