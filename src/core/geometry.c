@@ -593,8 +593,9 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
     if (out->subspan_log2 > 6)
         out->subspan_log2 = 6;
     out->filter = (mote_filter)mote__enum_or(out->filter, MOTE_FILTER_COUNT, MOTE_FILTER_NEAREST);
-    if (out->point_color.r == 0 && out->point_color.g == 0 && out->point_color.b == 0
-        && out->point_color.a == 0) {
+    /* only points and wireframe read it, which a build without lines refuses */
+    if (MOTE_ENABLE_LINES && out->point_color.r == 0 && out->point_color.g == 0
+        && out->point_color.b == 0 && out->point_color.a == 0) {
         if (mesh->material.color_set)
             out->point_color = mesh->material.color;
         else
