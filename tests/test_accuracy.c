@@ -5,9 +5,10 @@
  * the error of each approximate mode (reported, not bounded).
  *
  * Thresholds (scenes from tests/support/scenes.c, 160x120, deterministic):
- *   - perspective-correct textured (nearest and bilinear, every wrap mode)
- *     and Gouraud scenes: >= 99.9% of the pixels both draw within 1 LSB of
- *     the reference; the largest error is printed;
+ *   - perspective-correct textured (nearest and bilinear, every wrap mode),
+ *     Gouraud and vertex-coloured scenes (every mode, lit and unlit): >=
+ *     99.9% of the pixels both draw within 1 LSB of the reference; the
+ *     largest error is printed;
  *   - coverage: mismatches only next to a reference edge (mote snaps from
  *     float, the reference from double), at most 0.2% of the drawn pixels;
  *   - depth: pixels off by more than 1 LSB only along the intersection
@@ -108,6 +109,44 @@ void gouraud_shading_should_be_within_1_lsb_of_the_reference(void)
     assert_close("Gouraud, 4 sub-pixel bits", &r);
 }
 
+void vertex_colours_should_be_within_1_lsb_of_the_reference_in_every_mode(void)
+{
+    static uint8_t plain[W * H * 4], colored[W * H * 4];
+    static const struct { mote_mode mode; mote_filter filter; const char *name; } modes[] = {
+        {MOTE_MODE_GOURAUD, MOTE_FILTER_NEAREST, "Gouraud"},
+        {MOTE_MODE_FLAT, MOTE_FILTER_NEAREST, "flat"},
+        {MOTE_MODE_TEXTURED, MOTE_FILTER_NEAREST, "textured nearest"},
+        {MOTE_MODE_TEXTURED, MOTE_FILTER_BILINEAR, "textured bilinear"},
+    };
+    tu_scene s;
+    tu_scene_build(TU_SCENE_COLORS, MOTE_WRAP_REPEAT, &s);
+    tu_vs_opts o = {W, H, 8, MOTE_DEPTH_FORMAT_32};
+    for (size_t k = 0; k < sizeof modes / sizeof modes[0]; k++)
+        for (int unlit = 0; unlit < 2; unlit++) {
+            mote_draw_desc d = draw_desc(modes[k].mode, modes[k].filter, MOTE_PERSPECTIVE_CORRECT);
+            d.unlit = unlit;
+            char what[64];
+            snprintf(what, sizeof what, "vertex colours, %s%s", modes[k].name, unlit ? ", unlit" : "");
+            tu_vs_result r;
+            TEST_ASSERT_TRUE(tu_vs_ref(&o, &s.frame, s.meshes, s.mesh_count, &d, true, &r, colored, NULL));
+            printf("%-44s max %3d  PSNR %6.2f  within 1 LSB %.3f%%\n", what, r.m.max_err, r.m.psnr,
+                   100.0 * r.m.within_1_fraction);
+            assert_close(what, &r);
+            /* and the colours show: most drawn pixels differ from the same
+             * scene without them */
+            tu_scene bare = s;
+            for (int i = 0; i < bare.mesh_count; i++)
+                bare.meshes[i].colors = NULL;
+            TEST_ASSERT_TRUE(tu_vs_ref(&o, &bare.frame, bare.meshes, bare.mesh_count, &d, true, &r, plain,
+                                       NULL));
+            long differ = 0;
+            for (int i = 0; i < W * H; i++)
+                differ += memcmp(&plain[4 * i], &colored[4 * i], 3) != 0;
+            snprintf(msg, sizeof msg, "%s: %ld pixels changed by the colours", what, differ);
+            TEST_ASSERT_TRUE_MESSAGE(differ > W * H / 4, msg);
+        }
+}
+
 void approximate_perspective_modes_should_report_their_error(void)
 {
     tu_scene s;
@@ -178,6 +217,7 @@ int main(void)
     RUN_TEST(perspective_correct_textures_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(unlit_textures_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(gouraud_shading_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(vertex_colours_should_be_within_1_lsb_of_the_reference_in_every_mode);
     RUN_TEST(approximate_perspective_modes_should_report_their_error);
     RUN_TEST(the_depth_test_should_resolve_intersecting_triangles_like_the_reference);
     RUN_TEST(a_texture_with_stride_0_should_read_rows_width_times_pixel_size_apart);

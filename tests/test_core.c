@@ -1,10 +1,11 @@
 /*
  * test_core.c - the tutorial pipeline, stage by stage: projection, lines,
  * coverage of a triangulated square, depth order, flat and Gouraud values,
- * texel placement, back-face culling.
+ * vertex colours, texel placement, back-face culling.
  */
 #include <mote/mote.h>
 #include "core/internal.h"
+#include "support/scenes.h"
 #include "unity.h"
 
 #include <math.h>
@@ -52,13 +53,7 @@ static mote_mesh make_quad(float x0, float y0, float x1, float y1, float z)
         quad_v[i].normal[2] = -1.0f;
         memcpy(quad_v[i].uv, uv[i], sizeof uv[i]);
     }
-    mote_mesh m;
-    memset(&m, 0, sizeof m);
-    m.vertices = quad_v;
-    m.vertex_count = 4;
-    m.indices = quad_i;
-    m.index_count = 6;
-    return m;
+    return tu_mesh_of(quad_v, 4, quad_i, 6);
 }
 
 /* The quad that exactly fills the screen at depth z (fov 90 degrees). */
@@ -66,6 +61,44 @@ static mote_mesh screen_quad(float z)
 {
     float ax = (float)W / (float)H * z;
     return make_quad(-ax, -z, ax, z, z);
+}
+
+/* One triangle over the screen's top-left half, with its corners (0,0),
+ * (W,0), (0,H) in pixels, counter-clockwise on screen, at constant depth,
+ * so that perspective-correct interpolation equals screen-linear there;
+ * normals zero. */
+static mote_vertex tri_v[3];
+static const uint32_t tri_i[3] = {0, 2, 1};
+
+static mote_mesh half_screen_triangle(void)
+{
+    memset(tri_v, 0, sizeof tri_v);
+    float z = 5.0f, ax = (float)W / H * z;
+    float p[3][3] = {{-ax, z, z}, {ax, z, z}, {-ax, -z, z}};
+    for (int i = 0; i < 3; i++)
+        memcpy(tri_v[i].position, p[i], sizeof p[i]);
+    return tu_mesh_of(tri_v, 3, tri_i, 3);
+}
+
+/* Every third pixel of that triangle (but those near its long edge) holds,
+ * within 1, 255 x the blend of the vertex values value[i][c] by the pixel
+ * centre's barycentric weights, in its first `channels` channels. */
+static void assert_half_screen_blends(const double value[3][3], int channels)
+{
+    int checked = 0;
+    for (int y = 0; y < H; y += 3)
+        for (int x = 0; x < W; x += 3) {
+            double b[3] = {0.0, (x + 0.5) / W, (y + 0.5) / H};
+            b[0] = 1.0 - b[1] - b[2];
+            if (b[0] <= 0.01)
+                continue;
+            for (int c = 0; c < channels; c++) {
+                double expect = 255.0 * (b[0] * value[0][c] + b[1] * value[1][c] + b[2] * value[2][c]);
+                TEST_ASSERT_UINT8_WITHIN(1, (uint8_t)(expect + 0.5), color[4 * (y * W + x) + c]);
+            }
+            checked++;
+        }
+    TEST_ASSERT_TRUE(checked > 50);
 }
 
 void projection_should_map_known_points_to_pixels(void)
@@ -323,26 +356,14 @@ void flat_shading_should_use_the_face_normal_against_the_light(void)
 
 void gouraud_shading_should_interpolate_vertex_intensities(void)
 {
-    /* one triangle with n.l = 1, 0.5, 0 at its vertices (constant depth, so
-     * perspective-correct equals screen-linear); check the values at pixels
-     * against barycentric interpolation computed here */
-    static mote_vertex v[3];
-    static uint32_t ii[3] = {0, 2, 1};   /* counter-clockwise on screen */
-    memset(v, 0, sizeof v);
-    float z = 5.0f, ax = (float)W / H * z;
-    float p[3][3] = {{-ax, z, z}, {ax, z, z}, {-ax, -z, z}};
+    /* one triangle with n.l = 1, 0.5, 0 at its vertices; check the values at
+     * pixels against barycentric interpolation computed here */
+    mote_mesh m = half_screen_triangle();
     float nx[3] = {0.0f, 0.8660254f, 1.0f};
     for (int i = 0; i < 3; i++) {
-        memcpy(v[i].position, p[i], sizeof p[i]);
-        v[i].normal[0] = nx[i];
-        v[i].normal[2] = -mote__sqrtf(1.0f - nx[i] * nx[i]);
+        tri_v[i].normal[0] = nx[i];
+        tri_v[i].normal[2] = -mote__sqrtf(1.0f - nx[i] * nx[i]);
     }
-    mote_mesh m;
-    memset(&m, 0, sizeof m);
-    m.vertices = v;
-    m.vertex_count = 3;
-    m.indices = ii;
-    m.index_count = 3;
     frame.light_count = 1;
     frame.lights[0].type = MOTE_LIGHT_DIRECTIONAL;
     frame.lights[0].direction[2] = 1.0f;  /* l = (0,0,-1) */
@@ -351,20 +372,8 @@ void gouraud_shading_should_interpolate_vertex_intensities(void)
     TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
     mote_draw(&dev, &m, &dd);
     mote_end(&dev);
-    double I[3] = {1.0, 0.5, 0.0};
-    int checked = 0;
-    for (int y = 0; y < H; y += 3)
-        for (int x = 0; x < W; x += 3) {
-            double px = x + 0.5, py = y + 0.5;
-            /* screen vertices (0,0), (W,0), (0,H): barycentrics */
-            double b1 = px / W, b2 = py / H, b0 = 1.0 - b1 - b2;
-            if (b0 <= 0.01)
-                continue;
-            double expect = 255.0 * (b0 * I[0] + b1 * I[1] + b2 * I[2]);
-            TEST_ASSERT_UINT8_WITHIN(1, (uint8_t)(expect + 0.5), color[4 * (y * W + x)]);
-            checked++;
-        }
-    TEST_ASSERT_TRUE(checked > 50);
+    const double intensity[3][3] = {{1.0}, {0.5}, {0.0}};   /* red: a white material */
+    assert_half_screen_blends(intensity, 1);
 }
 
 void lighting_should_follow_the_mesh_rotation(void)
@@ -402,6 +411,105 @@ void lighting_should_follow_the_mesh_rotation(void)
     mote_end(&dev);
     TEST_ASSERT_EQUAL_UINT32(2, mote_device_stats(&dev)->triangles_drawn);
     TEST_ASSERT_UINT8_WITHIN(1, 128, color[4 * (H / 2 * W + W / 2)]);
+}
+
+/* ---- vertex colours ------------------------------------------------------------ */
+
+/* Every pixel of the screen quad drawn with d has (r, g, b), within 1. */
+static void assert_screen_is(const mote_mesh *q, const mote_draw_desc *d, int r, int g, int b,
+                             const char *what)
+{
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, q, d));
+    mote_end(&dev);
+    for (int i = 0; i < W * H; i += 13) {
+        TEST_ASSERT_UINT8_WITHIN_MESSAGE(1, r, color[4 * i], what);
+        TEST_ASSERT_UINT8_WITHIN_MESSAGE(1, g, color[4 * i + 1], what);
+        TEST_ASSERT_UINT8_WITHIN_MESSAGE(1, b, color[4 * i + 2], what);
+    }
+}
+
+void vertex_colours_should_multiply_the_lit_material_colour_in_every_mode(void)
+{
+    static const mote_rgba orange[4] = {{255, 128, 0, 255}, {255, 128, 0, 0},
+                                        {255, 128, 0, 9}, {255, 128, 0, 255}};
+    static uint8_t white[4] = {255, 255, 255, 255};
+    static const mote_texture tex = {1, 1, MOTE_FORMAT_RGBA8888, 4, white};
+    mote_mesh q = screen_quad(5.0f);
+    q.colors = orange;                /* alpha differs per vertex: ignored */
+    q.material.color = (mote_rgba){128, 255, 64, 255};
+    q.material.color_set = true;
+    q.material.texture = &tex;
+    mote_draw_desc d = {0};
+    d.unlit = true;
+    /* material x colour: 128 x 1, 255 x 128/255, 64 x 0 */
+    static const mote_mode modes[] = {MOTE_MODE_FLAT, MOTE_MODE_GOURAUD, MOTE_MODE_TEXTURED};
+    for (int k = 0; k < 3; k++) {
+        d.mode = modes[k];
+        assert_screen_is(&q, &d, 128, 128, 0, "unlit");
+    }
+    /* lit with n.l = 0.5: half of that */
+    frame.light_count = 1;
+    frame.lights[0].type = MOTE_LIGHT_DIRECTIONAL;
+    frame.lights[0].direction[0] = 0.8660254f;
+    frame.lights[0].direction[2] = 0.5f;
+    d.unlit = false;
+    for (int k = 0; k < 3; k++) {
+        d.mode = modes[k];
+        assert_screen_is(&q, &d, 64, 64, 0, "lit");
+    }
+}
+
+void unlit_vertex_colours_should_be_interpolated_and_averaged_when_flat(void)
+{
+    /* red, green and blue at the corners of the half-screen triangle */
+    static const mote_rgba rgb[3] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
+    mote_mesh m = half_screen_triangle();
+    m.colors = rgb;
+    mote_draw_desc dd = {0};
+    dd.mode = MOTE_MODE_GOURAUD;
+    dd.unlit = true;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    mote_draw(&dev, &m, &dd);
+    mote_end(&dev);
+    const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    assert_half_screen_blends(unit, 3);
+    /* flat: the mean of the three, 255/3 = 85 each, everywhere */
+    dd.mode = MOTE_MODE_FLAT;
+    mote_begin(&dev, &frame);
+    mote_draw(&dev, &m, &dd);
+    mote_end(&dev);
+    for (int c = 0; c < 3; c++) {
+        TEST_ASSERT_EQUAL_UINT8(85, color[4 * (2 * W + 2) + c]);
+        TEST_ASSERT_EQUAL_UINT8(85, color[4 * ((H / 2) * W + W / 4) + c]);
+    }
+}
+
+void points_and_wireframe_should_keep_their_colour_over_vertex_colours(void)
+{
+    static const mote_rgba red[4] = {{255, 0, 0, 255}, {255, 0, 0, 255}, {255, 0, 0, 255},
+                                     {255, 0, 0, 255}};
+    mote_mesh q = make_quad(-1.0f, -1.0f, 1.0f, 1.0f, 5.0f);
+    q.colors = red;
+    q.material.color = (mote_rgba){0, 0, 200, 255};
+    q.material.color_set = true;
+    mote_draw_desc d = {0};
+    static const mote_mode modes[] = {MOTE_MODE_POINTS, MOTE_MODE_WIREFRAME};
+    for (int k = 0; k < 2; k++) {
+        d.mode = modes[k];
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &q, &d));
+        mote_end(&dev);
+        int drawn = 0;
+        for (int i = 0; i < W * H; i++) {
+            if (color[4 * i] == 0 && color[4 * i + 1] == 0 && color[4 * i + 2] == 0)
+                continue;
+            TEST_ASSERT_EQUAL_UINT8(0, color[4 * i]);
+            TEST_ASSERT_EQUAL_UINT8(200, color[4 * i + 2]);
+            drawn++;
+        }
+        TEST_ASSERT_TRUE(drawn >= 4);
+    }
 }
 
 /* ---- textures --------------------------------------------------------------- */
@@ -659,6 +767,9 @@ int main(void)
     RUN_TEST(flat_shading_should_use_the_face_normal_against_the_light);
     RUN_TEST(gouraud_shading_should_interpolate_vertex_intensities);
     RUN_TEST(lighting_should_follow_the_mesh_rotation);
+    RUN_TEST(vertex_colours_should_multiply_the_lit_material_colour_in_every_mode);
+    RUN_TEST(unlit_vertex_colours_should_be_interpolated_and_averaged_when_flat);
+    RUN_TEST(points_and_wireframe_should_keep_their_colour_over_vertex_colours);
     RUN_TEST(each_texel_should_land_on_its_pixels);
     RUN_TEST(uvs_outside_zero_one_should_wrap_around);
     RUN_TEST(backface_culling_should_keep_exactly_the_faces_that_face_the_eye);

@@ -217,10 +217,41 @@ static void render(const mote_mesh meshes[3], int band, void *arena, size_t aren
     }
 }
 
-void frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands(void)
+/* The scene drawn with dd directly, binned with every tile size and
+ * thread count, with an arena that fills up, and in bands: the same bytes
+ * each way. */
+static void check_every_way_of_executing(const mote_mesh meshes[3], mote_draw_desc dd)
 {
     static uint8_t ref[W * H * 4], got[W * H * 4];
     static uint64_t arena_big[(8u << 20) / 8], arena_small[(96u << 10) / 8];
+    render(meshes, 0, NULL, 0, 64, 0, dd, ref);
+    /* something was drawn */
+    int lit = 0;
+    for (int i = 0; i < W * H; i++)
+        lit += ref[4 * i] != 10;
+    TEST_ASSERT_TRUE(lit > W * H / 20);
+    int tiles[] = {8, 16, 64, 256};
+    int threads[] = {0, 1, 2, 3, 4, 17};   /* 17: more than the host's runs on the stack */
+    for (int ti = 0; ti < 4; ti++)
+        for (int th = 0; th < 6; th++) {
+            memset(got, 0, sizeof got);
+            render(meshes, 0, arena_big, sizeof arena_big, tiles[ti], threads[th], dd, got);
+            TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+        }
+    /* an arena that fills up several times per frame */
+    memset(got, 0, sizeof got);
+    render(meshes, 0, arena_small, sizeof arena_small, 16, 2, dd, got);
+    TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+    int bands[] = {1, 2, 3, 7, 16, 70};
+    for (int b = 0; b < 6; b++) {
+        memset(got, 0, sizeof got);
+        render(meshes, bands[b], NULL, 0, 64, 0, dd, got);
+        TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+    }
+}
+
+void frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands(void)
+{
     mote_mesh meshes[3];
     make_scene(meshes);
     mote_mode modes[] = {MOTE_MODE_TEXTURED, MOTE_MODE_FLAT, MOTE_MODE_GOURAUD, MOTE_MODE_WIREFRAME, MOTE_MODE_POINTS};
@@ -230,31 +261,30 @@ void frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands(void)
         dd.mode = modes[mi];
         dd.cull = MOTE_CULL_NONE;
         dd.filter = mi == 0 ? MOTE_FILTER_BILINEAR : MOTE_FILTER_NEAREST;
-        render(meshes, 0, NULL, 0, 64, 0, dd, ref);
-        /* something was drawn */
-        int lit = 0;
-        for (int i = 0; i < W * H; i++)
-            lit += ref[4 * i] != 10;
-        TEST_ASSERT_TRUE(lit > W * H / 20);
-        int tiles[] = {8, 16, 64, 256};
-        int threads[] = {0, 1, 2, 3, 4, 17};   /* 17: more than the host's runs on the stack */
-        for (int ti = 0; ti < 4; ti++)
-            for (int th = 0; th < 6; th++) {
-                memset(got, 0, sizeof got);
-                render(meshes, 0, arena_big, sizeof arena_big, tiles[ti], threads[th], dd, got);
-                TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
-            }
-        /* an arena that fills up several times per frame */
-        memset(got, 0, sizeof got);
-        render(meshes, 0, arena_small, sizeof arena_small, 16, 2, dd, got);
-        TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
-        int bands[] = {1, 2, 3, 7, 16, 70};
-        for (int b = 0; b < 6; b++) {
-            memset(got, 0, sizeof got);
-            render(meshes, bands[b], NULL, 0, 64, 0, dd, got);
-            TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
-        }
+        check_every_way_of_executing(meshes, dd);
     }
+}
+
+void vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands(void)
+{
+    /* from the index, not the generator, so the other tests' scenes stay as they were */
+    static mote_rgba colors[NV];
+    for (int i = 0; i < NV; i++)
+        colors[i] = (mote_rgba){(uint8_t)(i * 97), (uint8_t)(i * 57 + 80), (uint8_t)(255 - i * 31), 255};
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    for (int m = 0; m < 3; m++)
+        meshes[m].colors = colors;
+    mote_mode modes[] = {MOTE_MODE_TEXTURED, MOTE_MODE_FLAT, MOTE_MODE_GOURAUD};
+    for (size_t mi = 0; mi < sizeof modes / sizeof modes[0]; mi++)
+        for (int unlit = 0; unlit < 2; unlit++) {
+            mote_draw_desc dd;
+            memset(&dd, 0, sizeof dd);
+            dd.mode = modes[mi];
+            dd.cull = MOTE_CULL_NONE;
+            dd.unlit = unlit;
+            check_every_way_of_executing(meshes, dd);
+        }
 }
 
 /* Renders SEQ_DRAWS draws of the scene (more than MOTE_MAX_DRAWS, a points
@@ -364,6 +394,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(every_specialised_span_should_match_the_generic_span);
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
+    RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);
     return UNITY_END();
 }

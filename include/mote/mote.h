@@ -81,9 +81,11 @@
  *   Lighting:   per light, n.l clamped at 0 (point light: l from the surface
  *               point to the light; directional: l = -direction), times
  *               light colour and intensity, summed with the ambient colour,
- *               clamped to [0,1] per channel, times the material colour.
- *               Flat: one value per triangle from its geometric normal at
- *               its centroid; Gouraud: per vertex from vertex normals.
+ *               clamped to [0,1] per channel, times the material colour,
+ *               times the vertex colour when the mesh has them
+ *               (mote_mesh.colors). Flat: one value per triangle from its
+ *               geometric normal at its centroid (and the mean of its three
+ *               vertex colours); Gouraud: per vertex from vertex normals.
  *   Colour:     shade S per channel in [0, 2^24] (2^24 = 1.0). Untextured
  *               channel = (S*255 + 2^23) >> 24; textured = (T*S + 2^23) >> 24
  *               where T is the texel channel (0..255).
@@ -157,14 +159,17 @@ extern "C" {
  * Left out, a feature costs no flash, and asking for it at run time gets
  * MOTE_ERR_UNSUPPORTED and draws nothing; everything else draws the same
  * bytes. On a Cortex-M0+ they save about (`make cross` prints the sizes
- * of the firmware profile, which turns all four off):
+ * of the firmware profile, which turns all five off):
  *   MOTE_ENABLE_LINES     ~0.7 KB  MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS
  *                                  (mote_draw refuses them)
  *   MOTE_ENABLE_BINNING   ~1.2 KB  desc.arena, tile binning (mote_device_init
  *                                  refuses an arena)
  *   MOTE_ENABLE_BILINEAR  ~0.4 KB  MOTE_FILTER_BILINEAR (mote_draw refuses it)
  *   MOTE_ENABLE_SUBSPAN   ~0.3 KB  MOTE_PERSPECTIVE_SUBSPAN (mote_draw
- *                                  refuses it) */
+ *                                  refuses it)
+ *   MOTE_ENABLE_VERTEX_COLORS
+ *                         ~0.2 KB  mote_mesh.colors (mote_draw refuses any
+ *                                  draw of a mesh that has them) */
 #ifndef MOTE_ENABLE_LINES
 #define MOTE_ENABLE_LINES 1
 #endif
@@ -176,6 +181,9 @@ extern "C" {
 #endif
 #ifndef MOTE_ENABLE_SUBSPAN
 #define MOTE_ENABLE_SUBSPAN 1
+#endif
+#ifndef MOTE_ENABLE_VERTEX_COLORS
+#define MOTE_ENABLE_VERTEX_COLORS 1
 #endif
 
 /* ---- results ----------------------------------------------------------- */
@@ -277,7 +285,8 @@ typedef struct mote_material {
  * world = parent's world * translate(position) * rotate * scale(scaling),
  * where rotate is rotation_quaternion (x, y, z, w) when use_quaternion is
  * set, else Euler angles applied z, then x, then y (Babylon's yaw-pitch-roll).
- * scaling {0,0,0} means {1,1,1}. */
+ * scaling {0,0,0} means {1,1,1}. Optionally a colour per vertex (colors,
+ * last). */
 typedef struct mote_mesh {
     const mote_vertex *vertices;
     uint32_t vertex_count;
@@ -295,6 +304,19 @@ typedef struct mote_mesh {
      * mote_mesh_update_bounds. */
     float bounds_center[3];
     float bounds_radius;
+    /* One colour per vertex (vertex_count of them), or NULL for none. As in
+     * Babylon.js's StandardMaterial, a vertex colour multiplies the
+     * material colour (and the texture): a vertex of a lit Gouraud or
+     * textured draw gets clamp(lighting) x material x colour, an unlit
+     * draw material x colour, each interpolated across the triangle; a
+     * flat draw gives a triangle the lighting at its centroid x material x
+     * the mean of its three colours (unlit: material x that mean). Only
+     * r, g, b count: alpha is ignored (mote does not blend). Points and
+     * wireframe keep mote_draw_desc.point_color. A build with
+     * MOTE_ENABLE_VERTEX_COLORS 0 refuses a draw of a mesh that has them.
+     * Last in the struct, after the fields every draw reads: Thumb-1
+     * (Cortex-M0+) loads reach only small offsets. */
+    const mote_rgba *colors;
 } mote_mesh;
 
 /* Computes bounds_center/bounds_radius from the vertices (skips NaN/Inf). */
@@ -344,7 +366,8 @@ typedef enum mote_mode {
     MOTE_MODE_WIREFRAME,
     MOTE_MODE_FLAT,
     MOTE_MODE_GOURAUD,
-    MOTE_MODE_TEXTURED,           /* Gouraud x texture (material colour x texture when unlit) */
+    MOTE_MODE_TEXTURED,           /* Gouraud x texture (material colour x texture when unlit;
+                                     x vertex colours when the mesh has them) */
     MOTE_MODE_COUNT
 } mote_mode;
 
@@ -381,8 +404,10 @@ typedef struct mote_draw_desc {
     mote_filter filter;
     bool no_depth_test;
     bool no_depth_write;
-    bool unlit;                   /* colour = material (x texture), no lights */
-    mote_rgba point_color;        /* points and wireframe; {0} = material colour */
+    bool unlit;                   /* colour = material (x vertex colour) (x texture),
+                                     no lights */
+    mote_rgba point_color;        /* points and wireframe, which ignore vertex
+                                     colours; {0} = material colour */
 } mote_draw_desc;
 
 /* ---- device ------------------------------------------------------------ */
@@ -478,10 +503,11 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame);
 /* Draws (or records, or bins) one mesh. draw may be NULL. Returns
  * MOTE_ERR_UNSUPPORTED, drawing nothing, for a mode, filter or perspective
  * that the library was built without (see MOTE_ENABLE_LINES, _BILINEAR,
- * _SUBSPAN). Band mode and binned mode with parallel_for keep the mesh
- * pointer until mote_end: the mote_mesh itself, not only its arrays, must
- * not change before then, so drawing one mesh at several places in a
- * frame takes one mote_mesh per draw. */
+ * _SUBSPAN), or for a mesh with colors in a build without
+ * MOTE_ENABLE_VERTEX_COLORS. Band mode and binned mode with parallel_for
+ * keep the mesh pointer until mote_end: the mote_mesh itself, not only its
+ * arrays, must not change before then, so drawing one mesh at several
+ * places in a frame takes one mote_mesh per draw. */
 mote_result mote_draw(mote_device *dev, const mote_mesh *mesh,
                       const mote_draw_desc *draw);
 

@@ -99,6 +99,20 @@ static void mote__normalize(float v[3])
     v[2] *= k;
 }
 
+/* ---- vertex colours -------------------------------------------------------- */
+
+/* s x the mean colour of n vertices (r, g, b; 255 = 1): one vertex's own,
+ * or a flat triangle's three */
+static void mote__tint(const mote__ctx *cx, mote__tvert *const tv[], int n, float s[3])
+{
+    for (int c = 0; c < 3; c++) {
+        unsigned sum = 0;
+        for (int i = 0; i < n; i++)
+            sum += (&cx->mesh->colors[tv[i]->index].r)[c];
+        s[c] *= (float)sum / ((float)n * 255.0f);
+    }
+}
+
 /* ---- clipping ------------------------------------------------------------ */
 
 #define MOTE__CLIP_PLANES 6
@@ -338,8 +352,13 @@ static void mote__finish(const mote__ctx *cx, mote__tvert *tv)
     if (tv->ready)
         return;
     tv->ready = true;
-    if (cx->rs->gouraud)
-        mote__light(cx, tv->world, tv->normal, tv->c.s);
+    if (cx->rs->gouraud) {
+        /* an unlit draw has per-vertex shades only for its vertex colours */
+        if (!MOTE_ENABLE_VERTEX_COLORS || cx->lit)
+            mote__light(cx, tv->world, tv->normal, tv->c.s);
+        if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors)
+            mote__tint(cx, &tv, 1, tv->c.s);
+    }
     mote__to_setup(&tv->c, &tv->sv);
 }
 
@@ -414,8 +433,15 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
     }
 }
 
+/* A flat triangle's colour: the lighting at its centroid (lit draws) x
+ * the material colour x the mean of its vertex colours (when it has them). */
 static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], float s[3])
 {
+    if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors && !cx->lit) {
+        memcpy(s, cx->color, 3 * sizeof *s);
+        mote__tint(cx, tv, 3, s);
+        return;
+    }
     float e1[3], e2[3], n[3], c[3], vsum[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = tv[1]->world[k] - tv[0]->world[k];
@@ -430,6 +456,8 @@ static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], floa
             n[k] = -n[k];
     mote__normalize(n);
     mote__light(cx, c, n, s);
+    if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors)
+        mote__tint(cx, tv, 3, s);
 }
 
 /* A triangle, or one of the fan a clipped one became: counted and dropped
@@ -605,7 +633,8 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
     /* features the build left out (MOTE_ENABLE_* in mote.h) */
     if ((!MOTE_ENABLE_LINES && (out->mode == MOTE_MODE_POINTS || out->mode == MOTE_MODE_WIREFRAME))
         || (!MOTE_ENABLE_BILINEAR && out->filter == MOTE_FILTER_BILINEAR)
-        || (!MOTE_ENABLE_SUBSPAN && out->perspective == MOTE_PERSPECTIVE_SUBSPAN))
+        || (!MOTE_ENABLE_SUBSPAN && out->perspective == MOTE_PERSPECTIVE_SUBSPAN)
+        || (!MOTE_ENABLE_VERTEX_COLORS && mesh->colors))
         return MOTE_ERR_UNSUPPORTED;
     return MOTE_OK;
 }
@@ -695,8 +724,13 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     mote_mode mode = cx.d.mode;
     bool tri_mode = mode == MOTE_MODE_FLAT || mode == MOTE_MODE_GOURAUD || mode == MOTE_MODE_TEXTURED;
     cx.lit = tri_mode && !cx.d.unlit;
-    cx.flat = mode == MOTE_MODE_FLAT && cx.lit;   /* unlit flat is one colour anyway */
-    rs_local.gouraud = cx.lit && !cx.flat;
+    /* vertex colours tint triangles' shades (points and wireframe draw in
+     * point_color); a constant false when the build leaves them out */
+    bool colored = MOTE_ENABLE_VERTEX_COLORS && tri_mode && mesh->colors;
+    /* unlit flat without vertex colours is one colour anyway */
+    cx.flat = mode == MOTE_MODE_FLAT && (cx.lit || colored);
+    /* per-vertex shades: lit, or vertex colours even unlit */
+    rs_local.gouraud = (cx.lit || colored) && !cx.flat;
     bool front_cw = cx.d.front_face == MOTE_FRONT_CW;
     cx.cull_cw = cx.d.cull == (front_cw ? MOTE_CULL_FRONT : MOTE_CULL_BACK);
     cx.cull_ccw = cx.d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);

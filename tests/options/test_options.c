@@ -110,6 +110,21 @@ void subspan_perspective_should_need_its_option(void)
     check_feature(MOTE_ENABLE_SUBSPAN, &d);
 }
 
+void vertex_colours_should_need_their_option(void)
+{
+    tu_scene_build(TU_SCENE_COLORS, MOTE_WRAP_REPEAT, &scene);   /* every mesh has colors */
+    check_feature(MOTE_ENABLE_VERTEX_COLORS, NULL);
+    mote_draw_desc d;
+    memset(&d, 0, sizeof d);
+    d.mode = MOTE_MODE_FLAT;
+    d.unlit = true;
+    check_feature(MOTE_ENABLE_VERTEX_COLORS, &d);
+    /* without colours the same meshes draw in every build */
+    for (int i = 0; i < scene.mesh_count; i++)
+        scene.meshes[i].colors = NULL;
+    check_feature(true, &d);
+}
+
 void an_arena_should_need_binning(void)
 {
     /* init_device checks the result: MOTE_ERR_UNSUPPORTED without binning */
@@ -129,6 +144,7 @@ int main(void)
     RUN_TEST(wireframe_and_points_should_need_lines);
     RUN_TEST(bilinear_filtering_should_need_its_option);
     RUN_TEST(subspan_perspective_should_need_its_option);
+    RUN_TEST(vertex_colours_should_need_their_option);
     RUN_TEST(an_arena_should_need_binning);
     return UNITY_END();
 }

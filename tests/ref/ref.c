@@ -500,6 +500,17 @@ static void light(const draw_ctx *c, const double p[3], const double nrm[3], dou
         out[j] = clamp01(isnan(acc[j]) ? 0.0 : acc[j]) * c->color[j];
 }
 
+/* s x the mean colour of the n vertices listed (mote.h, mote_mesh.colors) */
+static void tint(const draw_ctx *c, const uint32_t *index, int n, double s[3])
+{
+    for (int k = 0; k < 3; k++) {
+        double sum = 0.0;
+        for (int i = 0; i < n; i++)
+            sum += (&c->mesh->colors[index[i]].r)[k];
+        s[k] *= sum / (255.0 * n);
+    }
+}
+
 /* A vertex through the vertex stage; false when it is not finite. */
 static bool vertex(const draw_ctx *c, uint32_t index, cvert *out, double wpos[3], double wnrm[3])
 {
@@ -519,6 +530,8 @@ static bool vertex(const draw_ctx *c, uint32_t index, cvert *out, double wpos[3]
         light(c, wpos, wnrm, out->s);
     else
         memcpy(out->s, c->color, sizeof out->s);
+    if (c->mesh->colors && !c->flat)
+        tint(c, &index, 1, out->s);
     out->u = out->v = 0.0;
     if (c->textured) {
         const mote_material *m = &c->mesh->material;
@@ -602,8 +615,14 @@ static void to_ref_vert(const cvert *c, ref_vert *r)
     r->v = c->v;
 }
 
-static void flat_shade(const draw_ctx *c, double wp[3][3], double wn[3][3], double out[3])
+static void flat_shade(const draw_ctx *c, const uint32_t index[3], double wp[3][3], double wn[3][3],
+                       double out[3])
 {
+    if (!c->lit) {                /* flat and unlit: only for vertex colours */
+        memcpy(out, c->color, 3 * sizeof *out);
+        tint(c, index, 3, out);
+        return;
+    }
     double e1[3], e2[3], n[3], ctr[3];
     for (int k = 0; k < 3; k++) {
         e1[k] = wp[1][k] - wp[0][k];
@@ -620,6 +639,8 @@ static void flat_shade(const draw_ctx *c, double wp[3][3], double wn[3][3], doub
             n[k] = -n[k];
     normalize3(n);
     light(c, ctr, n, out);
+    if (c->mesh->colors)
+        tint(c, index, 3, out);
 }
 
 static bool texture_ok(const mote_texture *t)
@@ -665,7 +686,8 @@ bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
     for (int k = 0; k < 3; k++)
         c.color[k] = mat->color_set ? (double)(&mat->color.r)[k] / 255.0 : 1.0;
     c.lit = !c.d.unlit;
-    c.flat = mode == MOTE_MODE_FLAT && c.lit;
+    /* unlit flat is one colour per mesh, or per triangle with vertex colours */
+    c.flat = mode == MOTE_MODE_FLAT && (c.lit || mesh->colors);
     c.textured = mode == MOTE_MODE_TEXTURED && texture_ok(mat->texture);
     c.sh.texture = c.textured ? mat->texture : NULL;
     c.sh.wrap_u = (mat->wrap_u > MOTE_WRAP_DEFAULT && mat->wrap_u < MOTE_WRAP_COUNT) ? mat->wrap_u : MOTE_WRAP_REPEAT;
@@ -695,7 +717,7 @@ bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
         }
         if (c.flat) {
             double s[3];
-            flat_shade(&c, wp, wn, s);
+            flat_shade(&c, ix, wp, wn, s);
             for (int k = 0; k < 3; k++)
                 memcpy(poly[k].s, s, sizeof s);
         }

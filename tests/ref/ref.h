@@ -11,9 +11,10 @@
  *              the device's sub-pixel grid (round half up), culling on the
  *              snapped area, perspective-correct barycentrics (Vulkan's
  *              formula) from the snapped positions, depth linear in screen
- *              space compared in double, lighting in double, texture
- *              addressing and colour rounding as CONVENTIONS state them
- *              (bilinear with exact, not 1/256, weights).
+ *              space compared in double, lighting and vertex colours in
+ *              double, texture addressing and colour rounding as
+ *              CONVENTIONS state them (bilinear with exact, not 1/256,
+ *              weights).
  *   Metrics    coverage mismatches, max / mean channel error, PSNR and the
  *              count of pixels off by more than 1 LSB between two images.
  *
@@ -63,7 +64,7 @@ void ref_clear(ref_target *t, mote_rgba color, double depth);
 typedef struct ref_vert {
     double z;                     /* z/w, depth in [0,1] */
     double w;                     /* clip w (> 0) */
-    double s[3];                  /* shade per channel in [0,1] (light x material) */
+    double s[3];                  /* shade per channel in [0,1] (light x material x vertex colour) */
     double u, v;                  /* texture coordinates in texels */
 } ref_vert;
 

@@ -33,8 +33,9 @@ static mote_vertex sphere_v[2][17 * 33];
 static uint32_t sphere_i[6 * 16 * 32];
 static mote_vertex quad_v[2][4];
 static uint32_t quad_i[6] = {0, 1, 2, 0, 2, 3};
+static mote_rgba floor_c[4], cube_c[24], sphere_c[17 * 33];
 
-static mote_mesh mesh_of(mote_vertex *v, uint32_t nv, const uint32_t *i, uint32_t ni)
+mote_mesh tu_mesh_of(const mote_vertex *v, uint32_t nv, const uint32_t *i, uint32_t ni)
 {
     mote_mesh m;
     memset(&m, 0, sizeof m);
@@ -150,8 +151,8 @@ void tu_scene_build(int which, mote_wrap wrap, tu_scene *s)
         s->frame.camera.target[1] = -0.5f;
         build_floor(12, -1, 6);
         build_cube();
-        s->meshes[0] = mesh_of(floor_v, 4, floor_i, 6);
-        s->meshes[1] = mesh_of(cube_v, 24, cube_i, 36);
+        s->meshes[0] = tu_mesh_of(floor_v, 4, floor_i, 6);
+        s->meshes[1] = tu_mesh_of(cube_v, 24, cube_i, 36);
         s->meshes[1].rotation[0] = 0.5f;
         s->meshes[1].rotation[1] = 0.7f;
         s->meshes[1].position[1] = 0.6f;
@@ -171,7 +172,7 @@ void tu_scene_build(int which, mote_wrap wrap, tu_scene *s)
         int ni = build_sphere(sphere_v[0], 1.3f);
         build_sphere(sphere_v[1], 1.0f);
         for (int i = 0; i < 2; i++) {
-            s->meshes[i] = mesh_of(sphere_v[i], 17 * 33, sphere_i, (uint32_t)ni);
+            s->meshes[i] = tu_mesh_of(sphere_v[i], 17 * 33, sphere_i, (uint32_t)ni);
             s->meshes[i].material.color_set = true;
         }
         s->meshes[0].material.color = (mote_rgba){230, 120, 60, 255};
@@ -181,6 +182,33 @@ void tu_scene_build(int which, mote_wrap wrap, tu_scene *s)
         s->meshes[1].position[1] = 0.3f;
         s->meshes[1].position[2] = -0.4f;
         s->mesh_count = 2;
+    } else if (which == TU_SCENE_COLORS) {
+        /* the textured scene, its meshes tinted per vertex, and a sphere
+         * whose colour follows its normal (smooth, strongly saturated) */
+        tu_scene_build(TU_SCENE_TEXTURED, wrap, s);
+        s->name = "vertex colours";
+        static const mote_rgba corners[4] = {{255, 40, 40, 255}, {40, 255, 80, 255},
+                                             {60, 90, 255, 255}, {255, 255, 255, 255}};
+        memcpy(floor_c, corners, sizeof corners);
+        for (int i = 0; i < 24; i++)
+            cube_c[i] = (mote_rgba){(uint8_t)(60 + (i * 37) % 196), (uint8_t)(255 - (i * 53) % 200),
+                                    (uint8_t)(30 + (i * 91) % 226), 255};
+        s->meshes[0].colors = floor_c;
+        s->meshes[1].colors = cube_c;
+        int ni = build_sphere(sphere_v[0], 0.7f);
+        for (int i = 0; i < 17 * 33; i++) {
+            const float *n = sphere_v[0][i].normal;
+            sphere_c[i] = (mote_rgba){(uint8_t)(127.5f + 127.0f * n[0]), (uint8_t)(127.5f + 127.0f * n[1]),
+                                      (uint8_t)(127.5f - 127.0f * n[2]), 255};
+        }
+        s->meshes[2] = tu_mesh_of(sphere_v[0], 17 * 33, sphere_i, (uint32_t)ni);
+        s->meshes[2].colors = sphere_c;
+        s->meshes[2].material.color = (mote_rgba){250, 230, 200, 255};
+        s->meshes[2].material.color_set = true;
+        s->meshes[2].position[0] = -1.8f;
+        s->meshes[2].position[1] = 0.2f;
+        s->meshes[2].position[2] = -1.0f;
+        s->mesh_count = 3;
     } else {
         s->name = "intersecting quads (depth)";
         s->mode = MOTE_MODE_FLAT;
@@ -196,7 +224,7 @@ void tu_scene_build(int which, mote_wrap wrap, tu_scene *s)
                 p->position[2] = (q ? 0.8f : -0.6f) * c[k][0] + (q ? -0.3f : 0.4f) * c[k][1];
                 p->normal[2] = -1;
             }
-            s->meshes[q] = mesh_of(quad_v[q], 4, quad_i, 6);
+            s->meshes[q] = tu_mesh_of(quad_v[q], 4, quad_i, 6);
             s->meshes[q].material.color_set = true;
         }
         s->meshes[0].material.color = (mote_rgba){250, 60, 60, 255};
