@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #define MONKEY MOTE_SOURCE_DIR "/../shared/assets/monkey.babylon"
+#define VERTEX_COLORS MOTE_SOURCE_DIR "/tests/data/vertex_colors.babylon"
 
 static char msg[512];
 static char tmpdir[256];
@@ -505,6 +506,48 @@ void loader_should_load_a_texture_once_for_two_materials(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+#define ASSERT_RGBA(R, G, B, A, c)           \
+    do {                                     \
+        TEST_ASSERT_EQUAL_UINT8(R, (c).r);   \
+        TEST_ASSERT_EQUAL_UINT8(G, (c).g);   \
+        TEST_ASSERT_EQUAL_UINT8(B, (c).b);   \
+        TEST_ASSERT_EQUAL_UINT8(A, (c).a);   \
+    } while (0)
+
+void loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(VERTEX_COLORS, NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(5, s.mesh_count); /* rgba's two sub-meshes, rgb, shared, plain */
+    const mote_mesh *sub0 = &s.meshes[0], *sub1 = &s.meshes[1], *rgb = &s.meshes[2];
+    const mote_mesh *shared = &s.meshes[3], *plain = &s.meshes[4];
+    /* 16 floats for 4 vertices: r, g, b, a each */
+    TEST_ASSERT_NOT_NULL(sub0->colors);
+    ASSERT_RGBA(255, 0, 0, 255, sub0->colors[0]);
+    ASSERT_RGBA(0, 255, 0, 128, sub0->colors[1]);
+    ASSERT_RGBA(0, 0, 255, 0, sub0->colors[2]);
+    ASSERT_RGBA(51, 102, 153, 255, sub0->colors[3]);
+    /* sub-meshes share the vertices, and their colours with them */
+    TEST_ASSERT_EQUAL_PTR(sub0->vertices, sub1->vertices);
+    TEST_ASSERT_EQUAL_PTR(sub0->colors, sub1->colors);
+    /* 9 floats for 3 vertices: r, g, b, alpha 1; rounded to nearest and clamped */
+    TEST_ASSERT_NOT_NULL(rgb->colors);
+    ASSERT_RGBA(128, 64, 255, 255, rgb->colors[0]);
+    ASSERT_RGBA(255, 0, 1, 255, rgb->colors[1]);
+    ASSERT_RGBA(255, 0, 128, 255, rgb->colors[2]);
+    /* geometryId: the colours of geometries.vertexData[0] */
+    TEST_ASSERT_EQUAL_UINT32(3, shared->vertex_count);
+    TEST_ASSERT_NOT_NULL(shared->colors);
+    ASSERT_RGBA(255, 0, 0, 255, shared->colors[0]);
+    ASSERT_RGBA(0, 255, 0, 255, shared->colors[1]);
+    ASSERT_RGBA(0, 0, 255, 255, shared->colors[2]);
+    /* no colors: NULL, which draws as before */
+    TEST_ASSERT_NULL(plain->colors);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -525,6 +568,7 @@ int main(void)
     RUN_TEST(write_png_should_convert_an_rgb565_device_like_read_pixel);
     RUN_TEST(write_image_should_refuse_unknown_extensions_and_band_devices);
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
+    RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

@@ -191,6 +191,9 @@ void loader_should_free_everything_when_any_allocation_fails(void)
         "\"cameras\":[{\"id\":\"c\",\"position\":[0,0,-5],\"rotation\":[0.1,0.2,0.3]}],"
         "\"lights\":[{\"type\":3}]}";
     total += fail_every_allocation(NULL, scene, NULL, MOTE_OK);
+    /* vertex colours, inline (4 and 3 per vertex) and in geometries.vertexData */
+    total += fail_every_allocation(MOTE_SOURCE_DIR "/tests/data/vertex_colors.babylon", NULL, NULL,
+                                   MOTE_OK);
     /* the monkey: file reading, its texture decode and the scene */
     FILE *f = fopen(MONKEY, "rb");
     if (f) {

@@ -49,7 +49,8 @@ void mote_texture_free(mote_texture *texture);
 /* ---- scenes ------------------------------------------------------------ */
 
 /* A loaded scene: meshes ready for mote_draw (one mesh per sub-mesh, sharing
- * vertex arrays), their textures, the active camera and the lights. */
+ * vertex and vertex colour arrays), their textures, the active camera and
+ * the lights. */
 typedef struct mote_scene {
     mote_mesh *meshes;
     int mesh_count;
@@ -67,7 +68,8 @@ typedef struct mote_scene {
 } mote_scene;
 
 /* Loads a .babylon file, either layout: the legacy interleaved `vertices`
- * (stride 6/8/10 by uvCount) or the current `positions`/`normals`/`uvs`.
+ * (stride 6/8/10 by uvCount) or the current `positions`/`normals`/`uvs`/
+ * `colors` (4 or 3 floats per vertex, 0..1, into mote_mesh.colors).
  * Textures resolve relative to the scene's folder. limits may be NULL. */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);

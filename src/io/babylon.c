@@ -1,8 +1,11 @@
 /*
  * babylon.c - .babylon scene files (cJSON) to mote meshes, materials,
  * textures, camera and lights. Both layouts are read: the tutorial's legacy
- * interleaved `vertices` and the current `positions`/`normals`/`uvs` (inline
- * or through `geometryId`). See ACCURACY.md, "The .babylon format".
+ * interleaved `vertices` and the current `positions`/`normals`/`uvs`/`colors`
+ * (inline or through `geometryId`). See ACCURACY.md, "The .babylon format".
+ * Babylon.js serialises no switch for vertex colours (`useVertexColors` is
+ * a run-time property of its meshes, not written to files), so `colors` are
+ * always used; `hasVertexAlpha` is not read, as mote ignores alpha.
  *
  * Every value is checked before it is used: types, finite floats, index
  * ranges, counts against the limits before anything is allocated. Errors
@@ -98,6 +101,7 @@ typedef struct mote__node {
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     mote_vertex *verts;
     uint32_t nv;
+    mote_rgba *colors;            /* one per vertex, or NULL */
     uint32_t *idx;
     uint32_t ni;
     mote__sub *subs;
@@ -640,19 +644,27 @@ static R mote__multi_materials(mote__ld *ld)
 
 enum { MOTE__POS, MOTE__NRM, MOTE__UV, MOTE__LEGACY };
 
+/* Element k of the array at `at` as a float; the place is spelled out only
+ * for an error, as vertex arrays are long. */
+static R mote__element_float(mote__ld *ld, const cJSON *e, const char *at, size_t k, float *out)
+{
+    if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble) ||
+        fabs(e->valuedouble) > (double)FLT_MAX) {
+        char at2[192];
+        snprintf(at2, sizeof at2, "%s[%zu]", at, k);
+        return mote__to_float(ld, e, at2, out);
+    }
+    *out = (float)e->valuedouble;
+    return MOTE_OK;
+}
+
 static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex *v,
                     int what, size_t stride)
 {
     size_t k = 0;
     for (const cJSON *e = arr->child; e; e = e->next, k++) {
         float f;
-        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble) ||
-            fabs(e->valuedouble) > (double)FLT_MAX) {
-            char at2[192];
-            snprintf(at2, sizeof at2, "%s[%zu]", at, k);
-            MOTE__TRY(mote__to_float(ld, e, at2, &f));
-        }
-        f = (float)e->valuedouble;
+        MOTE__TRY(mote__element_float(ld, e, at, k, &f));
         mote_vertex *vx = &v[k / stride];
         size_t c = k % stride;
         switch (what) {
@@ -808,15 +820,42 @@ static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *ver
     return mote__check_indices(ld, iat, nd);
 }
 
+/* Vertex colours: 4 floats per vertex (r, g, b, a), or 3 (alpha 1), told
+ * apart by the length; each 0..1, rounded to a byte and clamped. */
+static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node *nd)
+{
+    size_t n = mote__array_len(arr), nv = nd->nv;
+    if (n == 0 && nv == 0)
+        return MOTE_OK;           /* nothing to colour */
+    size_t stride = n == nv * 4 ? 4 : n == nv * 3 ? 3 : 0;
+    if (!stride)
+        return mote__fail(ld, MOTE_ERR_RANGE,
+                          "%s: %zu floats, expected 4 or 3 per vertex (%zu vertices)", at, n, nv);
+    nd->colors = mote__store_alloc(ld->keep, nv, sizeof *nd->colors);
+    if (!nd->colors)
+        return mote__oom(ld, at);
+    size_t k = 0;
+    for (const cJSON *e = arr->child; e; e = e->next, k++) {
+        float f;
+        MOTE__TRY(mote__element_float(ld, e, at, k, &f));
+        (&nd->colors[k / stride].r)[k % stride] = mote__unit_byte(f);
+    }
+    if (stride == 3)
+        for (size_t i = 0; i < nv; i++)
+            nd->colors[i].a = 255;
+    return MOTE_OK;
+}
+
 /* The current layout, from the mesh itself or from a geometries.vertexData
  * entry (src, named src_where in messages). */
 static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *where,
                                 mote__node *nd)
 {
-    const cJSON *pos, *nrm, *uvs, *ind;
+    const cJSON *pos, *nrm, *uvs, *colors, *ind;
     MOTE__TRY(mote__arr(ld, src, "positions", where, &pos));
     MOTE__TRY(mote__arr(ld, src, "normals", where, &nrm));
     MOTE__TRY(mote__arr(ld, src, "uvs", where, &uvs));
+    MOTE__TRY(mote__arr(ld, src, "colors", where, &colors));
     MOTE__TRY(mote__arr(ld, src, "indices", where, &ind));
     char at[96], iat[96];
     snprintf(iat, sizeof iat, "%s.indices", where);
@@ -849,6 +888,10 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
                               "%s: %zu floats, expected 2 per vertex (%zu vertices)", at, n,
                               nv);
         MOTE__TRY(mote__fill(ld, uvs, at, nd->verts, MOTE__UV, 2));
+    }
+    if (colors) {
+        snprintf(at, sizeof at, "%s.colors", where);
+        MOTE__TRY(mote__colors(ld, colors, at, nd));
     }
     MOTE__TRY(mote__check_indices(ld, iat, nd));
     if (!nrm)
@@ -1094,6 +1137,7 @@ static R mote__build_meshes(mote__ld *ld)
             mote_mesh *m = &sc->meshes[nd->first_mesh + s];
             m->vertices = nd->verts;
             m->vertex_count = nd->nv;
+            m->colors = nd->colors;   /* sub-meshes share the vertices, so these too */
             m->indices = nd->idx;
             m->index_count = nd->ni;
             uint32_t material_index = 0;
