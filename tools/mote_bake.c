@@ -1,7 +1,7 @@
 /*
  * mote-bake - turns a .babylon scene into a C header that firmware compiles
- * in: const vertex and index arrays, textures already in the target pixel
- * format, the meshes as mote_mesh (material.texture pointing at the baked
+ * in: const vertex, vertex colour and index arrays, textures already in the
+ * target pixel format, the meshes as mote_mesh (material.texture pointing at the baked
  * texture), the frame (camera, lights, ambient) and the clear colour. The
  * firmware then renders with no file system, no JSON and no heap.
  *
@@ -29,6 +29,7 @@ typedef struct baker {
     int *texture_slot;            /* per scene texture: index in the baked array, or -1 */
     int *vertex_array;            /* per mesh: which vertices array it uses, or -1 */
     int *index_array;             /* per mesh: which indices array it uses, or -1 */
+    int *color_array;             /* per mesh: which colors array it uses, or -1 */
 } baker;
 
 static void usage(FILE *out)
@@ -137,6 +138,19 @@ static void write_vertices(baker *b, const mote_mesh *m, int array)
     fprintf(b->f, "};\n\n");
 }
 
+static void write_colors(baker *b, const mote_mesh *m, int array)
+{
+    fprintf(b->f, "static const mote_rgba %s_colors%d[%u] = {\n", b->name, array,
+            (unsigned)m->vertex_count);
+    for (uint32_t i = 0; i < m->vertex_count; i++) {
+        const mote_rgba *c = &m->colors[i];
+        fprintf(b->f, "%s{%u, %u, %u, %u},", i % 8 ? " " : "", c->r, c->g, c->b, c->a);
+        if (i % 8 == 7)
+            fputc('\n', b->f);
+    }
+    fprintf(b->f, "%s};\n\n", m->vertex_count % 8 ? "\n" : "");
+}
+
 static void write_indices(baker *b, const mote_mesh *m, int array)
 {
     fprintf(b->f, "static const uint32_t %s_indices%d[%u] = {\n", b->name, array, (unsigned)m->index_count);
@@ -186,7 +200,10 @@ static void write_mesh(baker *b, int i)
     fprintf(f, "            .v_origin_bottom = %s,\n        },\n", tf(mat->v_origin_bottom));
     fputs("        .bounds_center = ", f);
     put_floats(b, m->bounds_center, 3);
-    fprintf(f, ",\n        .bounds_radius = %s,\n    },\n", flt(buf, m->bounds_radius));
+    fprintf(f, ",\n        .bounds_radius = %s,\n", flt(buf, m->bounds_radius));
+    if (b->color_array[i] >= 0)
+        fprintf(f, "        .colors = %s_colors%d,\n", b->name, b->color_array[i]);
+    fputs("    },\n", f);
 }
 
 static void write_frame(baker *b, const mote_frame_desc *fr)
@@ -220,20 +237,30 @@ static void write_frame(baker *b, const mote_frame_desc *fr)
             tf(fr->keep_depth));
 }
 
-/* Meshes split from one file share vertex (and index) arrays: bake each
- * array once. Returns the number of distinct arrays. */
-static int share_arrays(const mote_scene *s, int *which, bool indices)
+/* The per-mesh arrays a header holds. */
+typedef enum array_kind { ARRAY_VERTICES, ARRAY_INDICES, ARRAY_COLORS } array_kind;
+
+/* A mesh's array of that kind, and its length in elements. */
+static const void *mesh_array(const mote_mesh *m, array_kind kind, uint32_t *count)
+{
+    *count = kind == ARRAY_INDICES ? m->index_count : m->vertex_count;
+    return kind == ARRAY_VERTICES ? (const void *)m->vertices
+         : kind == ARRAY_INDICES ? (const void *)m->indices : (const void *)m->colors;
+}
+
+/* Meshes split from one file share vertex, colour and index arrays: bake
+ * each array once. Returns the number of distinct arrays. */
+static int share_arrays(const mote_scene *s, int *which, array_kind kind)
 {
     int n = 0;
     for (int i = 0; i < s->mesh_count; i++) {
-        const void *p = indices ? (const void *)s->meshes[i].indices : (const void *)s->meshes[i].vertices;
-        uint32_t count = indices ? s->meshes[i].index_count : s->meshes[i].vertex_count;
+        uint32_t count, cj;
+        const void *p = mesh_array(&s->meshes[i], kind, &count);
         which[i] = -1;
         if (!p || count == 0)
             continue;
         for (int j = 0; j < i && which[i] < 0; j++) {
-            const void *q = indices ? (const void *)s->meshes[j].indices : (const void *)s->meshes[j].vertices;
-            uint32_t cj = indices ? s->meshes[j].index_count : s->meshes[j].vertex_count;
+            const void *q = mesh_array(&s->meshes[j], kind, &cj);
             if (q == p && cj == count)
                 which[i] = which[j];
         }
@@ -285,11 +312,19 @@ static int bake(baker *b, int width, int height, const char *source)
         fprintf(f, "};\n\n");
     }
 
-    int nv = share_arrays(s, b->vertex_array, false), ni = share_arrays(s, b->index_array, true);
+    int nv = share_arrays(s, b->vertex_array, ARRAY_VERTICES);
+    int ni = share_arrays(s, b->index_array, ARRAY_INDICES);
+    int nc = share_arrays(s, b->color_array, ARRAY_COLORS);
     for (int a = 0; a < nv; a++)
         for (int i = 0; i < s->mesh_count; i++)
             if (b->vertex_array[i] == a) {
                 write_vertices(b, &s->meshes[i], a);
+                break;
+            }
+    for (int a = 0; a < nc; a++)
+        for (int i = 0; i < s->mesh_count; i++)
+            if (b->color_array[i] == a) {
+                write_colors(b, &s->meshes[i], a);
                 break;
             }
     for (int a = 0; a < ni; a++)
@@ -390,8 +425,8 @@ int main(int argc, char **argv)
     size_t n = (size_t)(scene.mesh_count > 0 ? scene.mesh_count : 1);
     size_t nt = (size_t)(scene.texture_count > 0 ? scene.texture_count : 1);
     baker b = {NULL, name, format, &scene, calloc(nt, sizeof(int)), calloc(n, sizeof(int)),
-               calloc(n, sizeof(int))};
-    if (!b.texture_slot || !b.vertex_array || !b.index_array) {
+               calloc(n, sizeof(int)), calloc(n, sizeof(int))};
+    if (!b.texture_slot || !b.vertex_array || !b.index_array || !b.color_array) {
         fprintf(stderr, "mote-bake: out of memory\n");
         goto done;
     }
@@ -411,6 +446,7 @@ done:
     free(b.texture_slot);
     free(b.vertex_array);
     free(b.index_array);
+    free(b.color_array);
     mote_scene_free(&scene);
     return status;
 }

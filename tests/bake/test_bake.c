@@ -1,0 +1,91 @@
+/*
+ * test_bake.c - what mote-bake writes is the scene the loader reads: the
+ * header baked from tests/data/vertex_colors.babylon (tests/bake/bake.mk)
+ * against the same file loaded with mote_scene_load, field by field, with
+ * its vertex colours (one array per vertex array, shared by sub-meshes),
+ * and rendered to the same bytes.
+ */
+#include <mote/mote.h>
+#include <mote/mote_io.h>
+#include "unity.h"
+
+#include "baked.h"
+
+#include <string.h>
+
+#define W BAKED_WIDTH
+#define H BAKED_HEIGHT
+
+static mote_scene scene;
+static char msg[512];
+
+void setUp(void)
+{
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_SCENE, NULL, &scene, msg, sizeof msg), msg);
+}
+
+void tearDown(void)
+{
+    mote_scene_free(&scene);
+}
+
+void baked_meshes_should_hold_the_loaded_arrays_and_vertex_colours(void)
+{
+    TEST_ASSERT_EQUAL(scene.mesh_count, BAKED_MESH_COUNT);
+    for (int i = 0; i < scene.mesh_count; i++) {
+        const mote_mesh *a = &scene.meshes[i], *b = &baked_meshes[i];
+        TEST_ASSERT_EQUAL_UINT32(a->vertex_count, b->vertex_count);
+        TEST_ASSERT_EQUAL_UINT32(a->index_count, b->index_count);
+        TEST_ASSERT_EQUAL_MEMORY(a->vertices, b->vertices, a->vertex_count * sizeof *a->vertices);
+        TEST_ASSERT_EQUAL_MEMORY(a->indices, b->indices, a->index_count * sizeof *a->indices);
+        TEST_ASSERT_EQUAL_MEMORY(a->position, b->position, sizeof a->position);
+        TEST_ASSERT_EQUAL(a->colors == NULL, b->colors == NULL);
+        if (a->colors)
+            TEST_ASSERT_EQUAL_MEMORY(a->colors, b->colors, a->vertex_count * sizeof *a->colors);
+    }
+    /* the file's first mesh has two sub-meshes: one colour array for both */
+    TEST_ASSERT_NOT_NULL(baked_meshes[0].colors);
+    TEST_ASSERT_EQUAL_PTR(baked_meshes[0].colors, baked_meshes[1].colors);
+}
+
+static void render(const mote_mesh *meshes, int n, const mote_frame_desc *frame, mote_rgba clear,
+                   mote_draw_desc d, uint8_t *out)
+{
+    static uint32_t depth[W * H];
+    static mote_device dev;
+    mote_device_desc desc = {.width = W, .height = H, .color = out, .depth = depth, .clear_color = clear};
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &desc));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, frame));
+    for (int i = 0; i < n; i++)
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[i], &d));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+}
+
+void a_baked_scene_should_render_the_same_bytes_as_the_loaded_one(void)
+{
+    static uint8_t loaded[W * H * 4], baked[W * H * 4];
+    mote_frame_desc frame;
+    mote_scene_frame(&scene, (float)W / (float)H, &frame);
+    static const mote_mode modes[] = {MOTE_MODE_FLAT, MOTE_MODE_GOURAUD};
+    for (int k = 0; k < 2; k++) {
+        mote_draw_desc d;
+        memset(&d, 0, sizeof d);
+        d.mode = modes[k];
+        d.cull = MOTE_CULL_NONE;
+        render(scene.meshes, scene.mesh_count, &frame, scene.clear_color, d, loaded);
+        render(baked_meshes, BAKED_MESH_COUNT, &baked_frame, baked_clear_color, d, baked);
+        TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
+        int drawn = 0;
+        for (int i = 0; i < W * H; i++)
+            drawn += loaded[4 * i] || loaded[4 * i + 1] || loaded[4 * i + 2];
+        TEST_ASSERT_TRUE(drawn > 100);
+    }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(baked_meshes_should_hold_the_loaded_arrays_and_vertex_colours);
+    RUN_TEST(a_baked_scene_should_render_the_same_bytes_as_the_loaded_one);
+    return UNITY_END();
+}
