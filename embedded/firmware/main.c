@@ -6,7 +6,7 @@
  * reference hash (embedded/test-embedded.sh compares them).
  *
  * RAM for the library: the two band buffers and the device, all static
- * (30 rows: 38400 + 792 bytes on a 32-bit target, MOTE_MAX_DRAWS=8):
+ * (30 rows: 38400 + 800 bytes on a 32-bit target, MOTE_MAX_DRAWS=8):
  *   mote_band_bytes(W, FW_BAND, RGB565, DEPTH16) + sizeof(mote_device).
  */
 #include <mote/mote.h>
