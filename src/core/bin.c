@@ -284,6 +284,7 @@ static void mote__bin_plan(const mote_device *dev, mote__group *gr, int groups, 
             uint64_t part = (uint64_t)est[g] * 65536u / sum;
             cap = (size_t)((uint64_t)space / 65536u * part + (uint64_t)space % 65536u * part / 65536u);
         }
+        cap = MOTE__MIN(cap, to - from);  /* estimates that wrapped around stay inside */
         mote_device *gd = &gr[g].dev;
         gd->bin.used = from;
         gd->bin.top = from + (cap & ~(size_t)7u);
