@@ -52,7 +52,7 @@ FW_SIZE   ?= 320x240
 FW_HEADER := $(CROSS_DIR)/scene/scene.h
 FW_SRC    := embedded/firmware/main.c embedded/firmware/platform_semihost.c \
              embedded/firmware/mini_libc.c
-FW_DEPS   := $(wildcard embedded/firmware/*.h embedded/include/*.h include/mote/*.h src/core/*.h)
+FW_DEPS   := $(wildcard embedded/firmware/*.h embedded/include/*.h include/mote/*.h src/core/*.h) embedded/cross.mk
 
 CROSS_CGLM := $(CROSS_DIR)/sysinclude/cglm
 
@@ -72,12 +72,12 @@ CROSS_CORE_OBJ.$(1) := $$(patsubst src/core/%.c,$(CROSS_DIR)/$(1)/core/%.o,$$(CO
 CROSS_PROF_OBJ.$(1) := $$(patsubst src/core/%.c,$(CROSS_DIR)/$(1)/core-fw/%.o,$$(CORE_SRC))
 CROSS_FW_OBJ.$(1)   := $$(patsubst embedded/%,$(CROSS_DIR)/$(1)/fw/%.o,$$(FW_SRC) $$(CROSS_START.$(1)))
 
-$(CROSS_DIR)/$(1)/core/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) | $(CROSS_CGLM)
+$(CROSS_DIR)/$(1)/core/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) embedded/cross.mk | $(CROSS_CGLM)
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_CORE_FLAGS) \
 	    -isystem $$$$($$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) -print-file-name=include) -c $$< -o $$@
 
-$(CROSS_DIR)/$(1)/core-fw/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) | $(CROSS_CGLM)
+$(CROSS_DIR)/$(1)/core-fw/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) embedded/cross.mk | $(CROSS_CGLM)
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_CORE_FLAGS) $$(CROSS_PROFILE) \
 	    -isystem $$$$($$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) -print-file-name=include) -c $$< -o $$@
