@@ -212,18 +212,26 @@ bool mote__bin_defers(const mote_device *dev)
     return dev->desc.parallel_for && !dev->desc.triangle_hook;
 }
 
+/* Bins the recorded draws [first, end) of dev through target (dev itself,
+ * or a group's copy, which stops when its slice is full); the first error. */
+static mote_result mote__bin_draws(mote_device *target, const mote_device *dev, int first, int end)
+{
+    mote_result result = MOTE_OK;
+    mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
+    for (int i = first; i < end && !target->bin.overflowed; i++) {
+        mote_result r = mote__process_draw(target, dev->draws[i].mesh, &dev->draws[i].desc,
+                                           MOTE__SINK_BIN, NULL, all);
+        if (r != MOTE_OK && result == MOTE_OK)
+            result = r;
+    }
+    return result;
+}
+
 static void mote__bin_group(void *arg, int g)
 {
     const mote__batch *batch = (const mote__batch *)arg;
-    const mote_device *dev = batch->dev;
     mote__group *gr = &batch->groups[g];
-    mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
-    for (int i = gr->first; i < gr->end && !gr->dev.bin.overflowed; i++) {
-        mote_result r = mote__process_draw(&gr->dev, dev->draws[i].mesh, &dev->draws[i].desc,
-                                           MOTE__SINK_BIN, NULL, all);
-        if (r != MOTE_OK && gr->result == MOTE_OK)
-            gr->result = r;
-    }
+    gr->result = mote__bin_draws(&gr->dev, batch->dev, gr->first, gr->end);
 }
 
 static void mote__stats_add(mote_stats *to, const mote_stats *from)
@@ -262,7 +270,7 @@ static void mote__bin_plan(const mote_device *dev, mote__group *gr, int groups, 
     size_t total = 0, est[MOTE__BIN_GROUPS], sum = 0;
     for (int i = 0; i < n; i++)
         total += mote__draw_bytes(&dev->draws[i]);
-    size_t done = 0, blocks = mote__bin_table_bytes(dev) / sizeof(mote__tile) * sizeof(mote__block);
+    size_t done = 0, blocks = (size_t)dev->bin.tiles_x * (size_t)dev->bin.tiles_y * sizeof(mote__block);
     int i = 0;
     for (int g = 0; g < groups; g++) {
         size_t target = total / (size_t)groups * (size_t)(g + 1);
@@ -323,7 +331,6 @@ mote_result mote__bin_run_draws(mote_device *dev)
             gd->bin.triangles = 0;
             gd->bin.group = true;
             gd->bin.overflowed = false;
-            gr[g].result = MOTE_OK;
         }
         mote__bin_plan(dev, gr, groups, n, b->used, b->top);
         mote__batch batch = {dev, gr};
@@ -357,14 +364,7 @@ mote_result mote__bin_run_draws(mote_device *dev)
         }
         mote__bin_top_release(dev, scratch);
     }
-    mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
-    for (int i = 0; i < n; i++) {
-        mote_result r = mote__process_draw(dev, dev->draws[i].mesh, &dev->draws[i].desc, MOTE__SINK_BIN,
-                                           NULL, all);
-        if (r != MOTE_OK && result == MOTE_OK)
-            result = r;
-    }
-    return result;
+    return mote__bin_draws(dev, dev, 0, n);
 }
 
 #endif /* MOTE_ENABLE_BINNING */

@@ -262,6 +262,14 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     return MOTE_OK;
 }
 
+/* Keeps a draw for mote_end (band mode) or for binning in parallel. */
+static void mote__record(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *d)
+{
+    mote__draw *rec = &dev->draws[dev->draw_count++];
+    rec->mesh = mesh;
+    rec->desc = *d;
+}
+
 mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *draw)
 {
     if (!dev || !mesh)
@@ -277,9 +285,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
     if (mote__band_mode(dev)) {
         if (dev->draw_count >= MOTE_MAX_DRAWS)
             return MOTE_ERR_TOO_MANY_DRAWS;
-        mote__draw *rec = &dev->draws[dev->draw_count++];
-        rec->mesh = mesh;
-        rec->desc = d;
+        mote__record(dev, mesh, &d);
         return MOTE_OK;
     }
     mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
@@ -290,9 +296,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
     if (MOTE_ENABLE_BINNING && mote__binned(dev) && triangles && mote__bin_defers(dev)) {
         /* set up later, in parallel (bin.c); a full record is binned first */
         r = dev->draw_count == MOTE_MAX_DRAWS ? mote__bin_run_draws(dev) : MOTE_OK;
-        mote__draw *rec = &dev->draws[dev->draw_count++];
-        rec->mesh = mesh;
-        rec->desc = d;
+        mote__record(dev, mesh, &d);
         return r;
     }
     if (MOTE_ENABLE_BINNING && mote__binned(dev) && triangles) {
