@@ -129,6 +129,34 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
     return true;
 }
 
+/* Asks the cache for a busy tile's colour and depth rows, a prefetch per
+ * line, before its triangles: the frame's clear has pushed them out, and
+ * a tile of small triangles otherwise waits for each line at the triangle
+ * that first touches it (grid at 1080p, one thread: about 3% of the frame;
+ * Suzanne alone: no change). No-op where the compiler has no prefetch. */
+static void mote__warm_tile(const mote__target *tg, mote__rect r)
+{
+#if defined(__GNUC__)
+    const size_t cbytes = (size_t)mote_format_bytes(tg->format);
+    const size_t dbytes = (size_t)mote_depth_format_bytes(tg->depth_format);
+    const size_t cw = cbytes * (size_t)(r.x1 - r.x0), dw = dbytes * (size_t)(r.x1 - r.x0);
+    for (int y = r.y0; y < r.y1; y++) {
+        const uint8_t *c = tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride + cbytes * (size_t)r.x0;
+        for (size_t i = 0; i < cw; i += 64)
+            __builtin_prefetch(c + i, 1);
+        if (dbytes) {
+            const uint8_t *d = (const uint8_t *)tg->depth
+                             + dbytes * ((size_t)(y - tg->y0) * (size_t)tg->width + (size_t)r.x0);
+            for (size_t i = 0; i < dw; i += 64)
+                __builtin_prefetch(d + i, 1);
+        }
+    }
+#else
+    (void)tg;
+    (void)r;
+#endif
+}
+
 static void mote__raster_tile(void *arg, int index)
 {
     mote_device *dev = (mote_device *)arg;
@@ -143,6 +171,7 @@ static void mote__raster_tile(void *arg, int index)
     mote__target tg;
     mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
+    mote__warm_tile(&tg, r);
     for (uint32_t off = tile->head; off;) {
         const mote__block *blk = (const mote__block *)(const void *)(b->base + off);
         for (uint32_t i = 0; i < blk->count; i++)
