@@ -133,10 +133,18 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
  * line, before its triangles: the frame's clear has pushed them out, and
  * a tile of small triangles otherwise waits for each line at the triangle
  * that first touches it (grid at 1080p, one thread: about 3% of the frame;
- * Suzanne alone: no change). No-op where the compiler has no prefetch. */
+ * Suzanne alone: no change). Only on hosts with data caches and a
+ * prefetch instruction; on a microcontroller it is nothing. */
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) \
+                          || (defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'A'))
+#define MOTE__PREFETCH 1
+#else
+#define MOTE__PREFETCH 0
+#endif
+
 static void mote__warm_tile(const mote__target *tg, mote__rect r)
 {
-#if defined(__GNUC__)
+#if MOTE__PREFETCH
     const size_t cbytes = (size_t)mote_format_bytes(tg->format);
     const size_t dbytes = (size_t)mote_depth_format_bytes(tg->depth_format);
     const size_t cw = cbytes * (size_t)(r.x1 - r.x0), dw = dbytes * (size_t)(r.x1 - r.x0);
