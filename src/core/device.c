@@ -293,13 +293,13 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
     mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
     bool triangles = d.mode != MOTE_MODE_POINTS && d.mode != MOTE_MODE_WIREFRAME;
-    if (MOTE_ENABLE_BINNING && mote__binned(dev) && triangles && mote__bin_defers(dev)) {
-        /* set up later, in parallel (bin.c); a full record is binned first */
-        r = dev->draw_count == MOTE_MAX_DRAWS ? mote__bin_run_draws(dev) : MOTE_OK;
-        mote__record(dev, mesh, &d);
-        return r;
-    }
     if (MOTE_ENABLE_BINNING && mote__binned(dev) && triangles) {
+        if (mote__bin_defers(dev)) {
+            /* set up later, in parallel (bin.c); a full record is binned first */
+            r = dev->draw_count == MOTE_MAX_DRAWS ? mote__bin_run_draws(dev) : MOTE_OK;
+            mote__record(dev, mesh, &d);
+            return r;
+        }
         r = mote__process_draw(dev, mesh, &d, MOTE__SINK_BIN, NULL, all);
     } else {
         /* points and lines are drawn at once; earlier binned triangles first */
