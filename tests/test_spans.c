@@ -56,7 +56,7 @@ void every_specialised_span_should_match_the_generic_span(void)
         rs.tex_h = 8;
         rs.wrap_u = MOTE_WRAP_REPEAT;
         rs.wrap_v = addr == 0 ? MOTE_WRAP_MIRROR : MOTE_WRAP_REPEAT;
-        rs.pow2_repeat = addr != 0;
+        rs.tex_stride = 64;
         float uv_range = addr == 2 ? 5000.0f : 40.0f;
         rs.gouraud = sk != MOTE__SHADE_FLAT;
         rs.persp = (mote__persp_kind)p;

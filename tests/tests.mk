@@ -26,7 +26,7 @@ $(BUILD)/tests/obj/unity.o: $(UNITY_OK) | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) -std=c99 -O2 -g $(SANFLAGS) -c $< -o $@
 
-$(BUILD)/tests/obj/%.o: tests/%.c $(wildcard tests/*.h tests/*/*.h include/mote/*.h) $(UNITY_OK) | $(DEPS_OK)
+$(BUILD)/tests/obj/%.o: tests/%.c $(wildcard tests/*.h tests/*/*.h include/mote/*.h src/core/*.h src/io/*.h) $(UNITY_OK) | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
 

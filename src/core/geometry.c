@@ -746,9 +746,6 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
                             : mat->texture->width * mote_format_bytes(mat->texture->format);
         rs_local.wrap_u = (mote_wrap)mote__enum_or(mat->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
         rs_local.wrap_v = (mote_wrap)mote__enum_or(mat->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
-        rs_local.pow2_repeat = rs_local.wrap_u == MOTE_WRAP_REPEAT && rs_local.wrap_v == MOTE_WRAP_REPEAT
-                            && (rs_local.tex_w & (rs_local.tex_w - 1)) == 0
-                            && (rs_local.tex_h & (rs_local.tex_h - 1)) == 0;
     }
     /* features that change nothing are dropped before choosing the span */
     bool varying = rs_local.gouraud || rs_local.tex != MOTE__TEX_NONE;

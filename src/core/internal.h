@@ -141,7 +141,8 @@ typedef struct mote__raster_state {
     int tex_w, tex_h;
     int tex_stride;               /* bytes per texture row */
     mote_wrap wrap_u, wrap_v;
-    bool pow2_repeat;             /* both axes repeat with power-of-two sizes */
+    bool pow2_repeat;             /* texels by masks and shifts (mote__fill_select) */
+    int tex_stride_log2;          /* log2 of tex_stride when pow2_repeat */
     mote__tex_kind tex;
     mote__persp_kind persp;
     int subspan_log2;
@@ -275,7 +276,8 @@ void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,
                       int subpixel_bits);
 
 /* span.c */
-/* Fills rs->fill[] for the draw's features and the target's formats. */
+/* Fills rs->fill[] for the draw's features and the target's formats, and
+ * how texels are addressed (rs->pow2_repeat). */
 void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format);
 void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r, int subpixel_bits);
 void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b);

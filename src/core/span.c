@@ -81,15 +81,16 @@ MOTE__INLINE int mote__wrap(int i, int n, mote_wrap mode)
 typedef struct mote__tex_view {
     const uint8_t *pixels;
     int stride, w, h;
+    int stride_log2;              /* with pow2_repeat: rows by a shift */
     mote_format format;
     mote_wrap wrap_u, wrap_v;
     bool pow2_repeat;
 } mote__tex_view;
 
-MOTE__INLINE void mote__texel(const mote__tex_view *tx, int x, int y, uint32_t c[3])
+/* Texel x of a texture row, as three channels. */
+MOTE__INLINE void mote__texel_in_row(mote_format format, const uint8_t *row, size_t x, uint32_t c[3])
 {
-    const uint8_t *row = tx->pixels + (size_t)y * (size_t)tx->stride;
-    switch (tx->format) {
+    switch (format) {
     case MOTE_FORMAT_RGB565: {
         uint32_t v = ((const uint16_t *)(const void *)row)[x];
         c[0] = ((v >> 11) * 527 + 23) >> 6;
@@ -117,20 +118,28 @@ MOTE__INLINE void mote__texel(const mote__tex_view *tx, int x, int y, uint32_t c
     }
 }
 
+MOTE__INLINE void mote__texel(const mote__tex_view *tx, bool pow2_repeat, size_t x, size_t y, uint32_t c[3])
+{
+    /* the generic-only build keeps the one multiplication (less flash) */
+    bool shift = MOTE_SPECIALISE_SPANS && pow2_repeat;
+    const uint8_t *row = tx->pixels + (shift ? y << tx->stride_log2 : y * (size_t)tx->stride);
+    mote__texel_in_row(tx->format, row, x, c);
+}
+
 /* Samples the texture at (u, v) in 16.16 texels. */
 MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, bool pow2_repeat, int64_t u, int64_t v,
                                uint32_t c[3])
 {
     if (!MOTE_ENABLE_BILINEAR || !bilinear) {
-        int tu, tv;
+        size_t tu, tv;
         if (pow2_repeat) {
-            tu = (int)(u >> 16) & (tx->w - 1);
-            tv = (int)(v >> 16) & (tx->h - 1);
+            tu = (size_t)(u >> 16) & (size_t)(tx->w - 1);
+            tv = (size_t)(v >> 16) & (size_t)(tx->h - 1);
         } else {
-            tu = mote__wrap((int)(u >> 16), tx->w, tx->wrap_u);
-            tv = mote__wrap((int)(v >> 16), tx->h, tx->wrap_v);
+            tu = (size_t)mote__wrap((int)(u >> 16), tx->w, tx->wrap_u);
+            tv = (size_t)mote__wrap((int)(v >> 16), tx->h, tx->wrap_v);
         }
-        mote__texel(tx, tu, tv, c);
+        mote__texel(tx, pow2_repeat, tu, tv, c);
         return;
     }
     u -= 0x8000;
@@ -150,10 +159,10 @@ MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, bool pow2
         v1 = mote__wrap(iv + 1, tx->h, tx->wrap_v);
     }
     uint32_t a[3], b[3], d[3], e[3];
-    mote__texel(tx, u0, v0, a);
-    mote__texel(tx, u1, v0, b);
-    mote__texel(tx, u0, v1, d);
-    mote__texel(tx, u1, v1, e);
+    mote__texel(tx, pow2_repeat, (size_t)u0, (size_t)v0, a);
+    mote__texel(tx, pow2_repeat, (size_t)u1, (size_t)v0, b);
+    mote__texel(tx, pow2_repeat, (size_t)u0, (size_t)v1, d);
+    mote__texel(tx, pow2_repeat, (size_t)u1, (size_t)v1, e);
     for (int k = 0; k < 3; k++)
         c[k] = (a[k] * (256 - fu) * (256 - fv) + b[k] * fu * (256 - fv) + d[k] * (256 - fu) * fv
                 + e[k] * fu * fv + 32768) >> 16;
@@ -182,7 +191,9 @@ MOTE__INLINE int64_t mote__plane_next(int64_t value, int64_t step)
 MOTE__SMALL uint64_t mote__recip_k(int64_t q, int shift, int k)
 {
     uint64_t qs = (uint64_t)(q >> shift);
-    return ((uint64_t)1 << k) / (qs ? qs : 1);
+    if (qs == 0)                  /* never inside a sane triangle: a branch, not a select */
+        return (uint64_t)1 << k;
+    return ((uint64_t)1 << k) / qs;
 }
 
 /* An attribute from its numerator plane value n and r (see setup.c): one
@@ -190,6 +201,23 @@ MOTE__SMALL uint64_t mote__recip_k(int64_t q, int shift, int k)
 MOTE__SMALL int64_t mote__attr(int64_t a0, int64_t n, uint64_t r, int k)
 {
     return a0 + ((int64_t)((uint64_t)(n >> 10) * r) >> (k - 20));
+}
+
+/* The nearest texel of a repeating power-of-two texture, from the texel
+ * coordinates' numerator planes. u = a0 + P / 2^(k-20) with P = (n >> 10) r
+ * (mote__attr), and the texel column is (u >> 16) & (w - 1): that is bits
+ * k-4 and up of a0 2^(k-20) + P, which in modular 64-bit arithmetic are
+ * right as long as they lie below bit 64, w <= 2^(68-k) (the raster state
+ * keeps pow2_repeat for textures up to that). One addition and one shift
+ * instead of two shifts, and the row's byte offset straight from v's sum. */
+MOTE__INLINE void mote__texel_pow2(const mote__tex_view *tx, const uint64_t origin[2], int64_t nu, int64_t nv,
+                                   uint64_t r, int k, uint32_t c[3])
+{
+    uint64_t su = origin[0] + (uint64_t)(nu >> 10) * r, sv = origin[1] + (uint64_t)(nv >> 10) * r;
+    size_t col = (size_t)(su >> (k - 4)) & (size_t)(tx->w - 1);
+    /* the row's offset (v's texel << stride_log2) is those bits of sv moved down less far */
+    size_t row = (size_t)(sv >> (k - 4 - tx->stride_log2)) & ((size_t)(tx->h - 1) << tx->stride_log2);
+    mote__texel_in_row(tx->format, tx->pixels + row, col, c);
 }
 
 /* Packs a colour for a format: one store per pixel in the loop. */
@@ -242,7 +270,10 @@ MOTE__INLINE void mote__modulate_grey(uint32_t c[3], uint32_t s)
 
 MOTE__SMALL uint32_t mote__clamp_shade(int64_t v)
 {
-    return v < 0 ? 0u : v > MOTE__SHADE_ONE ? (uint32_t)MOTE__SHADE_ONE : (uint32_t)v;
+    /* one test for the usual in-range value, as for depth */
+    if ((uint64_t)v > MOTE__SHADE_ONE)
+        return v < 0 ? 0u : (uint32_t)MOTE__SHADE_ONE;
+    return (uint32_t)v;
 }
 
 /* An interpolated shade, clamped. */
@@ -261,6 +292,7 @@ typedef struct mote__fill_ctx {
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
     bool grey;                    /* ... and is the same in all three */
     mote__tex_view tx;
+    uint64_t tex_origin[2];       /* mote__texel_pow2: a0 of u and v, times 2^(k-20) */
     int seg_len;
     uint64_t affine_r;            /* affine: all qi are 1, Q is (nearly) constant: one r */
 } mote__fill_ctx;
@@ -285,7 +317,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     int64_t seg_step = 0;
     ptrdiff_t seg_x0 = 0, seg_x1 = x0;
     bool seg_exact = false;
-    uint32_t written = 0;
+    uint32_t rejected = 0;        /* counted rather than the written ones: rare */
 
     for (ptrdiff_t x = x0; x < x1; x++, z = mote__plane_next(z, zdx), q = mote__plane_next(q, qdx),
                                       nr = mote__plane_next(nr, nrdx), ng = mote__plane_next(ng, ngdx),
@@ -301,8 +333,10 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 depth = zz < 0 ? 0u : MOTE__DEPTH_MAX;
             if (dsel == MOTE__D_16)
                 depth >>= 8;
-            if ((dmode & MOTE__D_TEST) && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x]))
+            if ((dmode & MOTE__D_TEST) && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x])) {
+                rejected++;
                 continue;
+            }
         }
         uint32_t px = c->flat_px;
         if (varying) {
@@ -334,8 +368,11 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
             }
             if (tex) {
                 uint32_t t[3];
-                mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
-                             mote__attr(c->a0[MOTE__A_V], nv, r, k), t);
+                if (MOTE_SPECIALISE_SPANS && tex == MOTE__TEX_NEAREST && pow2)
+                    mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, t);
+                else
+                    mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
+                                 mote__attr(c->a0[MOTE__A_V], nv, r, k), t);
                 if (MOTE__WIDE_REGISTERS && (shade == MOTE__SHADE_MONO || (shade == MOTE__SHADE_FLAT && c->grey))) {
                     mote__modulate_grey(t, sr);
                 } else {
@@ -355,9 +392,8 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
             else
                 d32[x] = depth;
         }
-        written++;
     }
-    return written;
+    return (uint32_t)(x1 - x0) - rejected;
 }
 
 /* Whether a pixel loop of this kind steps attribute a's plane: the ones
@@ -468,6 +504,11 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
         c.tx.wrap_u = rs->wrap_u;
         c.tx.wrap_v = rs->wrap_v;
         c.tx.pow2_repeat = rs->pow2_repeat;
+        c.tx.stride_log2 = rs->tex_stride_log2;
+        if (MOTE_SPECIALISE_SPANS) {
+            c.tex_origin[0] = (uint64_t)c.a0[MOTE__A_U] << (k - 20);
+            c.tex_origin[1] = (uint64_t)c.a0[MOTE__A_V] << (k - 20);
+        }
     }
     c.seg_len = 1 << rs->subspan_log2;
     if (varying && persp == MOTE__PERSP_AFFINE)
@@ -526,8 +567,30 @@ typedef char mote__fill_table_size_check[sizeof mote__fill_table / sizeof mote__
                                          == 3 * MOTE__SHADE_COUNT * 3 * 3 * 2 ? 1 : -1];
 #endif
 
+/* Whether texels can be addressed by masks and shifts: both axes repeat,
+ * with power-of-two sizes up to 2^(68 - K) (mote__texel_pow2) and, in the
+ * specialised build, a power-of-two stride up to 2^18 (rows by a shift). */
+static void mote__address_select(mote__raster_state *rs)
+{
+    rs->pow2_repeat = false;
+    if (rs->tex == MOTE__TEX_NONE || rs->wrap_u != MOTE_WRAP_REPEAT || rs->wrap_v != MOTE_WRAP_REPEAT)
+        return;
+    const int max = 1 << (68 - MOTE__RBITS), w = rs->tex_w, h = rs->tex_h, stride = rs->tex_stride;
+    rs->pow2_repeat = (w & (w - 1)) == 0 && (h & (h - 1)) == 0;
+#if MOTE_SPECIALISE_SPANS
+    rs->pow2_repeat = rs->pow2_repeat && w <= max && h <= max && (stride & (stride - 1)) == 0 && stride <= 1 << 18;
+    rs->tex_stride_log2 = 0;
+    while (rs->pow2_repeat && (1 << rs->tex_stride_log2) < stride)
+        rs->tex_stride_log2++;
+#else
+    (void)max;
+    (void)stride;
+#endif
+}
+
 void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format)
 {
+    mote__address_select(rs);
     for (int s = 0; s < MOTE__SHADE_COUNT; s++) {
         rs->fill[s] = mote__fill_generic;
 #if MOTE_SPECIALISE_SPANS
