@@ -170,6 +170,27 @@ static void band_flush(void *user, int y0, int rows, const void *color, int stri
                (size_t)s->stride);
 }
 
+/* A W x H device's description: RGBA colour, 32-bit depth, clear colour
+ * (10, 20, 30); binned in arena when given, through mote_parallel_openmp
+ * with *threads threads when that is not 0. */
+static mote_device_desc test_desc(uint8_t *color, uint32_t *depth, void *arena, size_t arena_size, int tile,
+                                  int *threads)
+{
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = W;
+    d.height = H;
+    d.color = color;
+    d.depth = depth;
+    d.clear_color = (mote_rgba){10, 20, 30, 255};
+    d.arena = arena;
+    d.arena_size = arena_size;
+    d.tile_size = tile;
+    d.parallel_for = *threads ? mote_parallel_openmp : NULL;
+    d.parallel_user = threads;
+    return d;
+}
+
 /* Renders the scene with the given execution setup into out (RGBA). */
 static void render(const mote_mesh meshes[3], int band, void *arena, size_t arena_size, int tile,
                    int threads, mote_draw_desc dd, uint8_t *out)
@@ -178,21 +199,10 @@ static void render(const mote_mesh meshes[3], int band, void *arena, size_t aren
     static uint32_t depth[W * H];
     band_sink sink = {out, W * 4};
     mote_device dev;
-    mote_device_desc d;
-    memset(&d, 0, sizeof d);
-    d.width = W;
-    d.height = H;
-    d.color = band ? color : out;
-    d.depth = depth;
-    d.clear_color = (mote_rgba){10, 20, 30, 255};
+    mote_device_desc d = test_desc(band ? color : out, depth, arena, arena_size, tile, &threads);
     d.band_height = band;
     d.flush = band_flush;
     d.flush_user = &sink;
-    d.arena = arena;
-    d.arena_size = arena_size;
-    d.tile_size = tile;
-    d.parallel_for = threads ? mote_parallel_openmp : NULL;
-    d.parallel_user = &threads;
     TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
     mote_frame_desc f;
     memset(&f, 0, sizeof f);
@@ -295,17 +305,7 @@ static void render_sequence(const mote_mesh meshes[3], void *arena, size_t arena
 {
     static uint32_t depth[W * H];
     mote_device dev;
-    mote_device_desc d;
-    memset(&d, 0, sizeof d);
-    d.width = W;
-    d.height = H;
-    d.color = out;
-    d.depth = depth;
-    d.arena = arena;
-    d.arena_size = arena_size;
-    d.tile_size = 16;
-    d.parallel_for = threads ? mote_parallel_openmp : NULL;
-    d.parallel_user = &threads;
+    mote_device_desc d = test_desc(out, depth, arena, arena_size, 16, &threads);
     TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
     mote_frame_desc f;
     memset(&f, 0, sizeof f);
@@ -389,6 +389,48 @@ void binned_draws_set_up_in_groups_should_match_the_serial_path(void)
         }
 }
 
+/* With parallel setup the frame's clear waits for the draws and runs beside
+ * their setup: a frame with nothing to set up, or whose first draw is
+ * points (drawn at once), must still start from a cleared frame. */
+void the_clear_beside_parallel_setup_should_run_without_triangles_and_before_points(void)
+{
+    static uint8_t color[W * H * 4];
+    static uint32_t depth[W * H];
+    static uint64_t arena[(1u << 20) / 8];
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    for (int threads = 1; threads <= 2; threads++)
+        for (int points = 0; points < 2; points++) {
+            mote_device dev;
+            mote_device_desc d = test_desc(color, depth, arena, sizeof arena, 0, &threads);
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+            memset(color, 0xab, sizeof color);
+            memset(depth, 0, sizeof depth);
+            mote_frame_desc f;
+            memset(&f, 0, sizeof f);
+            f.camera.position[2] = -5.0f;
+            f.camera.znear = 0.5f;
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+            mote_draw_desc dd;
+            memset(&dd, 0, sizeof dd);
+            dd.mode = MOTE_MODE_POINTS;
+            dd.point_color = (mote_rgba){255, 255, 255, 255};
+            if (points) {
+                TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[0], &dd));
+            }
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+            int cleared = 0, white = 0;
+            for (int i = 0; i < W * H; i++) {
+                cleared += color[4 * i] == 10 && color[4 * i + 1] == 20 && color[4 * i + 2] == 30;
+                white += color[4 * i] == 255 && color[4 * i + 1] == 255 && color[4 * i + 2] == 255;
+            }
+            TEST_ASSERT_EQUAL_INT(W * H, cleared + white);
+            TEST_ASSERT_TRUE(points ? white > 0 : white == 0);
+            for (int i = 0; i < W * H; i++)
+                TEST_ASSERT_EQUAL_HEX32(MOTE__DEPTH_MAX, depth[i]);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -396,5 +438,6 @@ int main(void)
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);
+    RUN_TEST(the_clear_beside_parallel_setup_should_run_without_triangles_and_before_points);
     return UNITY_END();
 }

@@ -475,6 +475,7 @@ typedef struct mote_device {
     mote_device_desc desc;        /* with defaults filled in */
     bool ready;                   /* init succeeded */
     bool in_frame;
+    bool clear_pending;           /* the frame's clear is to run beside the setup (bin.c) */
     mote_frame_desc frame;
     float view_proj[16];          /* column-major, as cglm's mat4 */
     float view[16];

@@ -230,7 +230,9 @@ void mote__bin_flush(mote_device *dev)
  * bytes are those of the serial path, for any thread count. A group whose
  * slice runs out stops, and the whole batch is binned serially instead,
  * which flushes a full arena as usual. The groups depend on the draws
- * alone; a single draw is binned serially. */
+ * alone; a single draw is binned serially, or as one group when the
+ * frame's clear is still to run: its stripes are tasks of the same batch,
+ * beside the setup, which touches no pixel (a group never flushes). */
 #define MOTE__BIN_GROUPS 16
 
 typedef struct mote__group {
@@ -242,6 +244,8 @@ typedef struct mote__group {
 typedef struct mote__batch {
     const mote_device *dev;
     mote__group *groups;
+    int group_count;              /* tasks past these are clear stripes */
+    mote_device *clear;
 } mote__batch;
 
 bool mote__bin_defers(const mote_device *dev)
@@ -267,6 +271,10 @@ static mote_result mote__bin_draws(mote_device *target, const mote_device *dev, 
 static void mote__bin_group(void *arg, int g)
 {
     const mote__batch *batch = (const mote__batch *)arg;
+    if (g >= batch->group_count) {
+        mote__clear_stripe(batch->clear, g - batch->group_count);
+        return;
+    }
     mote__group *gr = &batch->groups[g];
     gr->result = mote__bin_draws(&gr->dev, batch->dev, gr->first, gr->end);
 }
@@ -350,7 +358,9 @@ mote_result mote__bin_run_draws(mote_device *dev)
     size_t head = mote__align((size_t)groups * sizeof(mote__group)), free = b->top - b->used;
     size_t each = table + cache, scratch = 0;
     mote__group *gr = NULL;
-    if (groups > 1 && head < free && cache < free && each <= (free - head) / (size_t)groups) {
+    /* a single group is worth its copy when the frame's clear runs beside it */
+    int least = dev->clear_pending ? 1 : 2;
+    if (groups >= least && head < free && cache < free && each <= (free - head) / (size_t)groups) {
         scratch = head + (size_t)groups * each;
         gr = (mote__group *)mote__bin_top_alloc(dev, scratch);
     }
@@ -370,8 +380,10 @@ mote_result mote__bin_run_draws(mote_device *dev)
             gd->bin.overflowed = false;
         }
         mote__bin_plan(dev, gr, groups, n, b->used, b->top);
-        mote__batch batch = {dev, gr};
-        dev->desc.parallel_for(dev->desc.parallel_user, groups, mote__bin_group, &batch);
+        int stripes = dev->clear_pending ? MOTE__CLEAR_STRIPES : 0;
+        dev->clear_pending = false;
+        mote__batch batch = {dev, gr, groups, dev};
+        dev->desc.parallel_for(dev->desc.parallel_user, groups + stripes, mote__bin_group, &batch);
         bool overflowed = false;
         for (int g = 0; g < groups; g++)
             overflowed |= gr[g].dev.bin.overflowed;
@@ -401,6 +413,8 @@ mote_result mote__bin_run_draws(mote_device *dev)
         }
         mote__bin_top_release(dev, scratch);
     }
+    if (dev->clear_pending)       /* before any triangle reaches a pixel */
+        mote__clear_frame(dev);
     return mote__bin_draws(dev, dev, 0, n);
 }
 
