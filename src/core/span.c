@@ -290,7 +290,6 @@ typedef struct mote__fill_ctx {
     int64_t a0[MOTE__ATTRS];
     uint32_t flat_px;             /* the pixel when nothing varies */
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
-    bool grey;                    /* ... and is the same in all three */
     mote__tex_view tx;
     uint64_t tex_origin[2];       /* mote__texel_pow2: a0 of u and v, times 2^(k-20) */
     int seg_len;
@@ -373,7 +372,9 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 else
                     mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
                                  mote__attr(c->a0[MOTE__A_V], nv, r, k), t);
-                if (MOTE__WIDE_REGISTERS && (shade == MOTE__SHADE_MONO || (shade == MOTE__SHADE_FLAT && c->grey))) {
+                /* a flat shade takes three products: testing for grey at
+                 * every pixel costs what the shared product saves */
+                if (MOTE__WIDE_REGISTERS && shade == MOTE__SHADE_MONO) {
                     mote__modulate_grey(t, sr);
                 } else {
                     t[0] = mote__modulate(t[0], sr);
@@ -493,7 +494,6 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     c.sr = mote__clamp_shade(c.a0[MOTE__A_R]);
     c.sg = mote__clamp_shade(c.a0[MOTE__A_G]);
     c.sb = mote__clamp_shade(c.a0[MOTE__A_B]);
-    c.grey = c.sr == c.sg && c.sg == c.sb;
     c.flat_px = mote__pack(fmt, mote__modulate(255, c.sr), mote__modulate(255, c.sg), mote__modulate(255, c.sb));
     if (tex) {
         c.tx.pixels = (const uint8_t *)rs->texture->pixels;
