@@ -498,7 +498,9 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc);
 mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc);
 
 /* Starts a frame: sets camera and lights, clears colour and depth (full-frame
- * mode; band mode clears each band in mote_end). */
+ * mode; band mode clears each band in mote_end). With parallel_for in binned
+ * mode the clear runs beside the setup of the frame's first draws, before
+ * any pixel is drawn: the buffers hold the frame only after mote_end. */
 mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame);
 
 /* Draws (or records, or bins) one mesh. draw may be NULL. Returns
