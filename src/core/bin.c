@@ -245,7 +245,6 @@ typedef struct mote__batch {
     const mote_device *dev;
     mote__group *groups;
     int group_count;              /* tasks past these are clear stripes */
-    mote_device *clear;
 } mote__batch;
 
 bool mote__bin_defers(const mote_device *dev)
@@ -272,7 +271,7 @@ static void mote__bin_group(void *arg, int g)
 {
     const mote__batch *batch = (const mote__batch *)arg;
     if (g >= batch->group_count) {
-        mote__clear_stripe(batch->clear, g - batch->group_count);
+        mote__clear_stripe(batch->dev, g - batch->group_count);
         return;
     }
     mote__group *gr = &batch->groups[g];
@@ -382,7 +381,7 @@ mote_result mote__bin_run_draws(mote_device *dev)
         mote__bin_plan(dev, gr, groups, n, b->used, b->top);
         int stripes = dev->clear_pending ? MOTE__CLEAR_STRIPES : 0;
         dev->clear_pending = false;
-        mote__batch batch = {dev, gr, groups, dev};
+        mote__batch batch = {dev, gr, groups};
         dev->desc.parallel_for(dev->desc.parallel_user, groups + stripes, mote__bin_group, &batch);
         bool overflowed = false;
         for (int g = 0; g < groups; g++)

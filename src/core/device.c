@@ -203,9 +203,8 @@ void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect
 
 /* ---- the frame ----------------------------------------------------------- */
 
-void mote__clear_stripe(void *arg, int index)
+void mote__clear_stripe(const mote_device *dev, int index)
 {
-    const mote_device *dev = (const mote_device *)arg;
     int h = dev->desc.height;
     mote__target tg;
     mote__counts count = {0, 0};
@@ -252,19 +251,22 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
      * run beside it (mote__bin_run_draws), which touches no pixel. */
     if (MOTE_ENABLE_BINNING && mote__binned(dev))
         mote__bin_begin(dev);
-    dev->clear_pending = false;
-    if (MOTE_ENABLE_BINNING && mote__binned(dev) && mote__bin_defers(dev))
-        dev->clear_pending = true;
-    else if (!mote__band_mode(dev))
+    dev->clear_pending = MOTE_ENABLE_BINNING && mote__binned(dev) && mote__bin_defers(dev);
+    if (!dev->clear_pending && !mote__band_mode(dev))
         mote__clear_frame(dev);
     return MOTE_OK;
+}
+
+static void mote__clear_task(void *arg, int index)
+{
+    mote__clear_stripe((const mote_device *)arg, index);
 }
 
 void mote__clear_frame(mote_device *dev)
 {
     dev->clear_pending = false;
     if (dev->desc.parallel_for)
-        dev->desc.parallel_for(dev->desc.parallel_user, MOTE__CLEAR_STRIPES, mote__clear_stripe, dev);
+        dev->desc.parallel_for(dev->desc.parallel_user, MOTE__CLEAR_STRIPES, mote__clear_task, dev);
     else
         for (int i = 0; i < MOTE__CLEAR_STRIPES; i++)
             mote__clear_stripe(dev, i);

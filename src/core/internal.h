@@ -320,10 +320,10 @@ mote_result mote__bin_run_draws(mote_device *dev);
 void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *counts);
 void mote__add_counts(mote_device *dev, const mote__counts *counts);
 void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect r);
-/* The full-frame clear of mote_begin, as MOTE__CLEAR_STRIPES tasks of
- * whole rows (arg: the device), or all of them now. */
+/* The full-frame clear of mote_begin: stripe index of MOTE__CLEAR_STRIPES
+ * of whole rows, or all of them now. */
 #define MOTE__CLEAR_STRIPES 8
-void mote__clear_stripe(void *arg, int index);
+void mote__clear_stripe(const mote_device *dev, int index);
 void mote__clear_frame(mote_device *dev);
 
 #endif
