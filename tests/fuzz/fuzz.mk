@@ -46,7 +46,7 @@ $(FUZZ_DIR)/obj/%.o: src/%.c $(wildcard include/mote/*.h src/core/*.h src/io/*.h
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
-$(FUZZ_DIR)/obj/fuzz/%.o: tests/fuzz/%.c tests/fuzz/fuzz_entry.h | $(FUZZ_OK)
+$(FUZZ_DIR)/obj/fuzz/%.o: tests/fuzz/%.c tests/fuzz/fuzz_entry.h $(wildcard include/mote/*.h src/core/*.h src/io/*.h) | $(FUZZ_OK)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
