@@ -109,6 +109,48 @@ void gouraud_shading_should_be_within_1_lsb_of_the_reference(void)
     assert_close("Gouraud, 4 sub-pixel bits", &r);
 }
 
+/* A mesh scaled by -1 along one axis (or all three) is mirrored: its front
+ * faces wind the other way on screen and its normals must stay outward.
+ * The spheres of the Gouraud scene are their own mirror images, so each
+ * mirrored render must also look like the plain one (up to the diagonals
+ * of its quads, which the mirror swaps); two negative factors are a
+ * rotation, and must not count as a mirror. */
+void mirrored_meshes_should_cull_and_light_like_their_mirror_images(void)
+{
+    static uint8_t plain_img[W * H * 4], img[W * H * 4];
+    static const float scales[3][3] = {{-1, 1, 1}, {-1, -1, -1}, {1, -1, -1}};
+    static const char *const names[3] = {"mirrored in x", "mirrored through the centre",
+                                          "turned about x (two negative factors)"};
+    tu_scene s;
+    tu_scene_build(TU_SCENE_GOURAUD, MOTE_WRAP_REPEAT, &s);
+    mote_draw_desc d = draw_desc(MOTE_MODE_GOURAUD, MOTE_FILTER_NEAREST, MOTE_PERSPECTIVE_CORRECT);
+    tu_vs_opts o = {W, H, 8, MOTE_DEPTH_FORMAT_32};
+    tu_vs_result plain;
+    TEST_ASSERT_TRUE(tu_vs_ref(&o, &s.frame, s.meshes, s.mesh_count, &d, true, &plain, plain_img, NULL));
+    for (int i = 0; i < 3; i++) {
+        tu_scene_build(TU_SCENE_GOURAUD, MOTE_WRAP_REPEAT, &s);
+        for (int m = 0; m < s.mesh_count; m++)
+            for (int k = 0; k < 3; k++)
+                s.meshes[m].scaling[k] = (s.meshes[m].scaling[k] != 0.0f ? s.meshes[m].scaling[k] : 1.0f)
+                                       * scales[i][k];
+        tu_vs_result r = run(names[i], &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+        assert_close(names[i], &r);
+        TEST_ASSERT_TRUE(tu_vs_ref(&o, &s.frame, s.meshes, s.mesh_count, &d, true, &r, img, NULL));
+        long differ = 0, sum = 0;
+        for (int p = 0; p < W * H * 4; p++) {
+            int e = abs((int)img[p] - (int)plain_img[p]);
+            sum += e;
+            differ += e > 16;
+        }
+        printf("%-44s against the plain render: mean abs %.4f, %ld channels off by more than 16\n",
+               names[i], (double)sum / (W * H * 3), differ);
+        snprintf(msg, sizeof msg, "%s: %ld channels differ from the plain render by more than 16", names[i],
+                 differ);
+        TEST_ASSERT_TRUE_MESSAGE(differ * 200 <= W * H * 3, msg);
+        TEST_ASSERT_TRUE_MESSAGE(sum * 2 <= W * H * 3, names[i]);
+    }
+}
+
 void vertex_colours_should_be_within_1_lsb_of_the_reference_in_every_mode(void)
 {
     static uint8_t plain[W * H * 4], colored[W * H * 4];
@@ -217,6 +259,7 @@ int main(void)
     RUN_TEST(perspective_correct_textures_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(unlit_textures_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(gouraud_shading_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(mirrored_meshes_should_cull_and_light_like_their_mirror_images);
     RUN_TEST(vertex_colours_should_be_within_1_lsb_of_the_reference_in_every_mode);
     RUN_TEST(approximate_perspective_modes_should_report_their_error);
     RUN_TEST(the_depth_test_should_resolve_intersecting_triangles_like_the_reference);

@@ -63,6 +63,17 @@ static long read_all(const char *path, unsigned char *buf, long cap)
         TEST_ASSERT_FLOAT_WITHIN(tol, z, (v)[2]);  \
     } while (0)
 
+/* Loads a scene from JSON text (no folder: colours only), or fails the test
+ * with the loader's message. */
+static void load_json(const char *json, const char *name, mote_scene *s)
+{
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(json, strlen(json), name, NULL, NULL, s,
+                                                              msg, sizeof msg), msg);
+}
+
+/* one triangle's geometry, for scenes written inline */
+#define TRI "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]"
+
 /* ---- the tutorial's monkey -------------------------------------------- */
 
 void loader_should_read_the_tutorial_monkey(void)
@@ -268,8 +279,7 @@ void loader_should_give_transform_nodes_a_mesh_to_be_parents(void)
                     "\"transformNodes\":[{\"id\":\"t\",\"position\":[10,0,0],"
                     "\"parentId\":\"e\"},{\"id\":\"e\",\"scaling\":[1,3,1]}]}";
     mote_scene s;
-    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "t", NULL, NULL, &s,
-                                                              msg, sizeof msg), msg);
+    load_json(j, "t", &s);
     TEST_ASSERT_EQUAL(3, s.mesh_count);
     TEST_ASSERT_EQUAL_PTR(&s.meshes[1], s.meshes[0].parent);
     TEST_ASSERT_EQUAL_PTR(&s.meshes[2], s.meshes[1].parent);
@@ -282,13 +292,151 @@ void loader_should_give_transform_nodes_a_mesh_to_be_parents(void)
     mote_scene_free(&s);
 }
 
+/* Current Babylon.js writes parentId as the parent's numeric uniqueId
+ * (Node._serializeAsParent), also for a parent defined later. */
+void loader_should_resolve_a_numeric_parent_id_by_unique_id(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"child\",\"uniqueId\":7,\"parentId\":5,"
+                    TRI "},"
+                    "{\"id\":\"5\",\"uniqueId\":9},"
+                    "{\"id\":\"root\",\"uniqueId\":5,\"position\":[10,0,0]}]}";
+    mote_scene s;
+    load_json(j, "u", &s);
+    TEST_ASSERT_EQUAL(3, s.mesh_count);
+    /* the uniqueId 5, not the mesh whose id is the string "5" */
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[2], s.meshes[0].parent);
+    ASSERT_VEC3(10.0f, 0.0f, 0.0f, s.bounds_min, 1e-5f);
+    mote_scene_free(&s);
+}
+
+/* isVisible false hides one mesh; isEnabled false hides a mesh and its
+ * children; hidden meshes stay parents, and stay out of the scene box. */
+void loader_should_hide_invisible_and_disabled_meshes(void)
+{
+    const char *j = "{\"meshes\":["
+                    "{\"id\":\"a\",\"isVisible\":false,\"position\":[100,0,0],"
+                    TRI "},"
+                    "{\"id\":\"a-child\",\"parentId\":\"a\","
+                    TRI "},"
+                    "{\"id\":\"b\",\"isEnabled\":false,"
+                    TRI "},"
+                    "{\"id\":\"b-child\",\"parentId\":\"b\",\"isVisible\":true,\"position\":[-50,0,0],"
+                    TRI "},"
+                    "{\"id\":\"c\",\"isVisible\":1,\"isEnabled\":true,"
+                    TRI "}]}";
+    mote_scene s;
+    load_json(j, "h", &s);
+    TEST_ASSERT_EQUAL(5, s.mesh_count);
+    TEST_ASSERT_TRUE(s.meshes[0].hidden);
+    TEST_ASSERT_FALSE(s.meshes[1].hidden);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[0], s.meshes[1].parent);
+    TEST_ASSERT_TRUE(s.meshes[2].hidden);
+    TEST_ASSERT_TRUE(s.meshes[3].hidden);
+    TEST_ASSERT_FALSE(s.meshes[4].hidden);
+    /* the box: c (0..1) and a-child under a (100..101), not b-child at -50 */
+    ASSERT_VEC3(0.0f, 0.0f, 0.0f, s.bounds_min, 1e-5f);
+    ASSERT_VEC3(101.0f, 1.0f, 0.0f, s.bounds_max, 1e-5f);
+    /* mote_draw skips a hidden mesh */
+    static uint8_t color[8 * 8 * 4];
+    mote_device dev;
+    mote_device_desc dd;
+    memset(&dd, 0, sizeof dd);
+    dd.width = dd.height = 8;
+    dd.color = color;
+    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &dd));
+    mote_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.camera.position[2] = -3.0f;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[2], NULL));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_EQUAL_UINT32(0, mote_device_stats(&dev)->draws);
+    mote_scene_free(&s);
+}
+
+/* The texture's invertY says which row v = 0 is; unsaid, the layout does. */
+void loader_should_take_the_texture_row_of_v0_from_invert_y(void)
+{
+    const char *j = "{\"materials\":["
+                    "{\"id\":\"flip\",\"diffuseTexture\":{\"name\":\"t.png\",\"invertY\":true}},"
+                    "{\"id\":\"keep\",\"diffuseTexture\":{\"name\":\"t.png\",\"invertY\":false}},"
+                    "{\"id\":\"unsaid\",\"diffuseTexture\":{\"name\":\"t.png\"}}],"
+                    "\"meshes\":["
+                    "{\"id\":\"a\",\"materialId\":\"flip\",\"positions\":[0,0,0],\"indices\":[]},"
+                    "{\"id\":\"b\",\"materialId\":\"keep\",\"positions\":[0,0,0],\"indices\":[]},"
+                    "{\"id\":\"c\",\"materialId\":\"unsaid\",\"positions\":[0,0,0],\"indices\":[]},"
+                    "{\"id\":\"d\",\"materialId\":\"unsaid\",\"uvCount\":0,\"vertices\":[0,0,0,0,0,1],"
+                    "\"indices\":[]},"
+                    "{\"id\":\"e\",\"materialId\":\"flip\",\"uvCount\":0,\"vertices\":[0,0,0,0,0,1],"
+                    "\"indices\":[]}]}";
+    mote_scene s;
+    load_json(j, "v", &s);
+    TEST_ASSERT_EQUAL(5, s.mesh_count);
+    TEST_ASSERT_TRUE(s.meshes[0].material.v_origin_bottom);
+    TEST_ASSERT_FALSE(s.meshes[1].material.v_origin_bottom);
+    TEST_ASSERT_TRUE(s.meshes[2].material.v_origin_bottom);   /* current layout */
+    TEST_ASSERT_FALSE(s.meshes[3].material.v_origin_bottom);  /* legacy layout */
+    TEST_ASSERT_TRUE(s.meshes[4].material.v_origin_bottom);   /* legacy, said */
+    mote_scene_free(&s);
+}
+
+/* scaling [0,0,0] in a file is a zero scale (the core reads zeros as
+ * "unset"); a light of intensity 0 adds nothing, ground colour included;
+ * a black hemispheric light keeps its ground colour at its intensity. */
+void loader_should_keep_explicit_zeros_of_scale_and_light(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"z\",\"scaling\":[0,0,0],"
+                    TRI "}],"
+                    "\"lights\":[{\"type\":3,\"intensity\":0,\"groundColor\":[1,1,1]},"
+                    "{\"type\":3,\"intensity\":2,\"diffuse\":[0,0,0],\"groundColor\":[0.25,0.5,1]}]}";
+    mote_scene s;
+    load_json(j, "z", &s);
+    float w[16];
+    mote_mesh_world_matrix(&s.meshes[0], w);
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++)
+            TEST_ASSERT_TRUE(fabsf(w[c * 4 + r]) < 1e-20f);
+    TEST_ASSERT_EQUAL(2, s.light_count);
+    /* what each adds to a vertex: intensity x (colour w + ground (1 - w)) */
+    ASSERT_VEC3(0.0f, 0.0f, 0.0f, s.lights[0].ground_color, 0.0f);
+    TEST_ASSERT_TRUE(s.lights[0].intensity * s.lights[0].color[0] < 1e-20f);
+    TEST_ASSERT_EQUAL_FLOAT(2.0f, s.lights[1].intensity);
+    ASSERT_VEC3(0.25f, 0.5f, 1.0f, s.lights[1].ground_color, 0.0f);
+    TEST_ASSERT_TRUE(s.lights[1].color[0] < 1e-20f);
+    mote_scene_free(&s);
+}
+
+/* Meshes naming one geometries.vertexData entry share its arrays: a small
+ * file cannot multiply its memory by naming a big geometry many times. */
+void loader_should_share_a_geometry_between_the_meshes_naming_it(void)
+{
+    const char *j = "{\"geometries\":{\"vertexData\":["
+                    "{\"id\":\"g0\","
+                    TRI "},"
+                    "{\"id\":\"g1\",\"positions\":[0,0,0, 2,0,0, 0,2,0],\"indices\":[0,1,2]},"
+                    "{\"id\":\"g0\",\"positions\":[5,5,5],\"indices\":[]}]},"
+                    "\"meshes\":[{\"id\":\"a\",\"geometryId\":\"g1\"},{\"id\":\"b\",\"geometryId\":\"g0\"},"
+                    "{\"id\":\"c\",\"geometryId\":\"g1\",\"position\":[3,0,0]}]}";
+    mote_scene s;
+    load_json(j, "g", &s);
+    TEST_ASSERT_EQUAL(3, s.mesh_count);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[2].vertices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].indices, s.meshes[2].indices);
+    TEST_ASSERT_EQUAL_FLOAT(2.0f, s.meshes[0].vertices[1].position[0]);
+    /* the first entry of an id wins */
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].vertex_count);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.meshes[1].vertices[1].position[0]);
+    ASSERT_VEC3(5.0f, 2.0f, 0.0f, s.bounds_max, 1e-5f);
+    mote_scene_free(&s);
+}
+
 void loader_should_use_the_first_camera_without_an_active_one(void)
 {
     const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
                     "{\"id\":\"b\",\"position\":[9,9,9]}]}";
     mote_scene s;
-    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "c", NULL, NULL, &s,
-                                                              msg, sizeof msg), msg);
+    load_json(j, "c", &s);
     TEST_ASSERT_TRUE(s.has_camera);
     ASSERT_VEC3(1.0f, 2.0f, 3.0f, s.camera.position, 0.0f);
     TEST_ASSERT_EQUAL_FLOAT(0.8f, s.camera.fov); /* absent: the default */
@@ -301,8 +449,7 @@ void frame_should_look_at_the_box_from_the_front_top_right_without_a_camera(void
     const char *j = "{\"meshes\":[{\"id\":\"m\",\"positions\":[-1,-1,-1, 1,1,1, 1,-1,1],"
                     "\"indices\":[0,1,2]}]}";
     mote_scene s;
-    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "f", NULL, NULL, &s,
-                                                              msg, sizeof msg), msg);
+    load_json(j, "f", &s);
     TEST_ASSERT_FALSE(s.has_camera);
     TEST_ASSERT_EQUAL(0, s.light_count);
     mote_frame_desc f;
@@ -560,6 +707,11 @@ int main(void)
     RUN_TEST(loader_should_keep_the_monkeys_first_vertex_exactly);
     RUN_TEST(loader_should_read_the_current_layout_with_exact_fields);
     RUN_TEST(loader_should_give_transform_nodes_a_mesh_to_be_parents);
+    RUN_TEST(loader_should_resolve_a_numeric_parent_id_by_unique_id);
+    RUN_TEST(loader_should_hide_invisible_and_disabled_meshes);
+    RUN_TEST(loader_should_take_the_texture_row_of_v0_from_invert_y);
+    RUN_TEST(loader_should_keep_explicit_zeros_of_scale_and_light);
+    RUN_TEST(loader_should_share_a_geometry_between_the_meshes_naming_it);
     RUN_TEST(loader_should_use_the_first_camera_without_an_active_one);
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     RUN_TEST(texture_should_round_trip_a_png_exactly);

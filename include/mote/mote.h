@@ -296,6 +296,7 @@ typedef struct mote_mesh {
     float rotation[3];
     float rotation_quaternion[4];
     bool use_quaternion;
+    bool hidden;                  /* mote_draw draws nothing; still a parent */
     float scaling[3];
     const struct mote_mesh *parent;
     mote_material material;
@@ -398,7 +399,10 @@ typedef enum mote_cull {
 typedef struct mote_draw_desc {
     mote_mode mode;
     mote_cull cull;
-    mote_front_face front_face;   /* which screen winding is the front */
+    mote_front_face front_face;   /* which screen winding is the front; a mesh
+                                     whose world matrix mirrors (negative
+                                     determinant) has the other one, as in
+                                     Babylon.js, and its normals stay outward */
     mote_perspective perspective;
     int subspan_log2;             /* for SUBSPAN: 0 = 3 (8 pixels), at most 6 */
     mote_filter filter;
@@ -503,7 +507,8 @@ mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc);
  * any pixel is drawn: the buffers hold the frame only after mote_end. */
 mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame);
 
-/* Draws (or records, or bins) one mesh. draw may be NULL. Returns
+/* Draws (or records, or bins) one mesh; a hidden one is skipped (MOTE_OK).
+ * draw may be NULL. Returns
  * MOTE_ERR_UNSUPPORTED, drawing nothing, for a mode, filter or perspective
  * that the library was built without (see MOTE_ENABLE_LINES, _BILINEAR,
  * _SUBSPAN), or for a mesh with colors in a build without

@@ -62,7 +62,7 @@ typedef struct mote_scene {
     int light_count;
     float ambient[3];
     mote_rgba clear_color;
-    float bounds_min[3], bounds_max[3]; /* world space, over all meshes */
+    float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
     char warning[256];            /* non-fatal notes (downgraded textures, ...) */
     void *storage_;               /* private: owned allocations */
 } mote_scene;
@@ -70,7 +70,11 @@ typedef struct mote_scene {
 /* Loads a .babylon file, either layout: the legacy interleaved `vertices`
  * (stride 6/8/10 by uvCount) or the current `positions`/`normals`/`uvs`/
  * `colors` (4 or 3 floats per vertex, 0..1, into mote_mesh.colors).
- * Textures resolve relative to the scene's folder. limits may be NULL. */
+ * Textures resolve relative to the scene's folder. limits may be NULL.
+ * A mesh with isVisible false, or isEnabled false on it or a parent, loads
+ * hidden (mote_mesh.hidden); a numeric parentId names a node's uniqueId
+ * (current Babylon.js); a texture's invertY says whether v = 0 is its
+ * bottom row (unsaid: the bottom row, but the top one in legacy files). */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures

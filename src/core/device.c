@@ -288,6 +288,8 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
         return MOTE_ERR_STATE;
     if ((mesh->vertex_count > 0 && !mesh->vertices) || (mesh->index_count > 0 && !mesh->indices))
         return MOTE_ERR_INVALID_ARGUMENT;
+    if (mesh->hidden)
+        return MOTE_OK;
     mote_draw_desc d;
     mote_result r = mote__resolve_draw_desc(draw, mesh, &d);
     if (r != MOTE_OK)

@@ -58,7 +58,7 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
     for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
         const mote_light *l = &f->lights[i];
         float col[3] = {l->color[0], l->color[1], l->color[2]};
-        if (col[0] == 0.0f && col[1] == 0.0f && col[2] == 0.0f)
+        if (mote__zero3(col))
             col[0] = col[1] = col[2] = 1.0f;
         float k = l->intensity != 0.0f ? l->intensity : 1.0f;
         float L[3];
@@ -701,9 +701,11 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     cx.region = region;
     dev->stats.draws++;
 
-    mote_mesh_world_matrix(mesh, cx.world);
+    /* a mirroring transform reverses the screen winding of front faces
+     * (as Babylon.js and three.js take it): culling follows */
+    bool mirrored = mote__world_matrix(mesh, cx.world);
     mote__mat4_mul(dev->view_proj, cx.world, cx.mvp);
-    mote__normal_matrix(cx.world, cx.nrm);
+    mote__normal_matrix(cx.world, mirrored, cx.nrm);
     if (mote__mesh_outside(&cx)) {
         dev->stats.meshes_culled++;
         return MOTE_OK;
@@ -731,7 +733,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     cx.flat = mode == MOTE_MODE_FLAT && (cx.lit || colored);
     /* per-vertex shades: lit, or vertex colours even unlit */
     rs_local.gouraud = (cx.lit || colored) && !cx.flat;
-    bool front_cw = cx.d.front_face == MOTE_FRONT_CW;
+    bool front_cw = (cx.d.front_face == MOTE_FRONT_CW) != mirrored;
     cx.cull_cw = cx.d.cull == (front_cw ? MOTE_CULL_FRONT : MOTE_CULL_BACK);
     cx.cull_ccw = cx.d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);
     rs_local.tex = MOTE__TEX_NONE;

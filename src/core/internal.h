@@ -73,7 +73,10 @@ void mote__mat4_mul(const float a[16], const float b[16], float out[16]);
 void mote__mat4_point(const float m[16], const float p[3], float out[4]);
 /* Inverse-transpose of the upper 3x3 up to scale (the cofactor matrix, for
  * normals), row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
-void mote__normal_matrix(const float m[16], float out[9]);
+/* normals' matrix (the cofactors) of a world matrix, oriented outward */
+void mote__normal_matrix(const float m[16], bool mirrors, float out[9]);
+/* mote_mesh_world_matrix; returns whether it mirrors (negative determinant) */
+bool mote__world_matrix(const mote_mesh *mesh, float world[16]);
 void mote__cross3(const float a[3], const float b[3], float out[3]);
 float mote__sqrtf(float x);
 float mote__rsqrtf(float x);   /* 0 for 0, negative, NaN, Inf */
@@ -90,6 +93,12 @@ static inline uint32_t mote__float_bits(float x)
 static inline bool mote__finite(float x)
 {
     return (mote__float_bits(x) & 0x7f800000u) != 0x7f800000u;
+}
+
+/* whether all three are zero (either sign): the "unset" of a vector */
+static inline bool mote__zero3(const float v[3])
+{
+    return ((mote__float_bits(v[0]) | mote__float_bits(v[1]) | mote__float_bits(v[2])) << 1) == 0;
 }
 
 static inline float mote__dot3(const float a[3], const float b[3])

@@ -123,16 +123,21 @@ void mote__mat4_point(const float m[16], const float p[3], float out[4])
     memcpy(out, r, sizeof r);
 }
 
-void mote__normal_matrix(const float m[16], float out[9])
+void mote__normal_matrix(const float m[16], bool mirrors, float out[9])
 {
     /* cofactors of the upper 3x3 = inverse-transpose times the determinant;
-     * the scale does not matter because normals are normalised afterwards.
-     * With indices taken cyclically the 3x3 cofactor signs come out alone. */
+     * the scale does not matter because normals are normalised afterwards,
+     * but the sign does: for a mirroring matrix (negative determinant) the
+     * products are subtracted the other way round, or every normal would
+     * point inward. With indices taken cyclically the 3x3 cofactor signs
+     * come out alone. */
 #define M(r, c) m[(c) * 4 + (r)]
     /* r1, r2 and c1, c2: the next two indices after r and c, cyclically */
     for (int r = 0, r1 = 1, r2 = 2; r < 3; r1 = r2, r2 = r, r++)
-        for (int c = 0, c1 = 1, c2 = 2; c < 3; c1 = c2, c2 = c, c++)
-            out[r * 3 + c] = M(r1, c1) * M(r2, c2) - M(r1, c2) * M(r2, c1);
+        for (int c = 0, c1 = 1, c2 = 2; c < 3; c1 = c2, c2 = c, c++) {
+            float a = M(r1, c1) * M(r2, c2), b = M(r1, c2) * M(r2, c1);
+            out[r * 3 + c] = mirrors ? b - a : a - b;
+        }
 #undef M
 }
 
@@ -169,8 +174,10 @@ static void mote__euler_quat(const float r[3], float q[4])
     }
 }
 
-/* translate(position) * rotate * scale(scaling) of one mesh */
-static void mote__local_matrix(const mote_mesh *mesh, float m[16])
+/* translate(position) * rotate * scale(scaling) of one mesh; returns
+ * whether it mirrors: an odd number of negative scale factors (a rotation
+ * never does), read from the sign bits */
+static bool mote__local_matrix(const mote_mesh *mesh, float m[16])
 {
     float q[4];
     if (mesh->use_quaternion)
@@ -179,25 +186,32 @@ static void mote__local_matrix(const mote_mesh *mesh, float m[16])
         mote__euler_quat(mesh->rotation, q);
     mote__quat_matrix(q, m);
     const float *sc = mesh->scaling;
-    bool unset = sc[0] == 0.0f && sc[1] == 0.0f && sc[2] == 0.0f;
+    bool unset = mote__zero3(sc);
     for (int c = 0; c < 3; c++)
         for (int r = 0; r < 3; r++)
             m[c * 4 + r] *= unset ? 1.0f : sc[c];
     m[12] = mesh->position[0];
     m[13] = mesh->position[1];
     m[14] = mesh->position[2];
+    return !unset && (mote__float_bits(sc[0]) ^ mote__float_bits(sc[1]) ^ mote__float_bits(sc[2])) >> 31;
 }
 
-void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
+bool mote__world_matrix(const mote_mesh *mesh, float world[16])
 {
-    mote__local_matrix(mesh, world);
+    bool mirrors = mote__local_matrix(mesh, world);
     /* Parents are applied iteratively (bounded) so a cyclic chain cannot recurse forever. */
     const mote_mesh *p = mesh->parent;
     for (int depth = 0; p && depth < 64; depth++, p = p->parent) {
         float pm[16];
-        mote__local_matrix(p, pm);
+        mirrors ^= mote__local_matrix(p, pm);
         mote__mat4_mul(pm, world, world);
     }
+    return mirrors;
+}
+
+void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
+{
+    mote__world_matrix(mesh, world);
 }
 
 static void mote__normalize3(float v[3])
@@ -221,14 +235,14 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16])
 {
     /* Left-handed look-at (Babylon's LookAtLH): z toward the target. */
     vec3 up = {camera->up[0], camera->up[1], camera->up[2]};
-    if (up[0] == 0.0f && up[1] == 0.0f && up[2] == 0.0f)
+    if (mote__zero3(up))
         up[1] = 1.0f;
     vec3 z = {camera->target[0] - camera->position[0], camera->target[1] - camera->position[1],
               camera->target[2] - camera->position[2]};
     mote__normalize3(z);
     vec3 x, y;
     mote__cross3(up, z, x);
-    if (x[0] == 0.0f && x[1] == 0.0f && x[2] == 0.0f) {
+    if (mote__zero3(x)) {
         /* up parallel to the view direction: pick another up */
         vec3 alt = {0.0f, 0.0f, 1.0f};
         if (z[2] > 0.9f || z[2] < -0.9f) {

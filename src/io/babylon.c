@@ -75,6 +75,7 @@ static void *mote__store_alloc(mote__store *s, size_t count, size_t size)
 typedef struct mote__mat {
     const char *id;
     mote_material material;
+    signed char invert_y;         /* the texture's invertY: 0, 1, or -1 (not said) */
 } mote__mat;
 
 typedef struct mote__multi {
@@ -90,7 +91,9 @@ typedef struct mote__sub {
 
 typedef struct mote__node {
     const char *id;
-    const char *parent_id;
+    const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
+    const char *parent_id;        /* an id, or a uniqueId as text (parent_by_unique) */
+    bool parent_by_unique;        /* parentId was a number: Babylon.js writes the parent's uniqueId */
     const char *material_id;
     char where[48];               /* "meshes[3]" or "transformNodes[0]" */
     int parent;                   /* node index, -1: none */
@@ -98,6 +101,7 @@ typedef struct mote__node {
     int first_mesh, mesh_count;
     float position[3], rotation[3], quat[4], scaling[3];
     bool use_quat;
+    bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     mote_vertex *verts;
     uint32_t nv;
@@ -107,6 +111,14 @@ typedef struct mote__node {
     mote__sub *subs;
     int sub_count;
 } mote__node;
+
+/* An entry of geometries.vertexData, parsed by the first mesh that names
+ * it; later ones share its arrays. */
+typedef struct mote__geometry {
+    const char *id;
+    const cJSON *json;
+    int owner;                    /* the node holding its arrays, -1: none yet */
+} mote__geometry;
 
 /* An id -> index map: a count, then sorted (id, index) pairs; the first of
  * equal ids wins. */
@@ -131,7 +143,9 @@ typedef struct mote__ld {
     mote__multi *multis;
     int multi_count;
     mote__idmap *multi_map;
-    const cJSON *vertex_data;     /* geometries.vertexData */
+    mote__geometry *geometries;   /* geometries.vertexData */
+    int geometry_count;
+    mote__idmap *geometry_map;
     mote__node *nodes;
     int node_count;
     mote__idmap *node_map;
@@ -292,6 +306,26 @@ static R mote__num(mote__ld *ld, const cJSON *obj, const char *key, const char *
     return mote__to_float(ld, v, at, out);
 }
 
+/* key -> a true/false flag (a boolean, or a number: 0 is false); absent
+ * keeps *out. */
+static R mote__flag(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                    bool *out)
+{
+    const cJSON *v = mote__get(obj, key);
+    if (!v)
+        return MOTE_OK;
+    if (cJSON_IsBool(v)) {
+        *out = cJSON_IsTrue(v);
+        return MOTE_OK;
+    }
+    char at[160];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    float f;
+    MOTE__TRY(mote__to_float(ld, v, at, &f));
+    *out = f != 0.0f;
+    return MOTE_OK;
+}
+
 /* key -> string or NULL; anything else is an error. */
 static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
                    const char **out)
@@ -304,6 +338,29 @@ static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *
         return mote__fail(ld, MOTE_ERR_PARSE, "%s.%s: expected a string, found %s", where,
                           key, mote__type_name(v));
     *out = v->valuestring;
+    return MOTE_OK;
+}
+
+/* key -> a number's text ("%.17g", so equal numbers give equal text) or
+ * NULL (absent); anything else is an error. For numeric ids. */
+static R mote__number_text(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                           const char **out)
+{
+    const cJSON *v = mote__get(obj, key);
+    *out = NULL;
+    if (!v)
+        return MOTE_OK;
+    char at[160];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    float unused;
+    MOTE__TRY(mote__to_float(ld, v, at, &unused));   /* a finite number */
+    char text[32];
+    int n = snprintf(text, sizeof text, "%.17g", v->valuedouble);
+    char *copy = mote__store_alloc(&ld->tmp, (size_t)n + 1, 1);
+    if (!copy)
+        return mote__oom(ld, at);
+    memcpy(copy, text, (size_t)n + 1);
+    *out = copy;
     return MOTE_OK;
 }
 
@@ -414,7 +471,7 @@ static bool mote__path_escapes(const char *name, const char **why)
 
 /* Loads (once per resolved path) the texture a material names. */
 static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
-                                mote_material *m)
+                                mote_material *m, signed char *invert_y)
 {
     MOTE__TRY(mote__obj_at(ld, tex, at));
     const char *name;
@@ -428,6 +485,11 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
     MOTE__TRY(mote__num(ld, tex, "vScale", at, &m->v_scale));
     MOTE__TRY(mote__num(ld, tex, "uOffset", at, &m->u_offset));
     MOTE__TRY(mote__num(ld, tex, "vOffset", at, &m->v_offset));
+    if (mote__get(tex, "invertY")) {
+        bool inv = true;
+        MOTE__TRY(mote__flag(ld, tex, "invertY", at, &inv));
+        *invert_y = inv;
+    }
     static const char *const wrap_keys[2] = {"wrapU", "wrapV"};
     for (int k = 0; k < 2; k++) {
         const cJSON *w = mote__get(tex, wrap_keys[k]);
@@ -534,6 +596,7 @@ static R mote__materials(mote__ld *ld)
         snprintf(at, sizeof at, "materials[%d]", i);
         MOTE__TRY(mote__obj_at(ld, m, at));
         mote__mat *mm = &ld->mats[i];
+        mm->invert_y = -1;
         MOTE__TRY(mote__str(ld, m, "id", at, &mm->id));
         if (!mm->id)
             MOTE__TRY(mote__str(ld, m, "name", at, &mm->id));
@@ -576,7 +639,7 @@ static R mote__materials(mote__ld *ld)
                 continue;
             char at2[96];
             snprintf(at2, sizeof at2, "%s.%s", at, tex_keys[k]);
-            MOTE__TRY(mote__material_texture(ld, t, at2, &mm->material));
+            MOTE__TRY(mote__material_texture(ld, t, at2, &mm->material, &mm->invert_y));
             break;
         }
     }
@@ -956,12 +1019,27 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
     MOTE__TRY(mote__str(ld, mesh, "id", where, &nd->id));
     if (!nd->id)
         MOTE__TRY(mote__str(ld, mesh, "name", where, &nd->id));
-    MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
+    MOTE__TRY(mote__number_text(ld, mesh, "uniqueId", where, &nd->unique_id));
+    /* a parent's id, or (current Babylon.js) its uniqueId */
+    nd->parent_by_unique = cJSON_IsNumber(mote__get(mesh, "parentId"));
+    if (nd->parent_by_unique)
+        MOTE__TRY(mote__number_text(ld, mesh, "parentId", where, &nd->parent_id));
+    else
+        MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
     MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__vec(ld, mesh, "position", where, 3, 0, nd->position));
     MOTE__TRY(mote__vec(ld, mesh, "rotation", where, 3, 0, nd->rotation));
     nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
     MOTE__TRY(mote__vec(ld, mesh, "scaling", where, 3, 0, nd->scaling));
+    /* the core reads {0,0,0} as "unset" (1): an explicit zero scale gets
+     * one so small that the mesh, and its children, collapse to a point */
+    if (nd->scaling[0] == 0.0f && nd->scaling[1] == 0.0f && nd->scaling[2] == 0.0f)
+        nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1e-30f;
+    bool visible = true, enabled = true;
+    MOTE__TRY(mote__flag(ld, mesh, "isVisible", where, &visible));
+    MOTE__TRY(mote__flag(ld, mesh, "isEnabled", where, &enabled));
+    nd->invisible = !visible;
+    nd->disabled = !enabled;
     if (mote__get(mesh, "rotationQuaternion")) {
         MOTE__TRY(mote__vec(ld, mesh, "rotationQuaternion", where, 4, 0, nd->quat));
         nd->use_quat = true;
@@ -979,20 +1057,25 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
     } else if (pos) {
         MOTE__TRY(mote__current_geometry(ld, mesh, where, nd));
     } else if (geometry_id) {
-        int k = 0;
-        const cJSON *g = ld->vertex_data ? ld->vertex_data->child : NULL;
-        for (; g; g = g->next, k++) {
-            const cJSON *gid = cJSON_GetObjectItemCaseSensitive(g, "id");
-            if (cJSON_IsString(gid) && strcmp(gid->valuestring, geometry_id) == 0)
-                break;
-        }
-        if (!g)
+        int k = mote__idmap_find(ld->geometry_map, geometry_id);
+        if (k < 0)
             return mote__fail(ld, MOTE_ERR_RANGE,
                               "%s.geometryId: \"%s\" names no geometries.vertexData entry",
                               where, mote__quote(geometry_id).s);
-        char gat[64];
-        snprintf(gat, sizeof gat, "geometries.vertexData[%d]", k);
-        MOTE__TRY(mote__current_geometry(ld, g, gat, nd));
+        mote__geometry *g = &ld->geometries[k];
+        if (g->owner >= 0) {      /* parsed once: meshes share it (no copies) */
+            const mote__node *o = &ld->nodes[g->owner];
+            nd->verts = o->verts;
+            nd->nv = o->nv;
+            nd->colors = o->colors;
+            nd->idx = o->idx;
+            nd->ni = o->ni;
+        } else {
+            char gat[64];
+            snprintf(gat, sizeof gat, "geometries.vertexData[%d]", k);
+            MOTE__TRY(mote__current_geometry(ld, g->json, gat, nd));
+            g->owner = (int)(nd - ld->nodes);
+        }
     } else {
         const cJSON *ind;
         MOTE__TRY(mote__arr(ld, mesh, "indices", where, &ind));
@@ -1013,8 +1096,25 @@ static R mote__nodes(mote__ld *ld)
     MOTE__TRY(mote__arr(ld, ld->root, "meshes", "", &meshes));
     MOTE__TRY(mote__arr(ld, ld->root, "transformNodes", "", &tnodes));
     if (geos) {
+        const cJSON *vertex_data;
         MOTE__TRY(mote__obj_at(ld, geos, "geometries"));
-        MOTE__TRY(mote__arr(ld, geos, "vertexData", "geometries", &ld->vertex_data));
+        MOTE__TRY(mote__arr(ld, geos, "vertexData", "geometries", &vertex_data));
+        size_t ng = mote__array_len(vertex_data);
+        ld->geometries = mote__store_alloc(&ld->tmp, ng + 1, sizeof *ld->geometries);
+        if (!ld->geometries)
+            return mote__oom(ld, "geometries");
+        for (const cJSON *g = vertex_data ? vertex_data->child : NULL; g; g = g->next) {
+            const cJSON *gid = cJSON_GetObjectItemCaseSensitive(g, "id");
+            mote__geometry *e = &ld->geometries[ld->geometry_count++];
+            e->id = cJSON_IsString(gid) ? gid->valuestring : NULL;
+            e->json = g;
+            e->owner = -1;
+        }
+        int dup;
+        ld->geometry_map = mote__idmap_build(ld, &ld->geometries[0].id, sizeof *ld->geometries,
+                                             ld->geometry_count, &dup);
+        if (!ld->geometry_map)
+            return mote__oom(ld, "geometries");
     }
     size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes);
     if (nm + nt > ld->lim.max_meshes)
@@ -1049,13 +1149,22 @@ static R mote__parents(mote__ld *ld)
     int dup;
     ld->node_map = mote__idmap_build(ld, &ld->nodes[0].id, sizeof *ld->nodes, ld->node_count,
                                      &dup);
-    if (!ld->node_map)
+    mote__idmap *unique_map = mote__idmap_build(ld, &ld->nodes[0].unique_id, sizeof *ld->nodes,
+                                                ld->node_count, &dup);
+    if (!ld->node_map || !unique_map)
         return mote__oom(ld, "meshes");
     for (int i = 0; i < ld->node_count; i++) {
         mote__node *nd = &ld->nodes[i];
         nd->parent = -1;
         if (!nd->parent_id)
             continue;
+        if (nd->parent_by_unique) {
+            nd->parent = mote__idmap_find(unique_map, nd->parent_id);
+            if (nd->parent < 0)
+                return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: %s is the uniqueId of no "
+                                  "mesh or transform node", nd->where, nd->parent_id);
+            continue;
+        }
         nd->parent = mote__idmap_find(ld->node_map, nd->parent_id);
         if (nd->parent < 0)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
@@ -1087,30 +1196,41 @@ static R mote__parents(mote__ld *ld)
 
 /* The material of one sub-mesh: a material, a multi-material slot, or the
  * default (white) with a warning when the id names nothing. */
-static mote_material mote__resolve_material(mote__ld *ld, const mote__node *nd,
-                                            uint32_t material_index)
+/* The material of a (sub-)mesh, or NULL for the default one. */
+static const mote__mat *mote__resolve_material(mote__ld *ld, const mote__node *nd,
+                                               uint32_t material_index)
 {
-    mote_material none;
-    memset(&none, 0, sizeof none);
     if (!nd->material_id)
-        return none;
+        return NULL;
     int m = mote__idmap_find(ld->mat_map, nd->material_id);
     if (m >= 0)
-        return ld->mats[m].material;
+        return &ld->mats[m];
     int mm = mote__idmap_find(ld->multi_map, nd->material_id);
     if (mm < 0) {
         mote__warn(ld, "%s.materialId: \"%s\" names no material", nd->where,
                    mote__quote(nd->material_id).s);
-        return none;
+        return NULL;
     }
     const mote__multi *multi = &ld->multis[mm];
     if (material_index >= (uint32_t)multi->slot_count) {
         mote__warn(ld, "%s: materialIndex %u is past the %d materials of \"%s\"", nd->where,
                    (unsigned)material_index, multi->slot_count, mote__quote(multi->id).s);
-        return none;
+        return NULL;
     }
     int slot = multi->slots[material_index];
-    return slot >= 0 ? ld->mats[slot].material : none;
+    return slot >= 0 ? &ld->mats[slot] : NULL;
+}
+
+/* Whether a node is drawn: not if it is invisible, or it or a parent is
+ * disabled (chains are finite and short: mote__parents). */
+static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
+{
+    if (nd->invisible)
+        return true;
+    for (; nd; nd = nd->parent >= 0 ? &ld->nodes[nd->parent] : NULL)
+        if (nd->disabled)
+            return true;
+    return false;
 }
 
 static R mote__build_meshes(mote__ld *ld)
@@ -1152,18 +1272,23 @@ static R mote__build_meshes(mote__ld *ld)
             m->use_quaternion = nd->use_quat;
             memcpy(m->scaling, nd->scaling, sizeof m->scaling);
             m->parent = nd->parent >= 0 ? &sc->meshes[ld->nodes[nd->parent].first_mesh] : NULL;
-            m->material = mote__resolve_material(ld, nd, material_index);
-            /* legacy files (the tutorial's) address the top row with v = 0;
-             * current exporters rely on Babylon.js's invertY */
-            m->material.v_origin_bottom = !nd->legacy;
+            const mote__mat *mat = mote__resolve_material(ld, nd, material_index);
+            if (mat)
+                m->material = mat->material;
+            /* v = 0: the bottom row when the texture says invertY (what
+             * Babylon.js does by default, and current exporters rely on),
+             * the top row when it says not; unsaid, legacy files (the
+             * tutorial's) address the top row, current ones the bottom */
+            m->material.v_origin_bottom = mat && mat->invert_y >= 0 ? mat->invert_y != 0 : !nd->legacy;
+            m->hidden = mote__node_hidden(ld, nd);
             mote_mesh_update_bounds(m);
         }
     }
-    /* world-space box over every vertex (once per node: sub-meshes share) */
+    /* world-space box over every drawn vertex (once per node: sub-meshes share) */
     bool any = false;
     for (int i = 0; i < ld->node_count; i++) {
         const mote__node *nd = &ld->nodes[i];
-        if (nd->nv == 0)
+        if (nd->nv == 0 || sc->meshes[nd->first_mesh].hidden)
             continue;
         float w[16];
         mote_mesh_world_matrix(&sc->meshes[nd->first_mesh], w);
@@ -1293,13 +1418,18 @@ static R mote__lights(mote__ld *ld)
         MOTE__TRY(mote__num(ld, l, "intensity", at, &intensity));
         memcpy(L.color, color, sizeof color);
         L.intensity = intensity;
-        /* the core reads 0 as "default": a black or zero-intensity light
-         * gets a colour so small that it adds nothing */
+        /* the core reads 0 as "default": a black light gets a colour so
+         * small that it adds nothing (a hemispheric one keeps its ground
+         * colour at its intensity); a light of intensity 0 adds nothing at
+         * all, ground included */
         if ((color[0] == 0.0f && color[1] == 0.0f && color[2] == 0.0f) ||
             intensity == 0.0f) {
             L.color[0] = 1e-30f;
             L.color[1] = L.color[2] = 0.0f;
+        }
+        if (intensity == 0.0f) {
             L.intensity = 1.0f;
+            memset(L.ground_color, 0, sizeof L.ground_color);
         }
         if (sc->light_count >= MOTE_MAX_LIGHTS) {
             mote__warn(ld, "%s: more than %d lights; this one is ignored", at,

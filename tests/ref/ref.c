@@ -681,7 +681,14 @@ bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
             int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (col + 1) % 3, c2 = (col + 2) % 3;
             c.nrm[r * 3 + col] = M(r1, c1) * M(r2, c2) - M(r1, c2) * M(r2, c1);
         }
+    /* a mirroring matrix (negative determinant): the cofactors point
+     * normals inward, and front faces have the other screen winding */
+    double det = M(0, 0) * c.nrm[0] + M(0, 1) * c.nrm[1] + M(0, 2) * c.nrm[2];
 #undef M
+    bool mirrored = det < 0.0;
+    if (mirrored)
+        for (int i = 0; i < 9; i++)
+            c.nrm[i] = -c.nrm[i];
     const mote_material *mat = &mesh->material;
     for (int k = 0; k < 3; k++)
         c.color[k] = mat->color_set ? (double)(&mat->color.r)[k] / 255.0 : 1.0;
@@ -736,7 +743,7 @@ bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
                 continue;
             }
             bool clockwise = area > 0;    /* y down */
-            bool front = c.d.front_face == MOTE_FRONT_CW ? clockwise : !clockwise;
+            bool front = (c.d.front_face == MOTE_FRONT_CW) != mirrored ? clockwise : !clockwise;
             if ((cull == MOTE_CULL_BACK && !front) || (cull == MOTE_CULL_FRONT && front)) {
                 t->triangles_culled++;
                 continue;
