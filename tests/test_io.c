@@ -431,6 +431,40 @@ void loader_should_share_a_geometry_between_the_meshes_naming_it(void)
     mote_scene_free(&s);
 }
 
+/* instances: the source's geometry, material and sub-meshes, with their
+ * own transform, parent and visibility, after the meshes and transform
+ * nodes */
+void loader_should_draw_a_mesh_again_for_each_of_its_instances(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"red\",\"diffuse\":[1,0,0]}],"
+                    "\"meshes\":[{\"id\":\"src\",\"materialId\":\"red\"," TRI ","
+                    "\"subMeshes\":[{\"materialIndex\":0,\"verticesStart\":0,\"verticesCount\":3,"
+                    "\"indexStart\":0,\"indexCount\":3}],"
+                    "\"instances\":[{\"name\":\"i0\",\"position\":[5,0,0],\"scaling\":[2,2,2]},"
+                    "{\"name\":\"i1\",\"parentId\":\"t\",\"isVisible\":false,\"rotationQuaternion\":[0,0,0,1]}]}],"
+                    "\"transformNodes\":[{\"id\":\"t\",\"position\":[0,7,0]}]}";
+    mote_scene s;
+    load_json(j, "i", &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
+    for (int k = 2; k < 4; k++) {
+        TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[k].vertices);
+        TEST_ASSERT_EQUAL_PTR(s.meshes[0].indices, s.meshes[k].indices);
+        TEST_ASSERT_EQUAL_UINT32(3, s.meshes[k].index_count);
+        TEST_ASSERT_EQUAL_UINT8(255, s.meshes[k].material.color.r);
+        TEST_ASSERT_EQUAL_UINT8(0, s.meshes[k].material.color.g);
+    }
+    ASSERT_VEC3(5.0f, 0.0f, 0.0f, s.meshes[2].position, 0.0f);
+    ASSERT_VEC3(2.0f, 2.0f, 2.0f, s.meshes[2].scaling, 0.0f);
+    TEST_ASSERT_NULL(s.meshes[2].parent);
+    TEST_ASSERT_FALSE(s.meshes[2].hidden);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[1], s.meshes[3].parent);
+    TEST_ASSERT_TRUE(s.meshes[3].use_quaternion);
+    TEST_ASSERT_TRUE(s.meshes[3].hidden);
+    /* the box: the source (0..1) and i0 at 5, twice as large (5..7) */
+    ASSERT_VEC3(7.0f, 2.0f, 0.0f, s.bounds_max, 1e-5f);
+    mote_scene_free(&s);
+}
+
 void loader_should_use_the_first_camera_without_an_active_one(void)
 {
     const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
@@ -712,6 +746,7 @@ int main(void)
     RUN_TEST(loader_should_take_the_texture_row_of_v0_from_invert_y);
     RUN_TEST(loader_should_keep_explicit_zeros_of_scale_and_light);
     RUN_TEST(loader_should_share_a_geometry_between_the_meshes_naming_it);
+    RUN_TEST(loader_should_draw_a_mesh_again_for_each_of_its_instances);
     RUN_TEST(loader_should_use_the_first_camera_without_an_active_one);
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     RUN_TEST(texture_should_round_trip_a_png_exactly);

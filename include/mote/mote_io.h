@@ -74,7 +74,9 @@ typedef struct mote_scene {
  * A mesh with isVisible false, or isEnabled false on it or a parent, loads
  * hidden (mote_mesh.hidden); a numeric parentId names a node's uniqueId
  * (current Babylon.js); a texture's invertY says whether v = 0 is its
- * bottom row (unsaid: the bottom row, but the top one in legacy files). */
+ * bottom row (unsaid: the bottom row, but the top one in legacy files).
+ * A mesh's instances become meshes of their own after the file's meshes
+ * and transform nodes, sharing its arrays and material. */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures

@@ -19,7 +19,9 @@
  * - Duplicate material ids: the first wins, with a warning.
  * - A materialId (or multi-material slot) naming nothing: default white
  *   material, with a warning. A parentId naming nothing is an error.
- * - Materials and multi-materials count against limits.max_meshes too.
+ * - Materials and multi-materials count against limits.max_meshes too, and
+ *   so do transform nodes and instances.
+ * - Meshes naming one geometryId, and a mesh's instances, share its arrays.
  */
 #include "io_internal.h"
 
@@ -1012,8 +1014,8 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
     return MOTE_OK;
 }
 
-/* One entry of meshes[] or transformNodes[]. */
-static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
+/* What every node has: its ids, parent, transform and visibility. */
+static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
 {
     MOTE__TRY(mote__obj_at(ld, mesh, where));
     MOTE__TRY(mote__str(ld, mesh, "id", where, &nd->id));
@@ -1026,7 +1028,6 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
         MOTE__TRY(mote__number_text(ld, mesh, "parentId", where, &nd->parent_id));
     else
         MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
-    MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__vec(ld, mesh, "position", where, 3, 0, nd->position));
     MOTE__TRY(mote__vec(ld, mesh, "rotation", where, 3, 0, nd->rotation));
     nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
@@ -1044,6 +1045,14 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
         MOTE__TRY(mote__vec(ld, mesh, "rotationQuaternion", where, 4, 0, nd->quat));
         nd->use_quat = true;
     }
+    return MOTE_OK;
+}
+
+/* One entry of meshes[] or transformNodes[]. */
+static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
+{
+    MOTE__TRY(mote__node_common(ld, mesh, where, nd));
+    MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
     const cJSON *verts, *pos;
     MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
@@ -1116,19 +1125,49 @@ static R mote__nodes(mote__ld *ld)
         if (!ld->geometry_map)
             return mote__oom(ld, "geometries");
     }
-    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes);
-    if (nm + nt > ld->lim.max_meshes)
-        return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u",
-                          nm + nt, (unsigned)ld->lim.max_meshes);
-    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt, sizeof *ld->nodes);
+    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0;
+    int i = 0;
+    for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
+        char at[32];
+        snprintf(at, sizeof at, "meshes[%d]", i);
+        const cJSON *inst = NULL;
+        if (cJSON_IsObject(m))
+            MOTE__TRY(mote__arr(ld, m, "instances", at, &inst));
+        ni += mote__array_len(inst);
+    }
+    if (nm + nt + ni > ld->lim.max_meshes)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u "
+                          "(transform nodes and instances count)", nm + nt + ni,
+                          (unsigned)ld->lim.max_meshes);
+    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni, sizeof *ld->nodes);
     if (!ld->nodes)
         return mote__oom(ld, "meshes");
-    ld->node_count = (int)(nm + nt);
-    int i = 0;
+    ld->node_count = (int)(nm + nt + ni);
+    /* meshes, then transform nodes, then instances: each the source mesh's
+     * geometry, material and sub-meshes with a transform and parent of its
+     * own (Babylon.js's Mesh.Parse and createInstance) */
+    int next_instance = (int)(nm + nt);
+    i = 0;
     for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
         mote__node *nd = &ld->nodes[i];
         snprintf(nd->where, sizeof nd->where, "meshes[%d]", i);
         MOTE__TRY(mote__node_read(ld, m, nd->where, nd));
+        int k = 0;
+        for (const cJSON *e = mote__get(m, "instances") ? mote__get(m, "instances")->child : NULL; e;
+             e = e->next, k++) {
+            mote__node *in = &ld->nodes[next_instance++];
+            snprintf(in->where, sizeof in->where, "meshes[%d].instances[%d]", i, k);
+            MOTE__TRY(mote__node_common(ld, e, in->where, in));
+            in->material_id = nd->material_id;
+            in->legacy = nd->legacy;
+            in->verts = nd->verts;
+            in->nv = nd->nv;
+            in->colors = nd->colors;
+            in->idx = nd->idx;
+            in->ni = nd->ni;
+            in->subs = nd->subs;
+            in->sub_count = nd->sub_count;
+        }
     }
     int t = 0;
     for (const cJSON *m = tnodes ? tnodes->child : NULL; m; m = m->next, i++, t++) {
