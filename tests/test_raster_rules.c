@@ -760,6 +760,79 @@ void an_integer_rectangle_should_cover_exactly_its_pixels(void)
     }
 }
 
+/* Depth (Vulkan, D3D): screen-linear z/w, converted to the buffer round to
+ * nearest; and within the vertices' range at every covered pixel, also in
+ * slivers whose depth gradient is far too steep to step (their depth then
+ * comes from a vertex). The exact value is interpolated in double from the
+ * snapped vertices mote drew and their depths at 24 bits. */
+void depth_should_round_to_nearest_and_stay_within_the_vertices_range(void)
+{
+    tu_rng g = tu_rng_seed(55);
+    enum { S = 64 };
+    tu_screen_free(&scr);
+    TEST_ASSERT_TRUE(tu_screen_init(&scr, S, S, 8, true));
+    long pixels = 0, nearest = 0, off = 0, slivers = 0;
+    for (int k = 0; k < 20000; k++) {
+        bool sliver = k & 1;
+        double sx[3], sy[3], w[3];
+        for (int i = 0; i < 3; i++) {
+            sx[i] = tu_rand_range(&g, -10, S + 10);
+            sy[i] = tu_rand_range(&g, -10, S + 10);
+            w[i] = tu_rand_range(&g, 0.05, 5);
+        }
+        if (sliver) {             /* the third vertex near the first edge */
+            double t = tu_rand01(&g);
+            sx[2] = sx[0] + t * (sx[1] - sx[0]) + tu_rand_range(&g, -0.05, 0.05);
+            sy[2] = sy[0] + t * (sy[1] - sy[0]) + tu_rand_range(&g, -0.05, 0.05);
+        }
+        TEST_ASSERT_EQUAL_INT(MOTE_OK, tu_screen_draw(&scr, sx, sy, w, 1));
+        if (scr.cap.count != 1)
+            continue;
+        slivers += sliver;
+        const tu_tri *h = &scr.cap.tris[0];
+        double area = (double)((int64_t)(h->X[1] - h->X[0]) * (h->Y[2] - h->Y[0])
+                               - (int64_t)(h->Y[1] - h->Y[0]) * (h->X[2] - h->X[0]));
+        double D[3], lo = 1e30, hi = -1e30;
+        for (int i = 0; i < 3; i++) {
+            D[i] = floor((double)h->z[i] * 16777215.0 + 0.5);
+            lo = fmin(lo, D[i]);
+            hi = fmax(hi, D[i]);
+        }
+        for (int y = 0; y < S; y++)
+            for (int x = 0; x < S; x++) {
+                if (!scr.color[y * S + x])
+                    continue;
+                uint32_t got_d = scr.depth[y * S + x];
+                if (got_d < lo - 1 || got_d > hi + 1) {
+                    snprintf(msg, sizeof msg, "triangle %d, pixel (%d,%d): depth %u outside [%.0f, %.0f]",
+                             k, x, y, (unsigned)got_d, lo, hi);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+                if (sliver)
+                    continue;
+                int64_t px = x * 256 + 128, py = y * 256 + 128;
+                double exact = 0.0;
+                for (int i = 0; i < 3; i++) {
+                    int a = (i + 1) % 3, b = (i + 2) % 3;
+                    exact += D[i] * (double)((int64_t)(h->X[b] - h->X[a]) * (py - h->Y[a])
+                                             - (int64_t)(h->Y[b] - h->Y[a]) * (px - h->X[a])) / area;
+                }
+                if (fabs(exact - floor(exact) - 0.5) < 0.01)
+                    continue;     /* too close to a half to call */
+                pixels++;
+                nearest += got_d == (uint32_t)floor(exact + 0.5);
+                off += fabs((double)got_d - exact) > 1.0;
+            }
+    }
+    tu_screen_free(&scr);
+    printf("depth: %ld pixels, %.4f%% rounded to nearest, %ld off by more than 1; %ld slivers in range\n",
+           pixels, 100.0 * (double)nearest / (double)pixels, off, slivers);
+    TEST_ASSERT_TRUE(pixels > 1000000);
+    TEST_ASSERT_TRUE(slivers > 5000);
+    TEST_ASSERT_EQUAL(0, off);
+    TEST_ASSERT_TRUE_MESSAGE(nearest * 1000 >= pixels * 999, "depth is not rounded to nearest");
+}
+
 void moving_a_triangle_by_whole_pixels_should_move_its_coverage_exactly(void)
 {
     tu_rng g = tu_rng_seed(101);
@@ -817,5 +890,6 @@ int main(void)
     RUN_TEST(tiny_diamonds_shifted_around_a_pixel_centre_should_match_the_integer_reference);
     RUN_TEST(an_integer_rectangle_should_cover_exactly_its_pixels);
     RUN_TEST(moving_a_triangle_by_whole_pixels_should_move_its_coverage_exactly);
+    RUN_TEST(depth_should_round_to_nearest_and_stay_within_the_vertices_range);
     return UNITY_END();
 }

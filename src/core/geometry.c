@@ -759,6 +759,10 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     bool has_depth = dev->desc.depth_format != MOTE_DEPTH_FORMAT_NONE;
     rs_local.depth_test = has_depth && !cx.d.no_depth_test;
     rs_local.depth_write = has_depth && !cx.d.no_depth_write;
+    /* the pixel loops truncate (z >> 16, then >> 8 for 16 bits): the plane
+     * starts half a unit up, so each pixel's 24-bit depth is rounded to
+     * nearest, and a 16-bit one is that rounded again: (d24 + 128) >> 8 */
+    rs_local.depth_half = (1 << 15) + (dev->desc.depth_format == MOTE_DEPTH_FORMAT_16 ? 1 << 23 : 0);
     mote__fill_select(&rs_local, dev->desc.color_format, dev->desc.depth_format);
 
     size_t cache_bytes = 0;

@@ -157,6 +157,7 @@ typedef struct mote__raster_state {
     int subspan_log2;
     bool gouraud;                 /* false: one shade per triangle */
     bool depth_test, depth_write;
+    int32_t depth_half;           /* half a unit of the depth buffer, in the depth plane's 1/65536 */
 } mote__raster_state;
 
 /* Interpolated attributes of a triangle, by index. */

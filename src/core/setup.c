@@ -74,23 +74,28 @@ MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
     return q - ((r != 0) & ((r < 0) != (b < 0)));
 }
 
-/* round(n * 2^16 / d) for |n| < 2^58 and 0 < d < 2^47, saturated to
- * +-2^44: only slivers far thinner than a pixel reach that, and their depth
- * gradient then stays small enough that stepping cannot overflow. The
- * saturation is a clamp: an unsaturated quotient of 2^28 or more (16x the
- * whole depth range per pixel) rounds to at least 2^44. */
-static inline int64_t mote__scaled_div(int64_t n, int64_t d)
+/* round(n * 2^16 / d) for |n| < 2^58 and 0 < d < 2^47; beyond +-2^44
+ * (16x the whole depth range per pixel: only slivers far thinner than a
+ * pixel reach that) it sets *huge and returns 0, so that stepping can
+ * never overflow. */
+static inline int64_t mote__scaled_div(int64_t n, int64_t d, bool *huge)
 {
     const int64_t cap = (int64_t)1 << 44, big = (int64_t)1 << 46;
     int64_t q = 0;
     if (n >= big || n <= -big) {  /* rare: n * 2^16 would not fit; whole part first */
         q = mote__floor_div64(n, d);
-        if (q >= cap >> 16 || q < -(cap >> 16))
-            return q > 0 ? cap : -cap;
+        if (q >= cap >> 16 || q < -(cap >> 16)) {
+            *huge = true;
+            return 0;
+        }
         n -= q * d;               /* now in [0, d) */
     }
     int64_t v = q * 65536 + mote__floor_div64(n * 65536 + (d >> 1), d);   /* d > 0 */
-    return v > cap ? cap : v < -cap ? -cap : v;
+    if (v > cap || v < -cap) {
+        *huge = true;
+        return 0;
+    }
+    return v;
 }
 
 /* v rounded down to a multiple of period (> 0); a shift and a mask for the
@@ -329,9 +334,15 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
          * 2^32, depth differences below 2^25: all products fit */
         int64_t d1 = d[1] - d[0], d2 = d[2] - d[0];
         int64_t zp[3];
+        bool huge = false;
         for (int j = 0; j < 3; j++)
-            zp[j] = mote__scaled_div(ed[3 * j + 1] * d1 + ed[3 * j + 2] * d2, a2);
-        t->z = d[0] * 65536 + zp[0];
+            zp[j] = mote__scaled_div(ed[3 * j + 1] * d1 + ed[3 * j + 2] * d2, a2, &huge);
+        /* such a sliver has no usable plane (a clamped gradient would be
+         * wrong by far some pixels along it): it takes vertex 0's depth,
+         * which at least lies within its vertices' range */
+        if (huge)
+            zp[0] = zp[1] = zp[2] = 0;
+        t->z = d[0] * 65536 + zp[0] + rs->depth_half;
         t->zdx = zp[1];
         t->zdy = zp[2];
     }
