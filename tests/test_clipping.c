@@ -248,6 +248,39 @@ void huge_coordinates_should_be_handled_by_the_guard_band(void)
     }
 }
 
+/* One triangle around the whole viewport, its vertices 1e4 to 1e20 pixels
+ * away (far inside FLT_MAX/16 in clip space), at random turns and w: every
+ * pixel is drawn. Clipping against the guard band from that far out once
+ * missed the planes by more than the band (float interpolation), and from
+ * about 3e10 pixels on such triangles were dropped whole. */
+void a_triangle_around_the_viewport_should_cover_it_at_any_size(void)
+{
+    enum { SW = 61, SH = 47 };
+    static uint8_t cov[SW * SH];
+    tu_screen s;
+    TEST_ASSERT_TRUE(tu_screen_init(&s, SW, SH, 8, false));
+    tu_rng g = tu_rng_seed(404);
+    for (int e = 4; e <= 20; e++)
+        for (int k = 0; k < 40; k++) {
+            double r = pow(10.0, e + tu_rand01(&g)), turn = tu_rand_range(&g, 0.0, 6.283185307179586);
+            double sx[3], sy[3], w[3];
+            for (int i = 0; i < 3; i++) {
+                sx[i] = SW / 2.0 + r * cos(turn + i * 2.0943951023931957);
+                sy[i] = SH / 2.0 + r * sin(turn + i * 2.0943951023931957);
+                w[i] = k % 2 ? tu_rand_range(&g, 0.1, 4.0) : 1.0;
+            }
+            TEST_ASSERT_EQUAL_INT(MOTE_OK, tu_screen_draw(&s, sx, sy, w, 1));
+            tu_screen_coverage(&s, cov);
+            int drawn = 0;
+            for (int i = 0; i < SW * SH; i++)
+                drawn += cov[i];
+            snprintf(msg, sizeof msg, "radius %.3g px, turn %.3f: %d of %d pixels drawn", r, turn, drawn,
+                     SW * SH);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(SW * SH, drawn, msg);
+        }
+    tu_screen_free(&s);
+}
+
 /* ---- the largest framebuffer and coordinate range ---------------------------- */
 
 static bool screen_matches_reference(tu_screen *s, uint8_t *cov, uint8_t *ref, long *count)
@@ -313,6 +346,7 @@ int main(void)
     RUN_TEST(triangles_with_vertices_behind_the_camera_should_match_the_reference);
     RUN_TEST(a_strip_beyond_the_far_plane_should_be_cut_there);
     RUN_TEST(huge_coordinates_should_be_handled_by_the_guard_band);
+    RUN_TEST(a_triangle_around_the_viewport_should_cover_it_at_any_size);
     RUN_TEST(the_largest_framebuffer_should_be_drawn_exactly_to_its_edges);
     return UNITY_END();
 }

@@ -60,7 +60,7 @@ static void mote__light(const mote__ctx *cx, const float p[3], const float n[3],
         float col[3] = {l->color[0], l->color[1], l->color[2]};
         if (mote__zero3(col))
             col[0] = col[1] = col[2] = 1.0f;
-        float k = l->intensity != 0.0f ? l->intensity : 1.0f;
+        float k = mote__or(l->intensity, 1.0f);
         float L[3];
         if (l->type == MOTE_LIGHT_POINT) {
             L[0] = l->position[0] - p[0];
@@ -151,6 +151,19 @@ static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote
     memcpy(out, fa, sizeof fa);
 }
 
+/* Puts a vertex made by clipping against plane p exactly on it. The
+ * interpolation alone can miss a guard-band plane by more than the guard
+ * band when the edge runs from far outside (beyond about 1e10 pixels in
+ * float), and the vertex would then fail to snap, or a later plane would
+ * drop the polygon. Each plane's distance is then exactly 0. */
+MOTE__SPEED_INLINE void mote__on_plane(const mote__ctx *cx, mote__cvert *v, int p)
+{
+    /* near z = 0, far z = w, then x and y at -+ the guard band */
+    float g = p == 1 ? 1.0f : p == 0 ? 0.0f : p < 4 ? cx->guard_x : cx->guard_y;
+    float *c = p < 2 ? &v->z : p < 4 ? &v->x : &v->y;
+    *c = (p & 1 ? g : -g) * v->w;
+}
+
 /* Sutherland-Hodgman in homogeneous space. orig[i] tells whether the edge
  * from vertex i to i+1 is part of the original triangle (wireframe draws
  * only those). The intersection is always computed from the inside vertex
@@ -177,6 +190,7 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
                     mote__lerp(a, b, da / (da - db), &tmp[m]);
                 else
                     mote__lerp(b, a, db / (db - da), &tmp[m]);
+                mote__on_plane(cx, &tmp[m], p);
                 torig[m++] = ain ? false : orig[i];
             }
         }
@@ -693,9 +707,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     memset(&cx, 0, sizeof cx);
     cx.dev = dev;
     cx.mesh = mesh;
-    mote_result res = mote__resolve_draw_desc(desc, mesh, &cx.d);
-    if (res != MOTE_OK)
-        return res;
+    cx.d = *desc;                 /* resolved by mote_draw (also when recorded) */
     cx.sink = sink;
     cx.tg = tg;
     cx.region = region;
@@ -713,8 +725,8 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     const mote_material *mat = &mesh->material;
     for (int k = 0; k < 3; k++)
         cx.color[k] = mat->color_set ? (float)(&mat->color.r)[k] / 255.0f : 1.0f;
-    cx.uscale = mat->u_scale != 0.0f ? mat->u_scale : 1.0f;
-    cx.vscale = mat->v_scale != 0.0f ? mat->v_scale : 1.0f;
+    cx.uscale = mote__or(mat->u_scale, 1.0f);
+    cx.vscale = mote__or(mat->v_scale, 1.0f);
     cx.uoff = mat->u_offset;
     cx.voff = mat->v_offset;
     cx.guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);

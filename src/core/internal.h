@@ -95,6 +95,12 @@ static inline bool mote__finite(float x)
     return (mote__float_bits(x) & 0x7f800000u) != 0x7f800000u;
 }
 
+/* v, or def when v is zero (either sign): the "unset" of a scalar */
+static inline float mote__or(float v, float def)
+{
+    return mote__float_bits(v) << 1 ? v : def;
+}
+
 /* whether all three are zero (either sign): the "unset" of a vector */
 static inline bool mote__zero3(const float v[3])
 {
@@ -297,7 +303,8 @@ void mote__draw_line(const mote__target *tg, mote__rect r, int x0, int y0, int x
                      mote_rgba color);
 void mote__draw_pixel(const mote__target *tg, mote__rect r, int x, int y, mote_rgba color);
 
-/* geometry.c: runs a draw through the vertex stage into a sink. */
+/* geometry.c: runs a draw (its desc resolved by mote__resolve_draw_desc)
+ * through the vertex stage into a sink. */
 typedef enum mote__sink_kind { MOTE__SINK_RASTER, MOTE__SINK_BIN } mote__sink_kind;
 mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh,
                                const mote_draw_desc *desc, mote__sink_kind sink,

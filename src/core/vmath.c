@@ -10,11 +10,17 @@
 
 #include <cglm/types.h>
 
+/* x > 0 and finite, from the bits: no library call on soft-float cores */
+static bool mote__positive_finite(float x)
+{
+    return mote__float_bits(x) - 1u < 0x7f7fffffu;
+}
+
 float mote__rsqrtf(float x)
 {
     /* 1/sqrt(x): the classic exponent-halving guess and three Newton steps
      * (no division); about 1 ulp, and identical on every target. */
-    if (!(x > 0.0f) || !mote__finite(x))
+    if (!mote__positive_finite(x))
         return 0.0f;
     union { float f; uint32_t u; } g;
     g.f = x;
@@ -30,7 +36,7 @@ float mote__sqrtf(float x)
     /* Newton with division, for the per-frame and per-mesh uses (camera
      * axes, bounds), where exact results for exact squares matter: a unit
      * view direction stays exactly unit. Per-vertex code uses rsqrt. */
-    if (!(x > 0.0f) || !mote__finite(x))
+    if (!mote__positive_finite(x))
         return x > 0.0f ? x : 0.0f;
     union { float f; uint32_t u; } g;
     g.f = x;
@@ -94,7 +100,7 @@ float mote_cosf(float x)
 float mote_tanf(float x)
 {
     float c = mote_cosf(x);
-    return c == 0.0f ? 1e30f : mote_sinf(x) / c;
+    return mote__float_bits(c) << 1 ? mote_sinf(x) / c : 1e30f;   /* c == 0: a bit test */
 }
 
 void mote__mat4_identity(float m[16])
