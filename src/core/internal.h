@@ -71,9 +71,9 @@ static inline int32_t mote__floor_shift32(int32_t v, int k)
 void mote__mat4_identity(float m[16]);
 void mote__mat4_mul(const float a[16], const float b[16], float out[16]);
 void mote__mat4_point(const float m[16], const float p[3], float out[4]);
-/* Inverse-transpose of the upper 3x3 up to scale (the cofactor matrix, for
- * normals), row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
-/* normals' matrix (the cofactors) of a world matrix, oriented outward */
+/* Inverse-transpose of the upper 3x3 up to a positive scale (the cofactor
+ * matrix, negated when the matrix mirrors, so normals stay outward), for
+ * normals, row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
 void mote__normal_matrix(const float m[16], bool mirrors, float out[9]);
 /* mote_mesh_world_matrix; returns whether it mirrors (negative determinant) */
 bool mote__world_matrix(const mote_mesh *mesh, float world[16]);
