@@ -107,10 +107,15 @@ static inline bool mote__zero3(const float v[3])
     return ((mote__float_bits(v[0]) | mote__float_bits(v[1]) | mote__float_bits(v[2])) << 1) == 0;
 }
 
+/* Inline for speed; one shared copy (vmath.c) where flash counts. */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+float mote__dot3(const float a[3], const float b[3]);
+#else
 static inline float mote__dot3(const float a[3], const float b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
+#endif
 
 /* A vertex after the vertex stage: clip position and the attributes that
  * clipping interpolates. */

@@ -16,6 +16,13 @@ static bool mote__positive_finite(float x)
     return mote__float_bits(x) - 1u < 0x7f7fffffu;
 }
 
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+float mote__dot3(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+#endif
+
 float mote__rsqrtf(float x)
 {
     /* 1/sqrt(x): the classic exponent-halving guess and three Newton steps
