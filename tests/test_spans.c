@@ -27,14 +27,35 @@ static uint32_t next_u32(void)
 }
 static float frand(float lo, float hi) { return lo + (hi - lo) * (float)(next_u32() & 0xffffff) / 16777216.0f; }
 
+/* A w x h RGBA8888 texture of random texels in texels (4 w h bytes). */
+static mote_texture random_texture(uint8_t *texels, int w, int h)
+{
+    for (int i = 0; i < 4 * w * h; i++)
+        texels[i] = (uint8_t)next_u32();
+    return (mote_texture){w, h, MOTE_FORMAT_RGBA8888, 4 * w, texels};
+}
+
+/* A raster state sampling tex (u repeats, v as given); the rest zero. */
+static mote__raster_state texture_state(mote__tex_kind kind, const mote_texture *tex, mote_wrap wrap_v)
+{
+    mote__raster_state rs;
+    memset(&rs, 0, sizeof rs);
+    rs.tex = kind;
+    rs.texture = tex;
+    rs.tex_w = tex->width;
+    rs.tex_h = tex->height;
+    rs.tex_stride = tex->stride;
+    rs.wrap_u = MOTE_WRAP_REPEAT;
+    rs.wrap_v = wrap_v;
+    return rs;
+}
+
 void every_specialised_span_should_match_the_generic_span(void)
 {
     static uint8_t ca[W * H * 4], cb[W * H * 4];
     static uint32_t da[W * H], db[W * H];
     static uint8_t texels[16 * 8 * 4];
-    for (size_t i = 0; i < sizeof texels; i++)
-        texels[i] = (uint8_t)next_u32();
-    mote_texture tex = {16, 8, MOTE_FORMAT_RGBA8888, 64, texels};
+    mote_texture tex = random_texture(texels, 16, 8);
     int variants = 0, wide = 0;
     /* texture addressing: 0 = repeat x mirror (any size), 1 = power-of-two
      * repeat (its own loop), 2 = the same with texel ranges so wide that
@@ -48,15 +69,8 @@ void every_specialised_span_should_match_the_generic_span(void)
     for (int p = 0; p < 3; p++) {
         mote_format format = fmt ? MOTE_FORMAT_RGB565 : MOTE_FORMAT_RGBA8888;
         mote_depth_format depthf = dfmt == 0 ? MOTE_DEPTH_FORMAT_NONE : dfmt == 1 ? MOTE_DEPTH_FORMAT_16 : MOTE_DEPTH_FORMAT_32;
-        mote__raster_state rs;
-        memset(&rs, 0, sizeof rs);
-        rs.tex = (mote__tex_kind)texk;
-        rs.texture = &tex;
-        rs.tex_w = 16;
-        rs.tex_h = 8;
-        rs.wrap_u = MOTE_WRAP_REPEAT;
-        rs.wrap_v = addr == 0 ? MOTE_WRAP_MIRROR : MOTE_WRAP_REPEAT;
-        rs.tex_stride = 64;
+        mote__raster_state rs = texture_state((mote__tex_kind)texk, &tex,
+                                               addr == 0 ? MOTE_WRAP_MIRROR : MOTE_WRAP_REPEAT);
         float uv_range = addr == 2 ? 5000.0f : 40.0f;
         rs.gouraud = sk != MOTE__SHADE_FLAT;
         rs.persp = (mote__persp_kind)p;
@@ -431,10 +445,80 @@ void the_clear_beside_parallel_setup_should_run_without_triangles_and_before_poi
         }
 }
 
+/* ---- vertex order ------------------------------------------------------- */
+
+/* One triangle, its vertices listed in any of the six orders (culling is
+ * not setup's business): the same pixels, colours and depths. The planes
+ * are anchored at one vertex, so a different anchor could round a pixel's
+ * depth or texel differently; setup picks the same vertex every time. */
+void a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in(void)
+{
+    static uint8_t c0[W * H * 4], c1[W * H * 4];
+    static uint32_t d0[W * H], d1[W * H];
+    static uint8_t texels[16 * 16 * 4];
+    mote_texture tex = random_texture(texels, 16, 16);
+    static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+    long pixels = 0;
+    for (int t = 0; t < 3000; t++) {
+        mote__raster_state rs = texture_state((mote__tex_kind)(t % 3), &tex,
+                                               t % 2 ? MOTE_WRAP_MIRROR : MOTE_WRAP_REPEAT);
+        rs.gouraud = true;
+        rs.persp = (mote__persp_kind)(t / 3 % 3);
+        rs.subspan_log2 = 3;
+        rs.depth_test = rs.depth_write = true;
+        rs.depth_half = 1 << 15;
+        mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32);
+        mote__svert v[3];
+        int32_t X[3], Y[3];
+        for (int k = 0; k < 3; k++) {
+            /* small ones too, where a unit of rounding is a visible share */
+            int span = t % 4 ? W + 20 : 12;
+            X[k] = (int32_t)(next_u32() % (uint32_t)(span << 8)) - (10 << 8);
+            Y[k] = (int32_t)(next_u32() % (uint32_t)(span << 8)) - (10 << 8);
+            v[k].w = frand(0.2f, 5.0f);
+            v[k].depth = frand(0.0f, 1.0f);
+            v[k].z = (int32_t)(v[k].depth * (float)MOTE__DEPTH_MAX);
+            for (int c = 0; c < 3; c++)
+                v[k].s[c] = (int32_t)(frand(0.0f, 1.0f) * MOTE__SHADE_ONE);
+            v[k].texel[0] = (int64_t)(frand(-40.0f, 40.0f) * 65536.0f);
+            v[k].texel[1] = (int64_t)(frand(-20.0f, 20.0f) * 65536.0f);
+        }
+        if (mote__area2(X, Y) == 0)
+            continue;
+        for (int p = 0; p < 6; p++) {
+            uint8_t *c = p ? c1 : c0;
+            uint32_t *d = p ? d1 : d0;
+            memset(c, 0, sizeof c0);
+            memset(d, 0xff, sizeof d0);
+            mote__counts n = {0, 0};
+            mote__target tg = {c, W * 4, d, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n};
+            int32_t PX[3], PY[3];
+            const mote__svert *pv[3];
+            for (int k = 0; k < 3; k++) {
+                PX[k] = X[perm[p][k]];
+                PY[k] = Y[perm[p][k]];
+                pv[k] = &v[perm[p][k]];
+            }
+            mote__tri tri;
+            if (!mote__setup(&tri, &rs, PX, PY, mote__area2(PX, PY), pv, 8, W, H))
+                break;
+            mote__rect all = {0, 0, W, H};
+            mote__raster_tri(&tri, &tg, all, 8);
+            pixels += p == 0 ? (long)n.written : 0;
+            if (p > 0) {
+                TEST_ASSERT_EQUAL_MEMORY(c0, c1, sizeof c0);
+                TEST_ASSERT_EQUAL_MEMORY(d0, d1, sizeof d0);
+            }
+        }
+    }
+    TEST_ASSERT_GREATER_THAN(500000, pixels);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(every_specialised_span_should_match_the_generic_span);
+    RUN_TEST(a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in);
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);

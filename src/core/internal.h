@@ -190,7 +190,7 @@ static inline bool mote__has_plane(int a, mote__shade_kind shade, bool textured)
  * addition, so any region of the triangle gives the same pixels. */
 typedef struct mote__tri {
     const mote__raster_state *rs;
-    int32_t X[3], Y[3];           /* snapped, original winding */
+    int32_t X[3], Y[3];           /* snapped, from the top vertex (see setup.c), original winding */
     int16_t xmin, ymin, xmax, ymax; /* pixel bounding box, inclusive, clamped to the viewport */
     int16_t ox, oy;
     int8_t shift;                 /* brings Q under 2^31 */
