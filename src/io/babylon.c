@@ -913,6 +913,16 @@ static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node
 
 /* The current layout, from the mesh itself or from a geometries.vertexData
  * entry (src, named src_where in messages). */
+/* Gives to the vertex and index arrays of from: shared, not copied. */
+static void mote__share_arrays(mote__node *to, const mote__node *from)
+{
+    to->verts = from->verts;
+    to->nv = from->nv;
+    to->colors = from->colors;
+    to->idx = from->idx;
+    to->ni = from->ni;
+}
+
 static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *where,
                                 mote__node *nd)
 {
@@ -1073,12 +1083,7 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
                               where, mote__quote(geometry_id).s);
         mote__geometry *g = &ld->geometries[k];
         if (g->owner >= 0) {      /* parsed once: meshes share it (no copies) */
-            const mote__node *o = &ld->nodes[g->owner];
-            nd->verts = o->verts;
-            nd->nv = o->nv;
-            nd->colors = o->colors;
-            nd->idx = o->idx;
-            nd->ni = o->ni;
+            mote__share_arrays(nd, &ld->nodes[g->owner]);
         } else {
             char gat[64];
             snprintf(gat, sizeof gat, "geometries.vertexData[%d]", k);
@@ -1152,19 +1157,15 @@ static R mote__nodes(mote__ld *ld)
         mote__node *nd = &ld->nodes[i];
         snprintf(nd->where, sizeof nd->where, "meshes[%d]", i);
         MOTE__TRY(mote__node_read(ld, m, nd->where, nd));
+        const cJSON *inst = mote__get(m, "instances");   /* an array: checked above */
         int k = 0;
-        for (const cJSON *e = mote__get(m, "instances") ? mote__get(m, "instances")->child : NULL; e;
-             e = e->next, k++) {
+        for (const cJSON *e = inst ? inst->child : NULL; e; e = e->next, k++) {
             mote__node *in = &ld->nodes[next_instance++];
             snprintf(in->where, sizeof in->where, "meshes[%d].instances[%d]", i, k);
             MOTE__TRY(mote__node_common(ld, e, in->where, in));
             in->material_id = nd->material_id;
             in->legacy = nd->legacy;
-            in->verts = nd->verts;
-            in->nv = nd->nv;
-            in->colors = nd->colors;
-            in->idx = nd->idx;
-            in->ni = nd->ni;
+            mote__share_arrays(in, nd);
             in->subs = nd->subs;
             in->sub_count = nd->sub_count;
         }
