@@ -646,7 +646,9 @@ void backface_culling_should_keep_exactly_the_faces_that_face_the_eye(void)
         const mote_stats *s = mote_device_stats(&dev);
         TEST_ASSERT_EQUAL_UINT32(12, s->triangles_in);
         TEST_ASSERT_EQUAL_UINT32(12 - front, s->triangles_backface);
-        TEST_ASSERT_EQUAL_UINT32(front, s->triangles_drawn);
+        /* a front face seen so nearly edge-on that it holds no pixel
+         * centre counts as degenerate */
+        TEST_ASSERT_EQUAL_UINT32(front, s->triangles_drawn + s->triangles_degenerate);
     }
 }
 

@@ -112,7 +112,7 @@ void every_specialised_span_should_match_the_generic_span(void)
             const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
             int64_t area2 = mote__area2(X, Y);
             mote__tri tri;
-            if (area2 == 0 || !mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H))
+            if (area2 == 0 || mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
                 continue;
             TEST_ASSERT_EQUAL_INT(sk, tri.shade);
             wide += tri.rbits != MOTE__RBITS;
@@ -500,7 +500,7 @@ void a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in(v
                 pv[k] = &v[perm[p][k]];
             }
             mote__tri tri;
-            if (!mote__setup(&tri, &rs, PX, PY, mote__area2(PX, PY), pv, 8, W, H))
+            if (mote__setup(&tri, &rs, PX, PY, mote__area2(PX, PY), pv, 8, W, H) != MOTE__SETUP_DRAWN)
                 break;
             mote__rect all = {0, 0, W, H};
             mote__raster_tri(&tri, &tg, all, 8);
@@ -514,11 +514,80 @@ void a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in(v
     TEST_ASSERT_GREATER_THAN(500000, pixels);
 }
 
+/* floor(v / 2^8), for the test's own box arithmetic */
+static int floor_px(int32_t v) { return v >= 0 ? v / 256 : -((-v + 255) / 256); }
+
+void setup_should_box_a_triangle_by_the_pixel_centres_its_vertices_span(void)
+{
+    static uint8_t c[W * H * 4];
+    static uint32_t d[W * H];
+    static const mote_texture none = {1, 1, MOTE_FORMAT_RGBA8888, 4, NULL};
+    mote__raster_state rs = texture_state(MOTE__TEX_NONE, &none, MOTE_WRAP_REPEAT);
+    rs.depth_test = rs.depth_write = true;
+    mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32);
+    mote__svert v[3];
+    memset(v, 0, sizeof v);
+    const mote__svert *pv[3] = {&v[0], &v[1], &v[2]};
+    int dropped = 0, empty = 0, kept = 0;
+    long pixels = 0;
+    for (int t = 0; t < 20000; t++) {
+        int32_t X[3], Y[3];
+        int span = 1 + t % 6;     /* pixels: many hold no centre, or one */
+        int32_t bx = (int32_t)(next_u32() % ((W + 8) << 8)) - (4 << 8);
+        int32_t by = (int32_t)(next_u32() % ((H + 8) << 8)) - (4 << 8);
+        for (int k = 0; k < 3; k++) {
+            X[k] = bx + (int32_t)(next_u32() % (uint32_t)(span << 8));
+            Y[k] = by + (int32_t)(next_u32() % (uint32_t)(span << 8));
+        }
+        int64_t area2 = mote__area2(X, Y);
+        if (area2 == 0)
+            continue;
+        /* the pixels whose centre (x + 1/2) lies within the vertices' extent, on screen */
+        int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
+        int32_t miny = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), maxy = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
+        int x0 = floor_px(minx - 128 + 255), x1 = floor_px(maxx - 128);
+        int y0 = floor_px(miny - 128 + 255), y1 = floor_px(maxy - 128);
+        bool empty_box = x0 > x1 || y0 > y1;
+        x0 = MOTE__MAX(x0, 0);
+        y0 = MOTE__MAX(y0, 0);
+        x1 = MOTE__MIN(x1, W - 1);
+        y1 = MOTE__MIN(y1, H - 1);
+        memset(c, 0, sizeof c);
+        memset(d, 0xff, sizeof d);
+        mote__tri tri;
+        mote__setup_result set = mote__setup(&tri, &rs, X, Y, area2, pv, 8, W, H);
+        if (x0 > x1 || y0 > y1) {
+            /* between pixel centres (wherever it is), or off the screen */
+            TEST_ASSERT_EQUAL_INT(empty_box ? MOTE__SETUP_EMPTY : MOTE__SETUP_OUTSIDE, set);
+            dropped++;
+            empty += empty_box;
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT(MOTE__SETUP_DRAWN, set);
+        kept++;
+        TEST_ASSERT_EQUAL_INT(x0, tri.xmin);
+        TEST_ASSERT_EQUAL_INT(x1, tri.xmax);
+        TEST_ASSERT_EQUAL_INT(y0, tri.ymin);
+        TEST_ASSERT_EQUAL_INT(y1, tri.ymax);
+        mote__counts n = {0, 0};
+        mote__target tg = {c, W * 4, d, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n};
+        mote__rect all = {0, 0, W, H};
+        mote__raster_tri(&tri, &tg, all, 8);
+        pixels += (long)n.written;
+    }
+    /* both ends were reached, and the kept ones drew */
+    TEST_ASSERT_GREATER_THAN(1000, dropped);
+    TEST_ASSERT_GREATER_THAN(500, empty);
+    TEST_ASSERT_GREATER_THAN(5000, kept);
+    TEST_ASSERT_GREATER_THAN(10000, pixels);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(every_specialised_span_should_match_the_generic_span);
     RUN_TEST(a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in);
+    RUN_TEST(setup_should_box_a_triangle_by_the_pixel_centres_its_vertices_span);
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);

@@ -466,7 +466,7 @@ typedef struct mote_stats {
     uint32_t triangles_invalid;           /* bad index or NaN/Inf */
     uint32_t triangles_clipped_away;      /* outside near/far/frustum */
     uint32_t triangles_backface;          /* culled by winding */
-    uint32_t triangles_degenerate;        /* zero snapped area */
+    uint32_t triangles_degenerate;        /* zero snapped area, or no pixel centre in its box */
     uint32_t triangles_drawn;             /* set up and rasterised */
     uint32_t tiles_empty, tiles_drawn;    /* binned mode */
     uint32_t arena_flushes;               /* binned mode: times the arena filled up */

@@ -411,9 +411,13 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
         dev->desc.triangle_hook(dev->desc.triangle_hook_user, X, Y, z, w);
     }
     mote__tri t;
-    if (!mote__setup(&t, cx->rs, X, Y, area2, v, dev->desc.subpixel_bits, dev->desc.width,
-                     dev->desc.height)) {
-        dev->stats.triangles_clipped_away++;
+    mote__setup_result set = mote__setup(&t, cx->rs, X, Y, area2, v, dev->desc.subpixel_bits,
+                                         dev->desc.width, dev->desc.height);
+    if (set != MOTE__SETUP_DRAWN) {
+        if (set == MOTE__SETUP_EMPTY)
+            dev->stats.triangles_degenerate++;
+        else
+            dev->stats.triangles_clipped_away++;
         return;
     }
     dev->stats.triangles_drawn++;

@@ -286,9 +286,11 @@ static inline int64_t mote__area2(const int32_t X[3], const int32_t Y[3])
 }
 
 /* setup.c: fills t from snapped vertices, their doubled signed area (not
- * 0: the vertex stage drops degenerate triangles) and their attributes;
- * false when the triangle has no pixels. */
-bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
+ * 0: the vertex stage drops degenerate triangles) and their attributes,
+ * unless the triangle has no pixels: off the viewport, or no pixel centre
+ * within its vertices' box (then t is not filled). */
+typedef enum mote__setup_result { MOTE__SETUP_DRAWN, MOTE__SETUP_OUTSIDE, MOTE__SETUP_EMPTY } mote__setup_result;
+mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
                  const int32_t Y[3], int64_t area2, const mote__svert *const v[3],
                  int subpixel_bits, int width, int height);
 

@@ -113,7 +113,7 @@ MOTE__SPEED_INLINE int mote__before(const int32_t X[3], const int32_t Y[3], int 
     return (Y[i] < Y[j]) | ((Y[i] == Y[j]) & (X[i] < X[j]));
 }
 
-bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t Xin[3],
+mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t Xin[3],
                  const int32_t Yin[3], int64_t area2, const mote__svert *const vin[3], int F,
                  int width, int height)
 {
@@ -136,18 +136,25 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t Xin[3
     }
     const int32_t *const X = t->X, *const Y = t->Y;
 
-    /* Pixel bounding box: pixels whose centre can be inside. */
+    /* Pixel bounding box: the pixels whose centre lies in the vertices'
+     * box, x from ceil((minx - half) / one) to floor((maxx - half) / one).
+     * Clamped to the viewport, it holds every pixel the planes are
+     * evaluated at. A triangle that holds no pixel centre (about 2% of a
+     * dense mesh's) ends here, and a box no wider than its pixels puts a
+     * triangle in no tile it does not touch. */
     int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
     int32_t miny = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), maxy = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
-    const int32_t h32 = (int32_t)half;
-    int x0 = mote__floor_shift32(minx - h32, F), x1 = mote__floor_shift32(maxx - h32, F) + 1;
-    int y0 = mote__floor_shift32(miny - h32, F), y1 = mote__floor_shift32(maxy - h32, F) + 1;
+    const int32_t h32 = (int32_t)half, up = (int32_t)one - 1 - h32;
+    int x0 = mote__floor_shift32(minx + up, F), x1 = mote__floor_shift32(maxx - h32, F);
+    int y0 = mote__floor_shift32(miny + up, F), y1 = mote__floor_shift32(maxy - h32, F);
+    if (x0 > x1 || y0 > y1)
+        return MOTE__SETUP_EMPTY;
     x0 = MOTE__MAX(x0, 0);
     y0 = MOTE__MAX(y0, 0);
     x1 = MOTE__MIN(x1, width - 1);
     y1 = MOTE__MIN(y1, height - 1);
     if (x0 > x1 || y0 > y1)
-        return false;
+        return MOTE__SETUP_OUTSIDE;
     /* every field is written below: no memset of the whole record */
     t->rs = rs;
     t->xmin = (int16_t)x0;
@@ -234,8 +241,9 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t Xin[3
         int eb = mote__bitlen((uint64_t)MOTE__MAX(emax, a2));
         int k = MOTE__MIN(MOTE__MAX(eb - 33, 0), F);
         int64_t pd[9];            /* ed >> k; steps are multiples of 2^F >= 2^k: exact */
-        memcpy(pd, ed, sizeof pd);
-        if (!MOTE_SHORTCUTS || k > 0)
+        if (MOTE_SHORTCUTS && k == 0)
+            memcpy(pd, ed, sizeof pd);
+        else
             for (int i = 0; i < 9; i++)
                 pd[i] = mote__floor_shift64(ed[i], k);
         int64_t a2k = (a2 >> k) + 1;
@@ -355,5 +363,5 @@ bool mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t Xin[3
         t->zdx = zp[1];
         t->zdy = zp[2];
     }
-    return true;
+    return MOTE__SETUP_DRAWN;
 }
