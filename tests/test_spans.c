@@ -50,6 +50,27 @@ static mote__raster_state texture_state(mote__tex_kind kind, const mote_texture 
     return rs;
 }
 
+/* A random triangle over the W x H target and a little past its edges,
+ * with random w, depth and texel coordinates (u within +-uv_range, v half
+ * that), shaded as shade kind sk makes shades: flat, one shade for all
+ * (grey when grey); mono, grey vertices; RGB, any. */
+static void random_triangle(int32_t X[3], int32_t Y[3], mote__svert v[3], int sk, bool grey, float uv_range)
+{
+    for (int k = 0; k < 3; k++) {
+        X[k] = (int32_t)(next_u32() % ((W + 20) << 8)) - (10 << 8);
+        Y[k] = (int32_t)(next_u32() % ((H + 20) << 8)) - (10 << 8);
+        v[k].w = frand(0.2f, 5.0f);
+        v[k].depth = frand(0.0f, 1.0f);
+        v[k].z = (int32_t)(v[k].depth * (float)MOTE__DEPTH_MAX);
+        for (int c = 0; c < 3; c++)
+            v[k].s[c] = sk == MOTE__SHADE_FLAT && k > 0 ? v[0].s[c]
+                      : (sk == MOTE__SHADE_MONO || (sk == MOTE__SHADE_FLAT && grey)) && c > 0
+                      ? v[k].s[0] : (int32_t)(frand(0.0f, 1.0f) * MOTE__SHADE_ONE);
+        v[k].texel[0] = (int64_t)(frand(-uv_range, uv_range) * 65536.0f);
+        v[k].texel[1] = (int64_t)(frand(-uv_range / 2.0f, uv_range / 2.0f) * 65536.0f);
+    }
+}
+
 void every_specialised_span_should_match_the_generic_span(void)
 {
     static uint8_t ca[W * H * 4], cb[W * H * 4];
@@ -94,21 +115,7 @@ void every_specialised_span_should_match_the_generic_span(void)
         for (int t = 0; t < 40; t++) {
             mote__svert v[3];
             int32_t X[3], Y[3];
-            bool grey = (t & 1) != 0;   /* flat: grey or coloured light */
-            for (int k = 0; k < 3; k++) {
-                X[k] = (int32_t)(next_u32() % ((W + 20) << 8)) - (10 << 8);
-                Y[k] = (int32_t)(next_u32() % ((H + 20) << 8)) - (10 << 8);
-                v[k].w = frand(0.2f, 5.0f);
-                v[k].depth = frand(0.0f, 1.0f);
-                v[k].z = (int32_t)(v[k].depth * (float)MOTE__DEPTH_MAX);
-                /* flat: one shade for all; mono: grey vertices; RGB: any */
-                for (int c = 0; c < 3; c++)
-                    v[k].s[c] = sk == MOTE__SHADE_FLAT && k > 0 ? v[0].s[c]
-                              : (sk == MOTE__SHADE_MONO || (sk == MOTE__SHADE_FLAT && grey)) && c > 0
-                              ? v[k].s[0] : (int32_t)(frand(0.0f, 1.0f) * MOTE__SHADE_ONE);
-                v[k].texel[0] = (int64_t)(frand(-uv_range, uv_range) * 65536.0f);
-                v[k].texel[1] = (int64_t)(frand(-uv_range / 2.0f, uv_range / 2.0f) * 65536.0f);
-            }
+            random_triangle(X, Y, v, sk, (t & 1) != 0, uv_range);
             const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
             int64_t area2 = mote__area2(X, Y);
             mote__tri tri;
@@ -135,6 +142,64 @@ void every_specialised_span_should_match_the_generic_span(void)
     TEST_ASSERT_GREATER_THAN_INT(100, wide);
     /* the table really is used for these combinations */
     TEST_ASSERT_EQUAL_INT(2 * 3 * 3 * MOTE__SHADE_COUNT * 3, variants);
+}
+
+/* Sub-span perspective: r is exact at the columns that are multiples of
+ * the segment length and linear between them, so a pixel must not depend
+ * on which pixels before it in its row failed the depth test. (The loop
+ * takes a segment's starting r from the last segment's end, which holds
+ * only when no rejected run skipped a whole segment.) */
+void subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them(void)
+{
+    static uint8_t ca[W * H * 4], cb[W * H * 4];
+    static uint32_t da[W * H], db[W * H];
+    static bool hidden[W * H];
+    static uint8_t texels[16 * 8 * 4];
+    mote_texture tex = random_texture(texels, 16, 8);
+    /* runs of 13 hidden columns, longer than a segment of 8, in every third run */
+    for (int i = 0; i < W * H; i++)
+        hidden[i] = ((i % W) / 13 + i / W) % 3 == 0;
+    long compared = 0, differ = 0;
+    for (int specialised = 0; specialised < 2; specialised++) {
+        mote__raster_state rs = texture_state(MOTE__TEX_NEAREST, &tex, MOTE_WRAP_REPEAT);
+        rs.gouraud = true;
+        rs.persp = MOTE__PERSP_SUBSPAN;
+        rs.subspan_log2 = 3;
+        rs.depth_test = rs.depth_write = true;
+        mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32);
+        for (int k = 0; k < MOTE__SHADE_COUNT && !specialised; k++)
+            rs.fill[k] = mote__fill_generic;
+        mote__counts n = {0, 0};
+        mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n}, tb = ta;
+        tb.color = cb;
+        tb.depth = db;
+        for (int t = 0; t < 60; t++) {
+            memset(ca, 0, sizeof ca);
+            memset(cb, 0, sizeof cb);
+            memset(da, 0xff, sizeof da);
+            for (int i = 0; i < W * H; i++)
+                db[i] = hidden[i] ? 0u : 0xffffffffu;
+            mote__svert v[3];
+            int32_t X[3], Y[3];
+            random_triangle(X, Y, v, MOTE__SHADE_RGB, false, 40.0f);
+            const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
+            int64_t area2 = mote__area2(X, Y);
+            mote__tri tri;
+            if (area2 == 0 || mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
+                continue;
+            mote__rect all = {0, 0, W, H};
+            mote__raster_tri(&tri, &ta, all, 8);
+            mote__raster_tri(&tri, &tb, all, 8);
+            for (int i = 0; i < W * H; i++) {
+                if (hidden[i] || da[i] == 0xffffffffu)
+                    continue;
+                compared++;
+                differ += memcmp(&ca[4 * i], &cb[4 * i], 4) != 0 || da[i] != db[i];
+            }
+        }
+    }
+    TEST_ASSERT_GREATER_THAN_INT(W * H, compared);
+    TEST_ASSERT_EQUAL_INT(0, differ);
 }
 
 /* ---- determinism ------------------------------------------------------------ */
@@ -586,6 +651,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(every_specialised_span_should_match_the_generic_span);
+    RUN_TEST(subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them);
     RUN_TEST(a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in);
     RUN_TEST(setup_should_box_a_triangle_by_the_pixel_centres_its_vertices_span);
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
