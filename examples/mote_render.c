@@ -5,14 +5,16 @@
  *               [--camera ex,ey,ez:tx,ty,tz] [--fov RADIANS] [--rotate rx,ry,rz]
  *               [--frames N] [--threads T] [--spin DEGREES]
  *               [--perspective correct|affine|subspan] [--filter nearest|bilinear]
- *               [--subpixel-bits N]
+ *               [--subpixel-bits N] [--full-clear]
  *
  * The device bins triangles into an arena and rasterises the tiles on OpenMP
  * threads (mote_parallel_openmp). With --frames N it renders one warm-up
  * frame and then N timed frames (begin, draws, end: no loading, no writing),
  * turning the scene --spin degrees about the world y axis each frame, and
  * prints "ms/frame: median X (min Y, max Z)". The image written is always
- * the unturned frame, so it does not depend on --frames or --spin.
+ * the unturned frame, so it does not depend on --frames or --spin. Frames
+ * clear only the tiles drawn into since their last clear (the tool is the
+ * only writer of its buffers); --full-clear clears the whole frame.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -39,6 +41,7 @@ typedef struct options {
     int threads;                  /* 0: all */
     float spin_degrees;
     int subpixel_bits;            /* 0: default */
+    bool full_clear;              /* clear every tile, not only those drawn into */
 } options;
 
 static void usage(FILE *out)
@@ -59,6 +62,8 @@ static void usage(FILE *out)
             "  --perspective P         correct|affine|subspan (default correct)\n"
             "  --filter F              nearest|bilinear (default nearest)\n"
             "  --subpixel-bits N       snapping grid, 4..8 (default 8)\n"
+            "  --full-clear            clear the whole frame each time (default: only the tiles\n"
+            "                          drawn into since their last clear)\n"
             "  --help                  this text\n");
 }
 
@@ -154,6 +159,10 @@ static int parse_args(int argc, char **argv, options *o)
             return 2;
         if (strcmp(a, "--no-cull") == 0) {
             o->draw.cull = MOTE_CULL_NONE;
+            continue;
+        }
+        if (strcmp(a, "--full-clear") == 0) {
+            o->full_clear = true;
             continue;
         }
         if (a[0] != '-' || a[1] == '\0') {
@@ -359,6 +368,7 @@ int main(int argc, char **argv)
     desc.subpixel_bits = o.subpixel_bits;
     desc.arena = arena;
     desc.arena_size = arena_size;
+    desc.clear_drawn_tiles_only = !o.full_clear;
     desc.parallel_for = mote_parallel_openmp;
     desc.parallel_user = &o.threads;
     r = mote_device_init(&dev, &desc);

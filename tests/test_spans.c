@@ -647,6 +647,69 @@ void setup_should_box_a_triangle_by_the_pixel_centres_its_vertices_span(void)
     TEST_ASSERT_GREATER_THAN(10000, pixels);
 }
 
+/* clear_drawn_tiles_only: frame after frame, a scene moving across the
+ * screen (so the tiles drawn into change), with an empty frame, frames
+ * that keep colour or depth and a points draw, gives the colour and depth
+ * bytes of a device that clears everything; for tile sizes, threads and an
+ * arena that fills up. And it does skip tiles, except right after a frame
+ * that leaves them unknown. */
+#define CLEAR_FRAMES 12
+void clearing_only_the_drawn_tiles_should_give_the_frames_of_a_full_clear(void)
+{
+    static uint8_t ref[W * H * 4], got[W * H * 4];
+    static uint32_t ref_depth[W * H], got_depth[W * H];
+    static uint64_t arena_big[(8u << 20) / 8], arena_small[(96u << 10) / 8];
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    int tiles[] = {8, 64}, threads[] = {0, 2};
+    void *arenas[] = {arena_big, arena_small};
+    size_t arena_sizes[] = {sizeof arena_big, sizeof arena_small};
+    for (int ti = 0; ti < 2; ti++)
+    for (int th = 0; th < 2; th++)
+    for (int ai = 0; ai < 2; ai++) {
+        int none = 0;
+        mote_device full, lazy;
+        mote_device_desc fd = test_desc(ref, ref_depth, NULL, 0, 64, &none);
+        mote_device_desc ld = test_desc(got, got_depth, arenas[ai], arena_sizes[ai], tiles[ti], &threads[th]);
+        ld.clear_drawn_tiles_only = true;
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&full, &fd));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&lazy, &ld));
+        uint32_t skipped = 0;
+        for (int frame = 0; frame < CLEAR_FRAMES; frame++) {
+            mote_frame_desc f;
+            memset(&f, 0, sizeof f);
+            f.camera.position[2] = -6.0f;
+            f.keep_color = frame == 5;
+            f.keep_depth = frame == 9;
+            mote_mesh m = meshes[frame % 3];
+            m.position[0] = -3.0f + 0.5f * (float)frame;
+            m.scaling[0] = m.scaling[1] = m.scaling[2] = 0.5f;
+            mote_draw_desc dd;
+            memset(&dd, 0, sizeof dd);
+            dd.cull = MOTE_CULL_NONE;
+            mote_draw_desc points = dd;
+            points.mode = MOTE_MODE_POINTS;
+            mote_device *devs[2] = {&full, &lazy};
+            for (int k = 0; k < 2; k++) {
+                TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(devs[k], &f));
+                if (frame != 3)   /* an empty frame */
+                    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(devs[k], &m, &dd));
+                if (frame == 7)
+                    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(devs[k], &meshes[(frame + 1) % 3], &points));
+                TEST_ASSERT_EQUAL(MOTE_OK, mote_end(devs[k]));
+            }
+            TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+            TEST_ASSERT_EQUAL_MEMORY(ref_depth, got_depth, sizeof ref_depth);
+            uint32_t s = mote_device_stats(&lazy)->tiles_clear_skipped;
+            if (frame == 0 || frame == 6 || frame == 8 || frame == 10)   /* the first, or after keep or points */
+                TEST_ASSERT_EQUAL_UINT32(0, s);
+            skipped += s;
+            TEST_ASSERT_EQUAL_UINT32(0, mote_device_stats(&full)->tiles_clear_skipped);
+        }
+        TEST_ASSERT_TRUE(skipped > 0);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -658,5 +721,6 @@ int main(void)
     RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);
     RUN_TEST(the_clear_beside_parallel_setup_should_run_without_triangles_and_before_points);
+    RUN_TEST(clearing_only_the_drawn_tiles_should_give_the_frames_of_a_full_clear);
     return UNITY_END();
 }

@@ -41,6 +41,9 @@
  *     fills up, what is binned so far is rasterised and binning starts
  *     over: slower, never wrong. mote_arena_bytes_per_triangle() helps to
  *     size it. Mesh data and textures must stay valid until mote_end.
+ *     With desc.clear_drawn_tiles_only, mote_begin clears only the tiles
+ *     drawn into since their last clear (2 bytes per tile of the arena):
+ *     the same bytes while mote is the only writer of the buffers.
  *   - Band mode (desc.band_height < desc.height): the colour and depth buffers
  *     hold only band_height rows; mote_end produces the frame band by band and
  *     calls desc.flush after each. Full frame and bands give the same bytes.
@@ -453,6 +456,13 @@ typedef struct mote_device_desc {
     void *arena;                  /* optional binning memory (full frame only) */
     size_t arena_size;
     int tile_size;                /* 0 = 64; a power of two from 8 to 256 */
+    /* Binned mode: mote_begin clears only the tiles drawn into since their
+     * last clear, not the whole frame (a scene that covers part of the
+     * screen saves most of the clear's memory traffic). Then mote must be
+     * the only writer of color and depth between frames: draw into them
+     * yourself and the next frame may keep it. A frame with keep_color or
+     * keep_depth, points or wireframe makes the next clear a full one. */
+    bool clear_drawn_tiles_only;
     mote_parallel_for_fn parallel_for; /* NULL = tiles in order on this thread */
     void *parallel_user;
     mote_triangle_hook_fn triangle_hook; /* NULL: none */
@@ -469,6 +479,7 @@ typedef struct mote_stats {
     uint32_t triangles_degenerate;        /* zero snapped area, or no pixel centre in its box */
     uint32_t triangles_drawn;             /* set up and rasterised */
     uint32_t tiles_empty, tiles_drawn;    /* binned mode */
+    uint32_t tiles_clear_skipped;         /* clear_drawn_tiles_only: tiles still clear, not cleared */
     uint32_t arena_flushes;               /* binned mode: times the arena filled up */
     uint64_t pixels_tested, pixels_written;
 } mote_stats;

@@ -27,6 +27,10 @@ typedef struct mote__bin {
     bool group;                   /* a group's private copy of the device: never flushes */
     bool overflowed;              /* that group ran out of its slice of the arena */
     bool groups_linked;           /* since the last reset: triangles binned on other cores */
+    /* clear_drawn_tiles_only: a byte per tile, in the arena before base:
+     * drawn into in this frame (the tile jobs set it), and since the last
+     * clear as mote_begin found it (what the clear reads) */
+    unsigned char *drawn_now, *drawn_before;
 } mote__bin;
 
 #endif

@@ -58,11 +58,30 @@ void mote__bin_reset(mote_device *dev)
 void mote__bin_begin(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
+    if (b->drawn_now) {
+        /* clear_drawn_tiles_only: this frame's clear covers the tiles drawn
+         * into since the last one (all that is not clear). A frame keeping
+         * a buffer leaves it unknown: the next clear is a full one. */
+        size_t n = (size_t)b->tiles_x * (size_t)b->tiles_y;
+        unsigned char *before = b->drawn_now;
+        b->drawn_now = b->drawn_before;
+        b->drawn_before = before;
+        memset(b->drawn_now, dev->frame.keep_color || dev->frame.keep_depth, n);
+        for (size_t i = 0; i < n; i++)
+            dev->stats.tiles_clear_skipped += !before[i];
+    }
     size_t shared = b->shared;
     mote__bin_reset(dev);
     if (shared > b->batch_start)
         memset(b->base + b->batch_start, 0, shared - b->batch_start);
     b->shared = 0;
+}
+
+void mote__bin_mark_all_drawn(mote_device *dev)
+{
+    mote__bin *b = &dev->bin;
+    if (b->drawn_now)
+        memset(b->drawn_now, 1, (size_t)b->tiles_x * (size_t)b->tiles_y);
 }
 
 void *mote__bin_alloc(mote_device *dev, size_t bytes)
@@ -172,6 +191,8 @@ static void mote__raster_tile(void *arg, int index)
     mote__tile *tile = &((mote__tile *)b->tiles)[index];
     if (!tile->head)
         return;
+    if (b->drawn_now)
+        b->drawn_now[index] = 1;
     int ts = 1 << b->tile_shift;
     int tx = index % b->tiles_x, ty = index / b->tiles_x;
     mote__rect r = {tx * ts, ty * ts, MOTE__MIN((tx + 1) * ts, dev->desc.width),

@@ -108,6 +108,16 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
             b->tile_shift++;
         b->tiles_x = (d.width + d.tile_size - 1) / d.tile_size;
         b->tiles_y = (d.height + d.tile_size - 1) / d.tile_size;
+        /* clear_drawn_tiles_only: two bytes per tile at the arena's start,
+         * kept from frame to frame; the first clear is a full one */
+        size_t tiles = (size_t)b->tiles_x * (size_t)b->tiles_y, marks = (2 * tiles + 7u) & ~(size_t)7u;
+        if (MOTE_ENABLE_BINNING && d.clear_drawn_tiles_only && d.arena_size > marks) {
+            b->drawn_before = b->base;
+            b->drawn_now = b->base + tiles;
+            memset(b->drawn_now, 1, tiles);
+            b->base += marks;
+            b->size -= marks;
+        }
 #if MOTE_ENABLE_BINNING  /* bin.c's functions exist only then */
         /* worth binning only with room for the tile table and some triangles */
         b->enabled = d.arena_size >= mote__bin_table_bytes(dev) + 64 * mote_arena_bytes_per_triangle() + 4096;
@@ -203,16 +213,6 @@ void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect
 
 /* ---- the frame ----------------------------------------------------------- */
 
-void mote__clear_stripe(const mote_device *dev, int index)
-{
-    int h = dev->desc.height;
-    mote__target tg;
-    mote__counts count = {0, 0};
-    mote__full_target(dev, &tg, &count);
-    mote__rect r = {0, h * index / MOTE__CLEAR_STRIPES, dev->desc.width, h * (index + 1) / MOTE__CLEAR_STRIPES};
-    mote__clear_rect(dev, &tg, r);
-}
-
 static bool mote__band_mode(const mote_device *dev)
 {
     return dev->desc.band_height < dev->desc.height;
@@ -221,6 +221,39 @@ static bool mote__band_mode(const mote_device *dev)
 static bool mote__binned(const mote_device *dev)
 {
     return dev->bin.enabled && !mote__band_mode(dev);
+}
+
+void mote__clear_stripe(const mote_device *dev, int index)
+{
+    int h = dev->desc.height;
+    mote__target tg;
+    mote__counts count = {0, 0};
+    mote__full_target(dev, &tg, &count);
+    mote__rect r = {0, h * index / MOTE__CLEAR_STRIPES, dev->desc.width, h * (index + 1) / MOTE__CLEAR_STRIPES};
+    const unsigned char *drawn = dev->bin.drawn_before;
+    if (!MOTE_ENABLE_BINNING || !drawn || !mote__binned(dev)) {
+        mote__clear_rect(dev, &tg, r);
+        return;
+    }
+    /* only the tiles drawn into since the last clear: runs of them per
+     * row of tiles (the stripe's rows need not start a tile row) */
+    const int s = dev->bin.tile_shift, tiles_x = dev->bin.tiles_x;
+    for (int y = r.y0; y < r.y1;) {
+        const int ty = y >> s, y1 = MOTE__MIN(r.y1, (ty + 1) << s);
+        const unsigned char *row = drawn + (size_t)ty * (size_t)tiles_x;
+        for (int tx = 0; tx < tiles_x;) {
+            if (!row[tx]) {
+                tx++;
+                continue;
+            }
+            int t0 = tx;
+            while (tx < tiles_x && row[tx])
+                tx++;
+            mote__rect run = {t0 << s, y, MOTE__MIN(r.x1, tx << s), y1};
+            mote__clear_rect(dev, &tg, run);
+        }
+        y = y1;
+    }
 }
 
 mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
@@ -318,6 +351,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
         if (MOTE_ENABLE_BINNING && mote__binned(dev)) {
             r = mote__bin_run_draws(dev);
             mote__bin_flush(dev);
+            mote__bin_mark_all_drawn(dev);   /* not through the tiles */
         }
         mote_result drawn = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all);
         r = r != MOTE_OK ? r : drawn;

@@ -333,6 +333,9 @@ void mote__bin_begin(mote_device *dev);
 void *mote__bin_alloc(mote_device *dev, size_t bytes);
 bool mote__bin_triangle(mote_device *dev, const mote__tri *t);
 void mote__bin_flush(mote_device *dev);
+/* clear_drawn_tiles_only: pixels were drawn outside the tiles (points,
+ * wireframe): the next clear is a full one. */
+void mote__bin_mark_all_drawn(mote_device *dev);
 void *mote__bin_top_alloc(mote_device *dev, size_t bytes);
 void mote__bin_top_release(mote_device *dev, size_t bytes);
 /* Whether mote_draw records binned draws for mote__bin_run_draws, which
