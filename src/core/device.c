@@ -108,8 +108,12 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
             b->tile_shift++;
         b->tiles_x = (d.width + d.tile_size - 1) / d.tile_size;
         b->tiles_y = (d.height + d.tile_size - 1) / d.tile_size;
+        if (((uintptr_t)d.arena & 7u) != 0)
+            return MOTE_ERR_INVALID_ARGUMENT;
         /* clear_drawn_tiles_only: two bytes per tile at the arena's start,
-         * kept from frame to frame; the first clear is a full one */
+         * kept from frame to frame; the first clear is a full one. Written
+         * only once the description is accepted: a refused device touches
+         * no byte of the caller's. */
         size_t tiles = (size_t)b->tiles_x * (size_t)b->tiles_y, marks = (2 * tiles + 7u) & ~(size_t)7u;
         if (MOTE_ENABLE_BINNING && d.clear_drawn_tiles_only && d.arena_size > marks) {
             b->drawn_before = b->base;
@@ -120,10 +124,8 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
         }
 #if MOTE_ENABLE_BINNING  /* bin.c's functions exist only then */
         /* worth binning only with room for the tile table and some triangles */
-        b->enabled = d.arena_size >= mote__bin_table_bytes(dev) + 64 * mote_arena_bytes_per_triangle() + 4096;
+        b->enabled = b->size >= mote__bin_table_bytes(dev) + 64 * mote_arena_bytes_per_triangle() + 4096;
 #endif
-        if (((uintptr_t)d.arena & 7u) != 0)
-            return MOTE_ERR_INVALID_ARGUMENT;
     }
     mote__mat4_identity(dev->view_proj);
     mote__mat4_identity(dev->view);

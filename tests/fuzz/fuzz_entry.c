@@ -175,6 +175,7 @@ typedef struct fz_config {
     int tile_size;                        /* 0 = default */
     int arena_kind;                       /* 0 none, 1 roomy, 2 tiny (forces flushes) */
     int parallel;                         /* 0 none, 1 in order, 2 reversed, 3 interleaved */
+    bool clear_drawn_only;                /* desc.clear_drawn_tiles_only, after a frame from elsewhere */
     mote_rgba clear_color;
     float clear_depth;
     int broken;                           /* > 0: one field made invalid, init must fail */
@@ -405,6 +406,7 @@ static void fz_config_read(fz_reader *r, fz_config *c)
     c->tile_size = tm % 7 == 6 ? 0 : 8 << (tm % 6);  /* 8..256 */
     c->arena_kind = (bm >> 1) % 3;
     c->parallel = (bm >> 3) % 4;
+    c->clear_drawn_only = (bm & 0x40) != 0;
     uint8_t cc = fz_u8(r);
     if (cc & 1) {
         c->clear_color.r = fz_u8(r);
@@ -535,6 +537,7 @@ static const char *fz_render(const fz_config *c, const fz_scene *s, bool canon, 
     d.subpixel_bits = c->subpixel_bits;
     d.band_height = c->band_height;
     d.tile_size = c->tile_size;
+    d.clear_drawn_tiles_only = c->clear_drawn_only;
     if (!fz_buf_alloc(&color, (size_t)stride * (size_t)rows))
         goto done;
     d.color = color.p;
@@ -615,6 +618,26 @@ static const char *fz_render(const fz_config *c, const fz_scene *s, bool canon, 
         goto done;
     }
 
+    /* clear_drawn_tiles_only: first a frame from another viewpoint, whose
+     * pixels the frames below must clear where they do not draw (the plain
+     * render they are compared with never saw it) */
+    if (c->clear_drawn_only && !c->broken && !out->band) {
+        mote_frame_desc elsewhere = s->frame;
+        elsewhere.camera.position[0] += 0.75f;
+        elsewhere.camera.position[1] -= 0.5f;
+        elsewhere.keep_color = elsewhere.keep_depth = false;
+        if (mote_begin(dev, &elsewhere) != MOTE_OK) {
+            err = "mote_begin: unexpected result";
+            goto done;
+        }
+        for (int i = 0; i < s->draw_count; i++)
+            (void)mote_draw(dev, canon ? &s->mesh_canon[s->draw_mesh[i]] : &s->mesh[s->draw_mesh[i]],
+                            s->draw_null_desc[i] ? NULL : &s->draw[i]);
+        if (mote_end(dev) != MOTE_OK) {
+            err = "mote_end: unexpected result";
+            goto done;
+        }
+    }
     for (int frame = 0; frame < 2; frame++) {
         r = mote_begin(dev, &s->frame);
         if (r != (c->broken ? MOTE_ERR_STATE : MOTE_OK)) {
@@ -794,6 +817,7 @@ const char *mote_fuzz_draw(const uint8_t *data, size_t size)
         ref.arena_kind = 0;
         ref.parallel = 0;
         ref.stride_pad = 0;
+        ref.clear_drawn_only = false;
         err = fz_render(&ref, s, true, &b);
         if (!err && b.all_ok) {
             size_t bytes = (size_t)cfg.width * (size_t)cfg.height
