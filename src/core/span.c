@@ -292,7 +292,7 @@ typedef struct mote__fill_ctx {
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
     mote__tex_view tx;
     uint64_t tex_origin[2];       /* mote__texel_pow2: a0 of u and v, times 2^(k-20) */
-    int seg_len, seg_log2;
+    int seg_log2;                 /* sub-span: segments of 2^seg_log2 columns */
     uint64_t affine_r;            /* affine: all qi are 1, Q is (nearly) constant: one r */
 } mote__fill_ctx;
 
@@ -310,12 +310,12 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     const int64_t nrdx = c->ndx[MOTE__A_R], ngdx = c->ndx[MOTE__A_G], nbdx = c->ndx[MOTE__A_B];
     const int64_t nudx = c->ndx[MOTE__A_U], nvdx = c->ndx[MOTE__A_V];
     uint32_t sr = c->sr, sg = c->sg, sb = c->sb;
-    /* sub-span: r exact at screen columns that are multiples of seg_len,
+    /* sub-span: r exact at screen columns that are multiples of 2^seg_log2,
      * linear between, so where a region starts a row changes nothing */
     uint64_t seg_r0 = 0, seg_r1 = 0;
     int64_t seg_step = 0;
     ptrdiff_t seg_x0 = 0, seg_x1 = x0;
-    bool seg_exact = false, have_r1 = false;
+    bool seg_exact = true;        /* until a segment with both ends valid: no r1 to reuse */
     uint32_t rejected = 0;        /* counted rather than the written ones: rare */
 
     for (ptrdiff_t x = x0; x < x1; x++, z = mote__plane_next(z, zdx), q = mote__plane_next(q, qdx),
@@ -344,21 +344,21 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 if (x >= seg_x1) {
                     /* the segment's start is the last one's end, whose r is
                      * known, unless depth-rejected pixels skipped a segment */
-                    const bool reuse = have_r1 && (x & ~(c->seg_len - 1)) == seg_x1;
-                    seg_x0 = x & ~(c->seg_len - 1);
-                    seg_x1 = seg_x0 + c->seg_len;
+                    const ptrdiff_t len = (ptrdiff_t)1 << c->seg_log2, start = x & -len;
+                    const bool reuse = !seg_exact && start == seg_x1;
+                    seg_x0 = start;
+                    seg_x1 = start + len;
                     int64_t qa = mote__plane_at(q, qdx, seg_x0 - x);
                     int64_t qb = mote__plane_at(q, qdx, seg_x1 - x);
                     /* an end outside the triangle may have no valid Q:
                      * then this segment is exact at every pixel */
                     seg_exact = (qa >> shift) <= 0 || (qb >> shift) <= 0;
-                    have_r1 = !seg_exact;
                     if (!seg_exact) {
                         seg_r0 = reuse ? seg_r1 : mote__recip_k(qa, shift, k);
                         seg_r1 = mote__recip_k(qb, shift, k);
-                        /* (r1 - r0) / seg_len, rounded toward zero, by a shift */
+                        /* (r1 - r0) / len, rounded toward zero, by a shift */
                         int64_t d = (int64_t)seg_r1 - (int64_t)seg_r0;
-                        seg_step = mote__floor_shift64(d + ((c->seg_len - 1) & -(int64_t)(d < 0)), c->seg_log2);
+                        seg_step = mote__floor_shift64(d + ((len - 1) & -(int64_t)(d < 0)), c->seg_log2);
                     }
                 }
                 r = seg_exact ? mote__recip_k(q, shift, k) : seg_r0 + (uint64_t)(seg_step * (x - seg_x0));
@@ -517,10 +517,8 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
             c.tex_origin[1] = (uint64_t)c.a0[MOTE__A_V] << (k - 20);
         }
     }
-    if (MOTE_ENABLE_SUBSPAN) {
+    if (MOTE_ENABLE_SUBSPAN)
         c.seg_log2 = rs->subspan_log2;
-        c.seg_len = 1 << c.seg_log2;
-    }
     if (varying && persp == MOTE__PERSP_AFFINE)
         c.affine_r = mote__recip_k(t->q, t->shift, k);
 #if MOTE_SPECIALISE_SPANS

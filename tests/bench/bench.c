@@ -947,7 +947,7 @@ static bench_scene *scene_named(const char *prefix)
 
 /* Each core alone, in turns, on the goal mode of the 1080p scene: the
  * fastest runs the single-thread timings (see bench_pin), and core_speed[]
- * (fastest first, relative to it) gives the speed-up the cores allow. */
+ * (ascending, relative to the fastest) gives the speed-up the cores allow. */
 static double core_speed[BENCH_MAX_CPUS];
 static int core_count;
 static char cores_line[1024] = "not measured";
@@ -990,11 +990,6 @@ static void check_cores(void)
         len += (size_t)snprintf(cores_line + len, sizeof cores_line - len, " cpu%d %.3f", ids[i], t[i].med);
     }
     qsort(core_speed, (size_t)n, sizeof core_speed[0], bench_cmp_double);
-    for (int i = 0; i < n / 2; i++) {     /* fastest first */
-        double v = core_speed[i];
-        core_speed[i] = core_speed[n - 1 - i];
-        core_speed[n - 1 - i] = v;
-    }
     if (len < sizeof cores_line)
         snprintf(cores_line + len, sizeof cores_line - len, "; single-thread timings run on cpu%d", fast_cpu);
 }
@@ -1007,7 +1002,7 @@ static double ideal_speedup(int th)
         return th;
     double sum = 0.0;
     for (int i = 0; i < th && i < core_count; i++)
-        sum += core_speed[i];
+        sum += core_speed[core_count - 1 - i];
     return sum;
 }
 
