@@ -468,6 +468,68 @@ void binned_draws_set_up_in_groups_should_match_the_serial_path(void)
         }
 }
 
+/* A draw larger than its share of the frame is set up in pieces, on
+ * several cores, from one vertex cache prepared first (bin.c). One big
+ * draw between two small ones, the camera inside the scene so that
+ * triangles are clipped at the near plane, both windings culled in turn:
+ * the bytes and counts must be those of direct drawing, whatever the
+ * threads, also when the arena is too small for the pieces' slices. */
+void a_draw_cut_into_pieces_should_match_drawing_it_whole(void)
+{
+    enum { BIG = 2400 };
+    static uint32_t big_indices[BIG * 3];
+    static uint8_t ref[W * H * 4], got[W * H * 4];
+    static uint32_t depth[W * H];
+    static uint64_t arena_big[(8u << 20) / 8], arena_small[(160u << 10) / 8];
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    for (int i = 0; i < BIG * 3; i++)
+        big_indices[i] = next_u32() % NV;
+    meshes[1].indices = big_indices;
+    meshes[1].index_count = BIG * 3;
+    mote_mode modes[] = {MOTE_MODE_TEXTURED, MOTE_MODE_FLAT, MOTE_MODE_GOURAUD};
+    for (int mi = 0; mi < 3; mi++) {
+        mote_draw_desc dd;
+        memset(&dd, 0, sizeof dd);
+        dd.mode = modes[mi];
+        dd.cull = mi == 2 ? MOTE_CULL_FRONT : MOTE_CULL_BACK;
+        mote_stats direct, st;
+        for (int run = 0; run < 7; run++) {
+            /* direct, then 1, 2, 3 and 17 threads, then small arenas on 0 and 2 */
+            static const int run_threads[7] = {0, 1, 2, 3, 17, 0, 2};
+            int threads = run_threads[run];
+            void *arena = run == 0 ? NULL : run < 5 ? (void *)arena_big : (void *)arena_small;
+            size_t arena_size = run == 0 ? 0 : run < 5 ? sizeof arena_big : sizeof arena_small;
+            uint8_t *out = run == 0 ? ref : got;
+            memset(got, 0, sizeof got);
+            mote_device dev;
+            mote_device_desc d = test_desc(out, depth, arena, arena_size, 16, &threads);
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+            mote_frame_desc f;
+            memset(&f, 0, sizeof f);
+            f.camera.position[2] = -2.2f;
+            f.camera.znear = 0.3f;
+            f.light_count = 1;
+            f.lights[0].type = MOTE_LIGHT_POINT;
+            f.lights[0].position[1] = 3.0f;
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+            for (int m = 0; m < 3; m++)
+                TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[m], &dd));
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+            st = *mote_device_stats(&dev);
+            if (run == 0) {
+                direct = st;
+                TEST_ASSERT_TRUE(direct.triangles_clipped_away > 0 && direct.triangles_backface > 0);
+                TEST_ASSERT_TRUE(direct.triangles_drawn > 1000);
+                continue;
+            }
+            TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+            assert_same_counts(&direct, &st, false);
+            TEST_ASSERT_EQUAL_UINT32(3, st.draws);
+        }
+    }
+}
+
 /* With parallel setup the frame's clear waits for the draws and runs beside
  * their setup: a frame with nothing to set up, or whose first draw is
  * points (drawn at once), must still start from a cleared frame. */
@@ -720,6 +782,7 @@ int main(void)
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);
+    RUN_TEST(a_draw_cut_into_pieces_should_match_drawing_it_whole);
     RUN_TEST(the_clear_beside_parallel_setup_should_run_without_triangles_and_before_points);
     RUN_TEST(clearing_only_the_drawn_tiles_should_give_the_frames_of_a_full_clear);
     return UNITY_END();

@@ -36,8 +36,10 @@
  *     mote_parallel_openmp in <mote/mote_io.h>). With parallel_for (and no
  *     triangle_hook), mote_draw only records a triangle draw, and mote_end
  *     (or every MOTE_MAX_DRAWS-th draw) sets the recorded draws up in
- *     parallel, in groups of whole draws: a frame of many meshes uses every
- *     thread for setup too; one big mesh is set up on one. When the arena
+ *     parallel groups: a frame of many meshes uses every thread for setup
+ *     too, and so does one big mesh, whose triangles are cut into pieces
+ *     (from 256 triangles; its vertices are transformed and lit first, in
+ *     parallel, also those only back faces use). When the arena
  *     fills up, what is binned so far is rasterised and binning starts
  *     over: slower, never wrong. mote_arena_bytes_per_triangle() helps to
  *     size it. Mesh data and textures must stay valid until mote_end.

@@ -243,29 +243,53 @@ void mote__bin_flush(mote_device *dev)
 /* ---- binning in parallel ------------------------------------------------ */
 
 /* With desc.parallel_for (and no triangle hook), mote_draw records binned
- * draws and mote__bin_run_draws sets them up in groups of whole draws, one
- * task each. A group bins through a private copy of the device: its own
- * slice of the free arena, its own tile table, its statistics from zero.
- * Then each tile's group lists are linked in group order after the
- * device's, so every tile lists its triangles in submission order and the
- * bytes are those of the serial path, for any thread count. A group whose
- * slice runs out stops, and the whole batch is binned serially instead,
- * which flushes a full arena as usual. The groups depend on the draws
- * alone; a single draw is binned serially, or as one group when the
- * frame's clear is still to run: its stripes are tasks of the same batch,
- * beside the setup, which touches no pixel (a group never flushes). */
+ * draws and mote__bin_run_draws sets them up in parallel groups, one task
+ * each. The frame's draws are cut into parts: a draw whole, or one larger
+ * than a group's share of the frame in pieces of its triangles, so that a
+ * frame of one big mesh is set up on every core too. A group bins a run of
+ * parts through a private copy of the device: its own slice of the free
+ * arena, its own tile table, its statistics from zero. Then each tile's
+ * group lists are linked in group order after the device's, so every tile
+ * lists its triangles in submission order and the bytes are those of the
+ * serial path, for any thread count. The vertices of a draw in pieces are
+ * transformed and lit first, in parallel chunks, into one cache that its
+ * pieces only read. A group whose slice runs out stops, and the whole
+ * batch is binned serially instead, which flushes a full arena as usual.
+ * The parts depend on the draws alone; a single small draw is binned
+ * serially, or as one group when the frame's clear is still to run: its
+ * stripes are tasks of the first parallel step, beside the setup, which
+ * touches no pixel (a group never flushes). */
 #define MOTE__BIN_GROUPS 16
+/* a draw is cut into pieces of at least this many triangles (64 and 256
+ * were slower for Suzanne at 1080p on 2 threads) */
+#define MOTE__PIECE_MIN 128
+/* and its vertices prepared in tasks of at least this many */
+#define MOTE__VERTEX_CHUNK 256
+
+typedef struct mote__part {
+    int draw;
+    mote__piece piece;
+} mote__part;
 
 typedef struct mote__group {
     mote_device dev;
-    int first, end;               /* draws [first, end) */
+    int first, end;               /* parts [first, end) */
     mote_result result;
 } mote__group;
 
+/* A draw in pieces: its vertex cache, prepared in chunks tasks. */
+typedef struct mote__cut {
+    int draw, chunks;
+    void *cache;
+} mote__cut;
+
 typedef struct mote__batch {
-    const mote_device *dev;
+    mote_device *dev;
     mote__group *groups;
-    int group_count;              /* tasks past these are clear stripes */
+    int group_count;
+    mote__part *parts;
+    mote__cut *cuts;              /* their chunks are the first step's tasks */
+    int tasks;                    /* a step's tasks past these are clear stripes */
 } mote__batch;
 
 bool mote__bin_defers(const mote_device *dev)
@@ -273,30 +297,56 @@ bool mote__bin_defers(const mote_device *dev)
     return dev->desc.parallel_for && !dev->desc.triangle_hook;
 }
 
-/* Bins the recorded draws [first, end) of dev through target (dev itself,
- * or a group's copy, which stops when its slice is full); the first error. */
-static mote_result mote__bin_draws(mote_device *target, const mote_device *dev, int first, int end)
+static uint32_t mote__draw_triangles(const mote__draw *d)
 {
-    mote_result result = MOTE_OK;
+    return d->mesh->indices ? d->mesh->index_count / 3 : 0;
+}
+
+/* Bins a draw or a piece of it through target (dev itself, or a group's
+ * copy, which stops when its slice is full). */
+static mote_result mote__bin_part(mote_device *target, const mote_device *dev, int draw, const mote__piece *piece)
+{
     mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
-    for (int i = first; i < end && !target->bin.overflowed; i++) {
-        mote_result r = mote__process_draw(target, dev->draws[i].mesh, &dev->draws[i].desc,
-                                           MOTE__SINK_BIN, NULL, all);
-        if (r != MOTE_OK && result == MOTE_OK)
-            result = r;
-    }
-    return result;
+    return mote__process_draw(target, dev->draws[draw].mesh, &dev->draws[draw].desc, MOTE__SINK_BIN, NULL, all,
+                              piece);
+}
+
+/* A step's task index past its own tasks: a stripe of the frame's clear. */
+static bool mote__stripe_task(const mote__batch *batch, int index)
+{
+    if (index < batch->tasks)
+        return false;
+    mote__clear_stripe(batch->dev, index - batch->tasks);
+    return true;
+}
+
+static void mote__prepare_task(void *arg, int index)
+{
+    const mote__batch *batch = (const mote__batch *)arg;
+    if (mote__stripe_task(batch, index))
+        return;
+    const mote__cut *c = batch->cuts;
+    while (index >= c->chunks)
+        index -= c++->chunks;
+    const mote__draw *d = &batch->dev->draws[c->draw];
+    uint32_t n = d->mesh->vertex_count, k = (uint32_t)index, chunks = (uint32_t)c->chunks;
+    mote__prepare_vertices(batch->dev, d->mesh, &d->desc, c->cache, (uint32_t)((uint64_t)n * k / chunks),
+                           (uint32_t)((uint64_t)n * (k + 1) / chunks));
 }
 
 static void mote__bin_group(void *arg, int g)
 {
     const mote__batch *batch = (const mote__batch *)arg;
-    if (g >= batch->group_count) {
-        mote__clear_stripe(batch->dev, g - batch->group_count);
+    if (mote__stripe_task(batch, g))
         return;
-    }
     mote__group *gr = &batch->groups[g];
-    gr->result = mote__bin_draws(&gr->dev, batch->dev, gr->first, gr->end);
+    gr->result = MOTE_OK;
+    for (int p = gr->first; p < gr->end && !gr->dev.bin.overflowed; p++) {
+        const mote__part *part = &batch->parts[p];
+        mote_result r = mote__bin_part(&gr->dev, batch->dev, part->draw, &part->piece);
+        if (r != MOTE_OK && gr->result == MOTE_OK)
+            gr->result = r;
+    }
 }
 
 static void mote__stats_add(mote_stats *to, const mote_stats *from)
@@ -316,25 +366,74 @@ static void mote__stats_add(mote_stats *to, const mote_stats *from)
     to->pixels_written += from->pixels_written;
 }
 
-/* Arena bytes a draw's triangles take, about (a typical few tiles each):
- * what the slices are sized by. */
-static size_t mote__draw_bytes(const mote__draw *d)
+/* What cutting a batch's draws gives: parts, cuts and their vertex tasks,
+ * the cuts' caches, and the largest cache of a draw not cut (a group's
+ * private one). */
+typedef struct mote__cut_sizes {
+    int parts, cuts, chunks;
+    size_t cut_bytes, uncut_cache;
+} mote__cut_sizes;
+
+/* Cuts the draws [0, n) into parts, in pieces of at least a group's share
+ * of the batch's triangles and at most MOTE__BIN_GROUPS per draw, and
+ * writes them and the cuts when parts and cuts are not NULL. */
+static mote__cut_sizes mote__bin_cut(const mote_device *dev, int n, mote__part *parts, mote__cut *cuts)
 {
-    return (size_t)(d->mesh->index_count / 3) * mote_arena_bytes_per_triangle()
+    mote__cut_sizes sz = {0, 0, 0, 0, 0};
+    uint64_t total = 0;
+    for (int i = 0; i < n; i++)
+        total += mote__draw_triangles(&dev->draws[i]);
+    uint64_t share = MOTE__MAX((total + MOTE__BIN_GROUPS - 1) / MOTE__BIN_GROUPS, (uint64_t)MOTE__PIECE_MIN);
+    for (int i = 0; i < n; i++) {
+        const mote__draw *d = &dev->draws[i];
+        uint32_t tris = mote__draw_triangles(d);
+        size_t cache = mote__align(mote__vertex_cache_bytes(d->mesh));
+        uint32_t pieces = (uint32_t)MOTE__MIN(tris / share, (uint64_t)MOTE__BIN_GROUPS);
+        if (pieces < 2 || cache == 0) {   /* 0: a cache too large to count */
+            pieces = 1;
+            sz.uncut_cache = MOTE__MAX(sz.uncut_cache, cache);
+        } else {
+            int chunks = (int)MOTE__MIN(MOTE__MAX(d->mesh->vertex_count / MOTE__VERTEX_CHUNK, 1u),
+                                        (uint32_t)MOTE__BIN_GROUPS);
+            if (cuts) {
+                cuts[sz.cuts].draw = i;
+                cuts[sz.cuts].chunks = chunks;
+            }
+            sz.cuts++;
+            sz.chunks += chunks;
+            sz.cut_bytes += cache;
+        }
+        for (uint32_t k = 0; k < pieces; k++, sz.parts++) {
+            if (!parts)
+                continue;
+            parts[sz.parts].draw = i;
+            parts[sz.parts].piece.tri0 = (uint32_t)((uint64_t)tris * k / pieces);
+            parts[sz.parts].piece.tri1 = (uint32_t)((uint64_t)tris * (k + 1) / pieces);
+            parts[sz.parts].piece.vertices = NULL;   /* the cut's cache, once placed */
+        }
+    }
+    return sz;
+}
+
+/* Arena bytes a part's triangles take, about (a typical few tiles each):
+ * what the slices are sized by. */
+static size_t mote__part_bytes(const mote__part *p)
+{
+    return (size_t)(p->piece.tri1 - p->piece.tri0) * mote_arena_bytes_per_triangle()
          + mote__align(sizeof(mote__raster_state));
 }
 
-/* Splits draws [0, n) into groups of about equal arena bytes, each with at
- * least one draw, and gives each a slice of [from, to): its estimate plus
+/* Splits parts [0, n) into groups of about equal arena bytes, each with at
+ * least one part, and gives each a slice of [from, to): its estimate plus
  * a list block per tile when all fit so, else a share of the space in
  * proportion. A slice's unused end stays unused until the next flush, so
  * the slices are no larger than that. */
-static void mote__bin_plan(const mote_device *dev, mote__group *gr, int groups, int n,
+static void mote__bin_plan(const mote_device *dev, const mote__part *parts, mote__group *gr, int groups, int n,
                            size_t from, size_t to)
 {
     size_t total = 0, est[MOTE__BIN_GROUPS], sum = 0;
     for (int i = 0; i < n; i++)
-        total += mote__draw_bytes(&dev->draws[i]);
+        total += mote__part_bytes(&parts[i]);
     size_t done = 0, blocks = (size_t)dev->bin.tiles_x * (size_t)dev->bin.tiles_y * sizeof(mote__block);
     int i = 0;
     for (int g = 0; g < groups; g++) {
@@ -342,7 +441,7 @@ static void mote__bin_plan(const mote_device *dev, mote__group *gr, int groups, 
         gr[g].first = i;
         est[g] = blocks;
         while (i < n - (groups - 1 - g) && (i == gr[g].first || g == groups - 1 || done < target)) {
-            size_t bytes = mote__draw_bytes(&dev->draws[i]);
+            size_t bytes = mote__part_bytes(&parts[i]);
             done += bytes;
             est[g] += bytes;
             i++;
@@ -370,39 +469,58 @@ mote_result mote__bin_run_draws(mote_device *dev)
     int n = dev->draw_count;
     dev->draw_count = 0;
     mote__bin *b = &dev->bin;
-    int groups = MOTE__MIN(n, MOTE__BIN_GROUPS);
-    size_t table = mote__bin_table_bytes(dev), cache = 0;
-    for (int i = 0; i < n; i++)
-        cache = MOTE__MAX(cache, mote__align(mote__vertex_cache_bytes(dev->draws[i].mesh)));
-    /* per group: its device, tile table and vertex cache */
-    size_t head = mote__align((size_t)groups * sizeof(mote__group)), free = b->top - b->used;
-    size_t each = table + cache, scratch = 0;
-    mote__group *gr = NULL;
+    mote__cut_sizes sz = mote__bin_cut(dev, n, NULL, NULL);
+    int groups = MOTE__MIN(sz.parts, MOTE__BIN_GROUPS);
+    size_t table = mote__bin_table_bytes(dev), cache = sz.uncut_cache;
+    /* the groups, parts and cuts; per group its device, tile table and
+     * vertex cache; the cuts' caches */
+    size_t gbytes = mote__align((size_t)groups * sizeof(mote__group));
+    size_t pbytes = mote__align((size_t)sz.parts * sizeof(mote__part));
+    size_t head = gbytes + pbytes + mote__align((size_t)sz.cuts * sizeof(mote__cut)) + sz.cut_bytes;
+    size_t free = b->top - b->used, each = table + cache, scratch = 0;
+    unsigned char *mem = NULL;
     /* a single group is worth its copy when the frame's clear runs beside it */
     int least = dev->clear_pending ? 1 : 2;
     if (groups >= least && head < free && cache < free && each <= (free - head) / (size_t)groups) {
         scratch = head + (size_t)groups * each;
-        gr = (mote__group *)mote__bin_top_alloc(dev, scratch);
+        mem = (unsigned char *)mote__bin_top_alloc(dev, scratch);
     }
     mote_result result = MOTE_OK;
-    if (gr) {
-        for (int g = 0; g < groups; g++) {
+    if (mem) {
+        mote__group *gr = (mote__group *)(void *)mem;
+        mote__batch batch = {dev, gr, groups, (mote__part *)(void *)(mem + gbytes),
+                             (mote__cut *)(void *)(mem + gbytes + pbytes), 0};
+        mote__bin_cut(dev, n, batch.parts, batch.cuts);
+        unsigned char *place = mem + head - sz.cut_bytes;
+        for (int c = 0; c < sz.cuts; c++) {
+            mote__cut *cut = &batch.cuts[c];
+            cut->cache = place;
+            place += mote__align(mote__vertex_cache_bytes(dev->draws[cut->draw].mesh));
+            for (int p = 0; p < sz.parts; p++)
+                if (batch.parts[p].draw == cut->draw)
+                    batch.parts[p].piece.vertices = cut->cache;
+        }
+        for (int g = 0; g < groups; g++, place += each) {
             mote_device *gd = &gr[g].dev;
-            unsigned char *own = (unsigned char *)gr + head + (size_t)g * each;
             *gd = *dev;
             memset(&gd->stats, 0, sizeof gd->stats);
-            gd->bin.tiles = own;
-            memset(own, 0, table);
-            gd->bin.cache = own + table;
+            gd->bin.tiles = place;
+            memset(place, 0, table);
+            gd->bin.cache = place + table;
             gd->bin.cache_size = cache;
             gd->bin.triangles = 0;
             gd->bin.group = true;
             gd->bin.overflowed = false;
         }
-        mote__bin_plan(dev, gr, groups, n, b->used, b->top);
+        mote__bin_plan(dev, batch.parts, gr, groups, sz.parts, b->used, b->top);
         int stripes = dev->clear_pending ? MOTE__CLEAR_STRIPES : 0;
         dev->clear_pending = false;
-        mote__batch batch = {dev, gr, groups};
+        if (sz.chunks > 0) {      /* the cuts' vertices first, the clear beside them */
+            batch.tasks = sz.chunks;
+            dev->desc.parallel_for(dev->desc.parallel_user, sz.chunks + stripes, mote__prepare_task, &batch);
+            stripes = 0;
+        }
+        batch.tasks = groups;
         dev->desc.parallel_for(dev->desc.parallel_user, groups + stripes, mote__bin_group, &batch);
         bool overflowed = false;
         for (int g = 0; g < groups; g++)
@@ -411,15 +529,15 @@ mote_result mote__bin_run_draws(mote_device *dev)
             mote__tile *tiles = (mote__tile *)b->tiles;
             int count = b->tiles_x * b->tiles_y;
             for (int g = 0; g < groups; g++) {
-                const mote__tile *own = (const mote__tile *)gr[g].dev.bin.tiles;
+                const mote__tile *tl = (const mote__tile *)gr[g].dev.bin.tiles;
                 for (int t = 0; t < count; t++) {
-                    if (!own[t].head)
+                    if (!tl[t].head)
                         continue;
                     if (tiles[t].tail)
-                        ((mote__block *)(void *)(b->base + tiles[t].tail))->next = own[t].head;
+                        ((mote__block *)(void *)(b->base + tiles[t].tail))->next = tl[t].head;
                     else
-                        tiles[t].head = own[t].head;
-                    tiles[t].tail = own[t].tail;
+                        tiles[t].head = tl[t].head;
+                    tiles[t].tail = tl[t].tail;
                 }
                 mote__stats_add(&dev->stats, &gr[g].dev.stats);
                 b->triangles += gr[g].dev.bin.triangles;
@@ -435,7 +553,12 @@ mote_result mote__bin_run_draws(mote_device *dev)
     }
     if (dev->clear_pending)       /* before any triangle reaches a pixel */
         mote__clear_frame(dev);
-    return mote__bin_draws(dev, dev, 0, n);
+    for (int i = 0; i < n; i++) {
+        mote_result r = mote__bin_part(dev, dev, i, NULL);
+        if (r != MOTE_OK && result == MOTE_OK)
+            result = r;
+    }
+    return result;
 }
 
 #endif /* MOTE_ENABLE_BINNING */

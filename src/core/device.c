@@ -347,7 +347,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
             mote__record(dev, mesh, &d);
             return r;
         }
-        r = mote__process_draw(dev, mesh, &d, MOTE__SINK_BIN, NULL, all);
+        r = mote__process_draw(dev, mesh, &d, MOTE__SINK_BIN, NULL, all, NULL);
     } else {
         /* points and lines are drawn at once; earlier binned triangles first */
         if (MOTE_ENABLE_BINNING && mote__binned(dev)) {
@@ -355,7 +355,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
             mote__bin_flush(dev);
             mote__bin_mark_all_drawn(dev);   /* not through the tiles */
         }
-        mote_result drawn = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all);
+        mote_result drawn = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all, NULL);
         r = r != MOTE_OK ? r : drawn;
     }
     mote__add_counts(dev, &count);
@@ -389,7 +389,7 @@ mote_result mote_end(mote_device *dev)
         mote__clear_rect(dev, &tg, band);
         for (int i = 0; i < dev->draw_count; i++) {
             mote_result r = mote__process_draw(dev, dev->draws[i].mesh, &dev->draws[i].desc,
-                                               MOTE__SINK_RASTER, &tg, band);
+                                               MOTE__SINK_RASTER, &tg, band, NULL);
             if (r != MOTE_OK)
                 result = r;
         }

@@ -483,7 +483,8 @@ static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], floa
  * triangle, whose vertices are finished (v may point into them: it is set
  * only then). Flat shading writes the triangle's colour into v's shades,
  * which nothing else reads in that mode: setup takes them at once, and
- * the next triangle sharing a vertex writes its own. */
+ * the next triangle sharing a vertex writes its own (into copies where a
+ * binned draw's cache may be shared). */
 static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__svert *v0,
                                mote__svert *v1, mote__svert *v2, const int32_t X[3], const int32_t Y[3])
 {
@@ -498,9 +499,21 @@ static void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv[3], mote__sv
     }
     for (int i = 0; i < 3; i++)
         mote__finish(cx, tv[i]);
+#if MOTE_ENABLE_BINNING
+    mote__svert own[3];
+#endif
     if (cx->flat) {
         float s[3];
         mote__flat_shade(cx, tv, s);
+#if MOTE_ENABLE_BINNING
+        /* into copies: a vertex cache shared by a draw's pieces is only read */
+        own[0] = *v0;
+        own[1] = *v1;
+        own[2] = *v2;
+        v0 = &own[0];
+        v1 = &own[1];
+        v2 = &own[2];
+#endif
         mote__shade_fixed(s, v0->s);
         memcpy(v1->s, v0->s, sizeof v0->s);
         memcpy(v2->s, v0->s, sizeof v0->s);
@@ -704,82 +717,114 @@ size_t mote__vertex_cache_bytes(const mote_mesh *mesh)
 }
 #endif
 
-mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
-                               mote__sink_kind sink, const mote__target *tg, mote__rect region)
+/* A draw's context and raster state: matrices, material, features.
+ * false: the mesh lies outside the view frustum. */
+static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_device *dev, const mote_mesh *mesh,
+                               const mote_draw_desc *desc)
 {
-    mote__ctx cx;
-    memset(&cx, 0, sizeof cx);
-    cx.dev = dev;
-    cx.mesh = mesh;
-    cx.d = *desc;                 /* resolved by mote_draw (also when recorded) */
-    cx.sink = sink;
-    cx.tg = tg;
-    cx.region = region;
-    dev->stats.draws++;
+    memset(cx, 0, sizeof *cx);
+    cx->dev = dev;
+    cx->mesh = mesh;
+    cx->d = *desc;                /* resolved by mote_draw (also when recorded) */
 
     /* a mirroring transform reverses the screen winding of front faces
      * (as Babylon.js and three.js take it): culling follows */
-    bool mirrored = mote__world_matrix(mesh, cx.world);
-    mote__mat4_mul(dev->view_proj, cx.world, cx.mvp);
-    mote__normal_matrix(cx.world, mirrored, cx.nrm);
-    if (mote__mesh_outside(&cx)) {
-        dev->stats.meshes_culled++;
-        return MOTE_OK;
-    }
+    bool mirrored = mote__world_matrix(mesh, cx->world);
+    mote__mat4_mul(dev->view_proj, cx->world, cx->mvp);
+    mote__normal_matrix(cx->world, mirrored, cx->nrm);
+    if (mote__mesh_outside(cx))
+        return false;
     const mote_material *mat = &mesh->material;
     for (int k = 0; k < 3; k++)
-        cx.color[k] = mat->color_set ? (float)(&mat->color.r)[k] / 255.0f : 1.0f;
-    cx.uscale = mote__or(mat->u_scale, 1.0f);
-    cx.vscale = mote__or(mat->v_scale, 1.0f);
-    cx.uoff = mat->u_offset;
-    cx.voff = mat->v_offset;
-    cx.guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);
-    cx.guard_y = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.height * 0.5f);
-    int F = dev->desc.subpixel_bits;
+        cx->color[k] = mat->color_set ? (float)(&mat->color.r)[k] / 255.0f : 1.0f;
+    cx->uscale = mote__or(mat->u_scale, 1.0f);
+    cx->vscale = mote__or(mat->v_scale, 1.0f);
+    cx->uoff = mat->u_offset;
+    cx->voff = mat->v_offset;
+    cx->guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);
+    cx->guard_y = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.height * 0.5f);
 
-    mote__raster_state rs_local;
-    memset(&rs_local, 0, sizeof rs_local);
-    mote_mode mode = cx.d.mode;
+    memset(rs, 0, sizeof *rs);
+    cx->rs = rs;
+    mote_mode mode = cx->d.mode;
     bool tri_mode = mode == MOTE_MODE_FLAT || mode == MOTE_MODE_GOURAUD || mode == MOTE_MODE_TEXTURED;
-    cx.lit = tri_mode && !cx.d.unlit;
+    cx->lit = tri_mode && !cx->d.unlit;
     /* vertex colours tint triangles' shades (points and wireframe draw in
      * point_color); a constant false when the build leaves them out */
     bool colored = MOTE_ENABLE_VERTEX_COLORS && tri_mode && mesh->colors;
     /* unlit flat without vertex colours is one colour anyway */
-    cx.flat = mode == MOTE_MODE_FLAT && (cx.lit || colored);
+    cx->flat = mode == MOTE_MODE_FLAT && (cx->lit || colored);
     /* per-vertex shades: lit, or vertex colours even unlit */
-    rs_local.gouraud = (cx.lit || colored) && !cx.flat;
-    bool front_cw = (cx.d.front_face == MOTE_FRONT_CW) != mirrored;
-    cx.cull_cw = cx.d.cull == (front_cw ? MOTE_CULL_FRONT : MOTE_CULL_BACK);
-    cx.cull_ccw = cx.d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);
-    rs_local.tex = MOTE__TEX_NONE;
+    rs->gouraud = (cx->lit || colored) && !cx->flat;
+    bool front_cw = (cx->d.front_face == MOTE_FRONT_CW) != mirrored;
+    cx->cull_cw = cx->d.cull == (front_cw ? MOTE_CULL_FRONT : MOTE_CULL_BACK);
+    cx->cull_ccw = cx->d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);
+    rs->tex = MOTE__TEX_NONE;
     if (mode == MOTE_MODE_TEXTURED && mote__texture_ok(mat->texture)) {
-        rs_local.tex = cx.d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR : MOTE__TEX_NEAREST;
-        rs_local.texture = mat->texture;
-        rs_local.tex_w = mat->texture->width;
-        rs_local.tex_h = mat->texture->height;
-        cx.tex_w = (float)rs_local.tex_w;
-        cx.tex_h = (float)rs_local.tex_h;
-        rs_local.tex_stride = mat->texture->stride > 0 ? mat->texture->stride
-                            : mat->texture->width * mote_format_bytes(mat->texture->format);
-        rs_local.wrap_u = (mote_wrap)mote__enum_or(mat->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
-        rs_local.wrap_v = (mote_wrap)mote__enum_or(mat->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+        rs->tex = cx->d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR : MOTE__TEX_NEAREST;
+        rs->texture = mat->texture;
+        rs->tex_w = mat->texture->width;
+        rs->tex_h = mat->texture->height;
+        cx->tex_w = (float)rs->tex_w;
+        cx->tex_h = (float)rs->tex_h;
+        rs->tex_stride = mat->texture->stride > 0 ? mat->texture->stride
+                       : mat->texture->width * mote_format_bytes(mat->texture->format);
+        rs->wrap_u = (mote_wrap)mote__enum_or(mat->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+        rs->wrap_v = (mote_wrap)mote__enum_or(mat->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
     }
     /* features that change nothing are dropped before choosing the span */
-    bool varying = rs_local.gouraud || rs_local.tex != MOTE__TEX_NONE;
-    rs_local.persp = !varying ? MOTE__PERSP_CORRECT
-                   : cx.d.perspective == MOTE_PERSPECTIVE_AFFINE ? MOTE__PERSP_AFFINE
-                   : cx.d.perspective == MOTE_PERSPECTIVE_SUBSPAN ? MOTE__PERSP_SUBSPAN
-                   : MOTE__PERSP_CORRECT;
-    rs_local.subspan_log2 = cx.d.subspan_log2;
+    bool varying = rs->gouraud || rs->tex != MOTE__TEX_NONE;
+    rs->persp = !varying ? MOTE__PERSP_CORRECT
+              : cx->d.perspective == MOTE_PERSPECTIVE_AFFINE ? MOTE__PERSP_AFFINE
+              : cx->d.perspective == MOTE_PERSPECTIVE_SUBSPAN ? MOTE__PERSP_SUBSPAN
+              : MOTE__PERSP_CORRECT;
+    rs->subspan_log2 = cx->d.subspan_log2;
     bool has_depth = dev->desc.depth_format != MOTE_DEPTH_FORMAT_NONE;
-    rs_local.depth_test = has_depth && !cx.d.no_depth_test;
-    rs_local.depth_write = has_depth && !cx.d.no_depth_write;
+    rs->depth_test = has_depth && !cx->d.no_depth_test;
+    rs->depth_write = has_depth && !cx->d.no_depth_write;
     /* the pixel loops truncate (z >> 16, then >> 8 for 16 bits): the plane
      * starts half a unit up, so each pixel's 24-bit depth is rounded to
      * nearest, and a 16-bit one is that rounded again: (d24 + 128) >> 8 */
-    rs_local.depth_half = (1 << 15) + (dev->desc.depth_format == MOTE_DEPTH_FORMAT_16 ? 1 << 23 : 0);
-    mote__fill_select(&rs_local, dev->desc.color_format, dev->desc.depth_format);
+    rs->depth_half = (1 << 15) + (dev->desc.depth_format == MOTE_DEPTH_FORMAT_16 ? 1 << 23 : 0);
+    mote__fill_select(rs, dev->desc.color_format, dev->desc.depth_format);
+    return true;
+}
+
+#if MOTE_ENABLE_BINNING
+void mote__prepare_vertices(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc, void *cache,
+                            uint32_t first, uint32_t end)
+{
+    mote__ctx cx;
+    mote__raster_state rs;
+    if (!mote__draw_context(&cx, &rs, dev, mesh, desc))
+        return;
+    mote__tvert *tv = (mote__tvert *)cache;
+    for (uint32_t i = first; i < end; i++) {
+        mote__transform(&cx, i, &tv[i]);
+        if (tv[i].state == 1)     /* as mote__vertex: an invalid one is never drawn */
+            mote__finish(&cx, &tv[i]);
+    }
+}
+#endif
+
+mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
+                               mote__sink_kind sink, const mote__target *tg, mote__rect region,
+                               const mote__piece *piece)
+{
+    /* a draw cut into pieces is counted once, by its first */
+    bool first_piece = !MOTE_ENABLE_BINNING || !piece || piece->tri0 == 0;
+    dev->stats.draws += first_piece;
+    mote__ctx cx;
+    mote__raster_state rs_local;
+    if (!mote__draw_context(&cx, &rs_local, dev, mesh, desc)) {
+        dev->stats.meshes_culled += first_piece;
+        return MOTE_OK;
+    }
+    cx.sink = sink;
+    cx.tg = tg;
+    cx.region = region;
+    int F = dev->desc.subpixel_bits;
+    mote_mode mode = cx.d.mode;
 
     size_t cache_bytes = 0;
     mote__tvert small_cache[MOTE__SMALL_CACHE];
@@ -798,20 +843,23 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         *rs = rs_local;
         cx.rs = rs;
         cache_bytes = mote__vertex_cache_bytes(mesh);
-        if (dev->bin.group) {     /* its own cache, so that its slice holds triangles only */
+        if (piece && piece->vertices) {
+            /* transformed and finished by mote__prepare_vertices, and shared
+             * with the draw's other pieces: from here on only read */
+            cx.cache = (mote__tvert *)(uintptr_t)piece->vertices;
+            cache_bytes = 0;
+        } else if (dev->bin.group) {  /* its own cache, so that its slice holds triangles only */
             if (cache_bytes > 0 && cache_bytes <= dev->bin.cache_size)
                 cx.cache = (mote__tvert *)(void *)dev->bin.cache;
             cache_bytes = 0;
         } else if (cache_bytes > 0) {
             cx.cache = (mote__tvert *)mote__bin_top_alloc(dev, cache_bytes);
         }
-        if (cx.cache)
+        if (!cx.cache)
+            cache_bytes = 0;
+        else if (!(piece && piece->vertices))
             for (uint32_t i = 0; i < mesh->vertex_count; i++)
                 mote__transform(&cx, i, &cx.cache[i]);
-        else
-            cache_bytes = 0;
-    } else {
-        cx.rs = &rs_local;
     }
     if (!cx.cache) {
         memset(small_cache, 0, sizeof small_cache);
@@ -827,11 +875,15 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
                 mote__draw_pixel(tg, region, tv->X >> F, tv->Y >> F, cx.d.point_color);
         }
     } else {
-        uint32_t tris = mesh->index_count / 3;
+        uint32_t tris = mesh->index_count / 3, first = 0;
         if (!mesh->indices)
             tris = 0;
-        dev->stats.triangles_in += tris;
-        for (uint32_t i = 0; i < tris && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++)
+        if (MOTE_ENABLE_BINNING && piece) {
+            first = MOTE__MIN(piece->tri0, tris);
+            tris = MOTE__MIN(piece->tri1, tris);
+        }
+        dev->stats.triangles_in += tris - first;
+        for (uint32_t i = first; i < tris && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++)
             mote__triangle(&cx, &mesh->indices[3 * i]);
     }
     if (MOTE_ENABLE_BINNING && cache_bytes)

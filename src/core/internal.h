@@ -313,11 +313,25 @@ void mote__draw_pixel(const mote__target *tg, mote__rect r, int x, int y, mote_r
 /* geometry.c: runs a draw (its desc resolved by mote__resolve_draw_desc)
  * through the vertex stage into a sink. */
 typedef enum mote__sink_kind { MOTE__SINK_RASTER, MOTE__SINK_BIN } mote__sink_kind;
+/* Part of a binned draw, set up apart from the rest (bin.c): its triangles
+ * [tri0, tri1), and the draw's vertex cache, which mote__prepare_vertices
+ * filled and which the draw's pieces share (NULL: the piece fills its own). */
+typedef struct mote__piece {
+    uint32_t tri0, tri1;
+    const void *vertices;
+} mote__piece;
+/* piece NULL: the whole draw. */
 mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh,
                                const mote_draw_desc *desc, mote__sink_kind sink,
-                               const mote__target *tg, mote__rect region);
+                               const mote__target *tg, mote__rect region,
+                               const mote__piece *piece);
 /* Arena bytes of a binned draw's vertex cache. */
 size_t mote__vertex_cache_bytes(const mote_mesh *mesh);
+/* Transforms and lights vertices [first, end) of a draw into its vertex
+ * cache (mote__vertex_cache_bytes), for the pieces of the draw to share.
+ * Reads dev only, so pieces of vertices run in parallel. */
+void mote__prepare_vertices(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
+                            void *cache, uint32_t first, uint32_t end);
 /* Fills the defaults in; MOTE_ERR_UNSUPPORTED for a feature left out of
  * the build. */
 mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *mesh,

@@ -1118,7 +1118,9 @@ static bench_table *section_threads(void)
         const bench_mode *m = &modes[MODE_TEX];
         for (int th = opt.max_threads > 1 ? 2 : 1; th <= opt.max_threads; th++) {
             bench_dev one, many;
-            dev_init(&one, s, m, RUN_OMP, 1);
+            /* one thread: the serial binned path, which does not pay for
+             * cutting draws into pieces (as one thread through parallel_for would) */
+            dev_init(&one, s, m, RUN_SERIAL, 1);
             dev_init(&many, s, m, RUN_OMP, th);
             mote_ctx c1 = {&one, s, m, 0}, c2 = {&many, s, m, 0};
             pinned_ctx p1 = {mote_frame, &c1, fast_cpu}, p2 = {mote_frame, &c2, -1};
@@ -1145,7 +1147,8 @@ static bench_table *section_threads(void)
             fprintf(stderr, "  threads %s %d %.3f ms (1 thread %.3f ms)\n", s->name, th, r->t.med, tt[0].med);
         }
     }
-    tbl_note(t, "each thread count timed in turns of 10 frames with a 1-thread device (on the fastest core), "
+    tbl_note(t, "each thread count timed in turns of 10 frames with a 1-thread device (binned, no parallel_for, "
+                "on the fastest core), "
                 "in one run; speed-up: the ratio of their medians; cores allow: the sum of the speeds of that "
                 "many fastest cores, relative to the fastest (core check: %s); efficiency: speed-up over what "
                 "the cores allow; %d cores online.", cores_line, opt.max_threads);
