@@ -159,6 +159,14 @@ extern "C" {
 #define MOTE_MAX_LIGHTS 4
 #endif
 
+/* Binned mode with parallel_for: a draw of at least twice this many
+ * triangles (and more than its share of the frame's) is cut into pieces
+ * that are set up on several threads. The fuzz build lowers it, so that
+ * its small draws are cut too. */
+#ifndef MOTE_PIECE_MIN
+#define MOTE_PIECE_MIN 128
+#endif
+
 /* Features a small build may leave out (stb-style: define to 0 before this
  * header is seen, for the library and its users alike; all default to 1).
  * Left out, a feature costs no flash, and asking for it at run time gets

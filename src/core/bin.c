@@ -260,9 +260,8 @@ void mote__bin_flush(mote_device *dev)
  * stripes are tasks of the first parallel step, beside the setup, which
  * touches no pixel (a group never flushes). */
 #define MOTE__BIN_GROUPS 16
-/* a draw is cut into pieces of at least this many triangles (64 and 256
- * were slower for Suzanne at 1080p on 2 threads) */
-#define MOTE__PIECE_MIN 128
+/* a draw is cut into pieces of at least MOTE_PIECE_MIN triangles (mote.h;
+ * 64 and 256 were slower for Suzanne at 1080p on 2 threads) */
 /* and its vertices prepared in tasks of at least this many */
 #define MOTE__VERTEX_CHUNK 256
 
@@ -383,7 +382,8 @@ static mote__cut_sizes mote__bin_cut(const mote_device *dev, int n, mote__part *
     uint64_t total = 0;
     for (int i = 0; i < n; i++)
         total += mote__draw_triangles(&dev->draws[i]);
-    uint64_t share = MOTE__MAX((total + MOTE__BIN_GROUPS - 1) / MOTE__BIN_GROUPS, (uint64_t)MOTE__PIECE_MIN);
+    uint64_t share = (total + MOTE__BIN_GROUPS - 1) / MOTE__BIN_GROUPS;
+    share = MOTE__MAX(share, (uint64_t)MOTE__MAX(MOTE_PIECE_MIN, 1));
     for (int i = 0; i < n; i++) {
         const mote__draw *d = &dev->draws[i];
         uint32_t tris = mote__draw_triangles(d);

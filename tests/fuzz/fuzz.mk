@@ -18,8 +18,10 @@ FUZZ_OK      := $(FUZZ_DIR)/.fuzz-ok
 # No OpenMP here: clang's runtime is another package, and tiles run through
 # the fuzzer's own parallel_for anyway.
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+# MOTE_PIECE_MIN=2: the fuzzer's draws (up to 48 triangles) are cut into
+# pieces set up apart, as big meshes are (bin.c).
 FUZZ_CFLAGS   = -std=c99 -O1 -g -ffp-contract=off $(WARN) -Iinclude -Isrc -Itests \
-                $(PKG_CFLAGS) $(FUZZ_SAN) $(FUZZ_EXTRA)
+                -DMOTE_PIECE_MIN=2 $(PKG_CFLAGS) $(FUZZ_SAN) $(FUZZ_EXTRA)
 FUZZ_LIB_OBJ := $(patsubst src/%.c,$(FUZZ_DIR)/obj/%.o,$(CORE_SRC) $(IO_SRC))
 FUZZ_BINS    := $(patsubst %,$(FUZZ_DIR)/fuzz_%,$(FUZZ_TARGETS))
 
