@@ -171,13 +171,14 @@ extern "C" {
  * header is seen, for the library and its users alike; all default to 1).
  * Left out, a feature costs no flash, and asking for it at run time gets
  * MOTE_ERR_UNSUPPORTED and draws nothing; everything else draws the same
- * bytes. On a Cortex-M0+ they save about (`make cross` prints the sizes
- * of the firmware profile, which turns all five off):
- *   MOTE_ENABLE_LINES     ~0.7 KB  MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS
+ * bytes. On a Cortex-M0+ each saves about this much of the core's 22 KB
+ * (-Os, one left out at a time; `make cross` prints the sizes of the
+ * firmware profile, which turns all five off):
+ *   MOTE_ENABLE_LINES     ~0.8 KB  MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS
  *                                  (mote_draw refuses them)
- *   MOTE_ENABLE_BINNING   ~1.2 KB  desc.arena, tile binning (mote_device_init
- *                                  refuses an arena)
- *   MOTE_ENABLE_BILINEAR  ~0.4 KB  MOTE_FILTER_BILINEAR (mote_draw refuses it)
+ *   MOTE_ENABLE_BINNING   ~4.2 KB  desc.arena, tile binning and parallel
+ *                                  setup (mote_device_init refuses an arena)
+ *   MOTE_ENABLE_BILINEAR  ~0.3 KB  MOTE_FILTER_BILINEAR (mote_draw refuses it)
  *   MOTE_ENABLE_SUBSPAN   ~0.3 KB  MOTE_PERSPECTIVE_SUBSPAN (mote_draw
  *                                  refuses it)
  *   MOTE_ENABLE_VERTEX_COLORS
