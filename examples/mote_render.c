@@ -369,7 +369,9 @@ int main(int argc, char **argv)
     desc.arena = arena;
     desc.arena_size = arena_size;
     desc.clear_drawn_tiles_only = !o.full_clear;
-    desc.parallel_for = mote_parallel_openmp;
+    /* one thread: the serial path, which cuts no draw into pieces for
+     * threads that are not there */
+    desc.parallel_for = o.threads == 1 ? NULL : mote_parallel_openmp;
     desc.parallel_user = &o.threads;
     r = mote_device_init(&dev, &desc);
     if (r != MOTE_OK) {

@@ -474,7 +474,9 @@ typedef struct mote_device_desc {
      * yourself and the next frame may keep it. A frame with keep_color or
      * keep_depth, points or wireframe makes the next clear a full one. */
     bool clear_drawn_tiles_only;
-    mote_parallel_for_fn parallel_for; /* NULL = tiles in order on this thread */
+    mote_parallel_for_fn parallel_for; /* NULL = tiles in order on this thread
+                                          (also best for one thread: a big
+                                          draw is then not cut into pieces) */
     void *parallel_user;
     mote_triangle_hook_fn triangle_hook; /* NULL: none */
     void *triangle_hook_user;
