@@ -260,9 +260,9 @@ void mote__bin_flush(mote_device *dev)
  * stripes are tasks of the first parallel step, beside the setup, which
  * touches no pixel (a group never flushes). */
 #define MOTE__BIN_GROUPS 16
-/* a draw is cut into pieces of at least MOTE_PIECE_MIN triangles (mote.h;
- * 64 and 256 were slower for Suzanne at 1080p on 2 threads) */
-/* and its vertices prepared in tasks of at least this many */
+/* A cut draw's vertices are prepared in tasks of at least this many. Its
+ * pieces have at least MOTE_PIECE_MIN triangles (mote.h: 64 and 256 were
+ * no faster than 128 for Suzanne at 1080p on 2 threads). */
 #define MOTE__VERTEX_CHUNK 256
 
 typedef struct mote__part {
@@ -276,7 +276,7 @@ typedef struct mote__group {
     mote_result result;
 } mote__group;
 
-/* A draw in pieces: its vertex cache, prepared in chunks tasks. */
+/* A draw in pieces: its shared vertex cache, prepared in `chunks` tasks. */
 typedef struct mote__cut {
     int draw, chunks;
     void *cache;
