@@ -8,7 +8,8 @@
  *               [--subpixel-bits N] [--full-clear]
  *
  * The device bins triangles into an arena and rasterises the tiles on OpenMP
- * threads (mote_parallel_openmp). With --frames N it renders one warm-up
+ * threads (mote_parallel_openmp; with --threads 1 on the calling thread, the
+ * serial path). With --frames N it renders one warm-up
  * frame and then N timed frames (begin, draws, end: no loading, no writing),
  * turning the scene --spin degrees about the world y axis each frame, and
  * prints "ms/frame: median X (min Y, max Z)". The image written is always
