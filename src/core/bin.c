@@ -285,7 +285,6 @@ typedef struct mote__cut {
 typedef struct mote__batch {
     mote_device *dev;
     mote__group *groups;
-    int group_count;
     mote__part *parts;
     mote__cut *cuts;              /* their chunks are the first step's tasks */
     int tasks;                    /* a step's tasks past these are clear stripes */
@@ -374,9 +373,11 @@ typedef struct mote__cut_sizes {
 } mote__cut_sizes;
 
 /* Cuts the draws [0, n) into parts, in pieces of at least a group's share
- * of the batch's triangles and at most MOTE__BIN_GROUPS per draw, and
- * writes them and the cuts when parts and cuts are not NULL. */
-static mote__cut_sizes mote__bin_cut(const mote_device *dev, int n, mote__part *parts, mote__cut *cuts)
+ * of the batch's triangles and at most MOTE__BIN_GROUPS per draw. With
+ * parts not NULL it also writes them and the cuts, whose caches it places
+ * one after another from caches. */
+static mote__cut_sizes mote__bin_cut(const mote_device *dev, int n, mote__part *parts, mote__cut *cuts,
+                                     unsigned char *caches)
 {
     mote__cut_sizes sz = {0, 0, 0, 0, 0};
     uint64_t total = 0;
@@ -389,15 +390,18 @@ static mote__cut_sizes mote__bin_cut(const mote_device *dev, int n, mote__part *
         uint32_t tris = mote__draw_triangles(d);
         size_t cache = mote__align(mote__vertex_cache_bytes(d->mesh));
         uint32_t pieces = (uint32_t)MOTE__MIN(tris / share, (uint64_t)MOTE__BIN_GROUPS);
+        void *shared = NULL;      /* the cut's cache */
         if (pieces < 2 || cache == 0) {   /* 0: a cache too large to count */
             pieces = 1;
             sz.uncut_cache = MOTE__MAX(sz.uncut_cache, cache);
         } else {
             int chunks = (int)MOTE__MIN(MOTE__MAX(d->mesh->vertex_count / MOTE__VERTEX_CHUNK, 1u),
                                         (uint32_t)MOTE__BIN_GROUPS);
-            if (cuts) {
+            if (parts) {
+                shared = caches + sz.cut_bytes;
                 cuts[sz.cuts].draw = i;
                 cuts[sz.cuts].chunks = chunks;
+                cuts[sz.cuts].cache = shared;
             }
             sz.cuts++;
             sz.chunks += chunks;
@@ -409,7 +413,7 @@ static mote__cut_sizes mote__bin_cut(const mote_device *dev, int n, mote__part *
             parts[sz.parts].draw = i;
             parts[sz.parts].piece.tri0 = (uint32_t)((uint64_t)tris * k / pieces);
             parts[sz.parts].piece.tri1 = (uint32_t)((uint64_t)tris * (k + 1) / pieces);
-            parts[sz.parts].piece.vertices = NULL;   /* the cut's cache, once placed */
+            parts[sz.parts].piece.vertices = shared;
         }
     }
     return sz;
@@ -469,7 +473,7 @@ mote_result mote__bin_run_draws(mote_device *dev)
     int n = dev->draw_count;
     dev->draw_count = 0;
     mote__bin *b = &dev->bin;
-    mote__cut_sizes sz = mote__bin_cut(dev, n, NULL, NULL);
+    mote__cut_sizes sz = mote__bin_cut(dev, n, NULL, NULL, NULL);
     int groups = MOTE__MIN(sz.parts, MOTE__BIN_GROUPS);
     size_t table = mote__bin_table_bytes(dev), cache = sz.uncut_cache;
     /* the groups, parts and cuts; per group its device, tile table and
@@ -488,18 +492,10 @@ mote_result mote__bin_run_draws(mote_device *dev)
     mote_result result = MOTE_OK;
     if (mem) {
         mote__group *gr = (mote__group *)(void *)mem;
-        mote__batch batch = {dev, gr, groups, (mote__part *)(void *)(mem + gbytes),
+        mote__batch batch = {dev, gr, (mote__part *)(void *)(mem + gbytes),
                              (mote__cut *)(void *)(mem + gbytes + pbytes), 0};
-        mote__bin_cut(dev, n, batch.parts, batch.cuts);
-        unsigned char *place = mem + head - sz.cut_bytes;
-        for (int c = 0; c < sz.cuts; c++) {
-            mote__cut *cut = &batch.cuts[c];
-            cut->cache = place;
-            place += mote__align(mote__vertex_cache_bytes(dev->draws[cut->draw].mesh));
-            for (int p = 0; p < sz.parts; p++)
-                if (batch.parts[p].draw == cut->draw)
-                    batch.parts[p].piece.vertices = cut->cache;
-        }
+        mote__bin_cut(dev, n, batch.parts, batch.cuts, mem + head - sz.cut_bytes);
+        unsigned char *place = mem + head;
         for (int g = 0; g < groups; g++, place += each) {
             mote_device *gd = &gr[g].dev;
             *gd = *dev;

@@ -376,6 +376,15 @@ static void mote__finish(const mote__ctx *cx, mote__tvert *tv)
     mote__to_setup(&tv->c, &tv->sv);
 }
 
+/* A vertex transformed and, when valid, finished at once (an invalid one
+ * is never drawn, nor converts). */
+static void mote__transform_finished(mote__ctx *cx, uint32_t index, mote__tvert *tv)
+{
+    mote__transform(cx, index, tv);
+    if (tv->state == 1)
+        mote__finish(cx, tv);
+}
+
 /* The full cache is filled before the draw's triangles and finished on
  * use; the small one is filled and finished on demand (its entries are
  * copied and may be evicted by the next lookup, so finishing later would
@@ -385,11 +394,8 @@ static mote__tvert *mote__vertex(mote__ctx *cx, uint32_t index)
     if (!cx->cache_mask)
         return &cx->cache[index];
     mote__tvert *tv = &cx->cache[index & cx->cache_mask];
-    if (tv->state == 0 || tv->index != index) {
-        mote__transform(cx, index, tv);
-        if (tv->state == 1)       /* an invalid one is never drawn, nor converts */
-            mote__finish(cx, tv);
-    }
+    if (tv->state == 0 || tv->index != index)
+        mote__transform_finished(cx, index, tv);
     return tv;
 }
 
@@ -799,11 +805,8 @@ void mote__prepare_vertices(mote_device *dev, const mote_mesh *mesh, const mote_
     if (!mote__draw_context(&cx, &rs, dev, mesh, desc))
         return;
     mote__tvert *tv = (mote__tvert *)cache;
-    for (uint32_t i = first; i < end; i++) {
-        mote__transform(&cx, i, &tv[i]);
-        if (tv[i].state == 1)     /* as mote__vertex: an invalid one is never drawn */
-            mote__finish(&cx, &tv[i]);
-    }
+    for (uint32_t i = first; i < end; i++)
+        mote__transform_finished(&cx, i, &tv[i]);
 }
 #endif
 
@@ -843,7 +846,8 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         *rs = rs_local;
         cx.rs = rs;
         cache_bytes = mote__vertex_cache_bytes(mesh);
-        if (piece && piece->vertices) {
+        const bool prepared = piece && piece->vertices;
+        if (prepared) {
             /* transformed and finished by mote__prepare_vertices, and shared
              * with the draw's other pieces: from here on only read */
             cx.cache = (mote__tvert *)(uintptr_t)piece->vertices;
@@ -857,7 +861,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         }
         if (!cx.cache)
             cache_bytes = 0;
-        else if (!(piece && piece->vertices))
+        else if (!prepared)
             for (uint32_t i = 0; i < mesh->vertex_count; i++)
                 mote__transform(&cx, i, &cx.cache[i]);
     }
