@@ -487,8 +487,9 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     const mote__raster_state *rs = t->rs;
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     const int k = fixed_k ? fixed_k : t->rbits;
+    /* field by field: a memset of the whole context was 3.5% of the dense
+     * grid's instructions, whose triangles have a dozen pixels each */
     mote__fill_ctx c;
-    memset(&c, 0, sizeof c);
     c.zdx = t->zdx;
     c.qdx = t->qdx;
     c.shift = t->shift;
@@ -502,7 +503,11 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     c.sg = mote__clamp_shade(c.a0[MOTE__A_G]);
     c.sb = mote__clamp_shade(c.a0[MOTE__A_B]);
     c.flat_px = mote__pack(fmt, mote__modulate(255, c.sr), mote__modulate(255, c.sg), mote__modulate(255, c.sb));
-    if (tex) {
+    c.tex_origin[0] = c.tex_origin[1] = 0;
+    if (!tex) {
+        const mote__tex_view none = {0};
+        c.tx = none;
+    } else {
         c.tx.pixels = (const uint8_t *)rs->texture->pixels;
         c.tx.format = tfmt != MOTE_FORMAT_DEFAULT ? tfmt : rs->texture->format;
         c.tx.stride = rs->tex_stride;
@@ -517,10 +522,8 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
             c.tex_origin[1] = (uint64_t)c.a0[MOTE__A_V] << (k - 20);
         }
     }
-    if (MOTE_ENABLE_SUBSPAN)
-        c.seg_log2 = rs->subspan_log2;
-    if (varying && persp == MOTE__PERSP_AFFINE)
-        c.affine_r = mote__recip_k(t->q, t->shift, k);
+    c.seg_log2 = MOTE_ENABLE_SUBSPAN ? rs->subspan_log2 : 0;
+    c.affine_r = varying && persp == MOTE__PERSP_AFFINE ? mote__recip_k(t->q, t->shift, k) : 0;
 #if MOTE_SPECIALISE_SPANS
     /* a power-of-two repeating texture: its own loop, texel addresses by masks */
     if (tex && c.tx.pow2_repeat) {
