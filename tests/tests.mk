@@ -33,3 +33,6 @@ $(BUILD)/tests/obj/%.o: tests/%.c $(wildcard tests/*.h tests/*/*.h include/mote/
 $(BUILD)/tests/test_%: $(BUILD)/tests/obj/test_%.o $(TEST_SUP_OBJ) $(BUILD)/tests/obj/unity.o $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# test_setup_portable compiles src/core/setup.c a second time (without __int128)
+$(BUILD)/tests/obj/test_setup_portable.o: src/core/setup.c

@@ -1,0 +1,126 @@
+/*
+ * test_setup_portable.c - setup's 128-bit products without __int128.
+ *
+ * Setup forms its attribute planes from 64x64-bit products shifted right
+ * (mote__mul_shift). Hosts with __int128 take that path; 32-bit targets
+ * (every microcontroller) take a portable one built from 32-bit halves,
+ * which only the emulated-board check (make test-embedded) ran before.
+ * This file compiles setup.c a second time with MOTE_NO_INT128 and holds
+ * the two to the same bits: the products on edge values, and whole
+ * triangles from a pixel's sliver to the guard band's size, compared
+ * field by field with the library's setup.
+ *
+ * Thresholds: 0 differing products and 0 differing triangles over 300,000
+ * seeded random triangles (affine and perspective-correct).
+ */
+#include "core/internal.h"          /* declares the library's mote__setup */
+#define MOTE_NO_INT128 1
+#define mote__setup mote__setup_portable
+#include "core/setup.c"
+#undef mote__setup
+
+#include "unity.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static uint64_t rng = 0x9e3779b97f4a7c15u;
+
+static uint64_t next(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return rng;
+}
+
+static int32_t in_range(int32_t lo, int32_t hi)
+{
+    return (int32_t)(lo + (int64_t)(next() % (uint64_t)((int64_t)hi - lo + 1)));
+}
+
+static void test_portable_product_should_match_int128_on_edge_values(void)
+{
+#if defined(__SIZEOF_INT128__)
+    __extension__ typedef __int128 i128;
+    const int64_t v[] = {0, 1, -1, 2, -2, 255, -256, INT32_MAX, INT32_MIN, (int64_t)1 << 40,
+                         -((int64_t)1 << 47), INT64_MAX, INT64_MIN, INT64_MAX - 1, INT64_MIN + 1};
+    const int shifts[] = {1, 10, 31, 32, 33, 55, 63};
+    const int n = (int)(sizeof v / sizeof v[0]);
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            for (int s = 0; s < (int)(sizeof shifts / sizeof shifts[0]); s++) {
+                int64_t want = (int64_t)(uint64_t)(((i128)v[i] * v[j]) >> shifts[s]);
+                char msg[160];
+                snprintf(msg, sizeof msg, "%lld * %lld >> %d", (long long)v[i], (long long)v[j], shifts[s]);
+                TEST_ASSERT_EQUAL_INT64_MESSAGE(want, mote__mul_shift(v[i], v[j], shifts[s]), msg);
+            }
+#else
+    TEST_IGNORE_MESSAGE("no __int128 on this host: the library's setup is the portable one");
+#endif
+}
+
+static void test_portable_setup_should_match_the_library_bit_for_bit(void)
+{
+    mote__raster_state rs;
+    memset(&rs, 0, sizeof rs);
+    rs.tex_w = rs.tex_h = 512;
+    rs.tex_stride = 2048;
+    rs.wrap_u = rs.wrap_v = MOTE_WRAP_REPEAT;
+    rs.tex = MOTE__TEX_NEAREST;
+    rs.gouraud = true;
+    rs.depth_test = rs.depth_write = true;
+    rs.depth_half = 1 << 15;
+    const int F = 8, lim = 1 << 21;   /* the guard band's reach at 8 sub-pixel bits */
+    long drawn = 0;
+    for (int it = 0; it < 300000; it++) {
+        /* a centre on or off the screen, and corners up to 2^reach sub-pixels from it */
+        int reach = in_range(2, 21);
+        int32_t cx = in_range(-300, 2200) * (1 << F), cy = in_range(-300, 1400) * (1 << F), X[3], Y[3];
+        mote__svert V[3];
+        for (int i = 0; i < 3; i++) {
+            X[i] = MOTE__MAX(-lim, MOTE__MIN(lim, cx + in_range(-(1 << reach), 1 << reach)));
+            Y[i] = MOTE__MAX(-lim, MOTE__MIN(lim, cy + in_range(-(1 << reach), 1 << reach)));
+            V[i].texel[0] = (int64_t)in_range(-(1 << 30), 1 << 30) * in_range(1, 64);
+            V[i].texel[1] = in_range(-(1 << 28), 1 << 28);
+            for (int c = 0; c < 3; c++)
+                V[i].s[c] = in_range(0, MOTE__SHADE_ONE);
+            V[i].z = in_range(0, MOTE__DEPTH_MAX);
+            V[i].depth = 0.5f;
+            V[i].w = 0.01f + (float)in_range(0, 1 << 20) / 64.0f;
+        }
+        int64_t area2 = mote__area2(X, Y);
+        if (area2 == 0)
+            continue;
+        rs.persp = it % 4 == 0 ? MOTE__PERSP_AFFINE : MOTE__PERSP_CORRECT;
+        const mote__svert *v[3] = {&V[0], &V[1], &V[2]};
+        mote__tri want, got;
+        memset(&want, 0, sizeof want);
+        memset(&got, 0, sizeof got);
+        mote__setup_result rw = mote__setup(&want, &rs, X, Y, area2, v, F, 1920, 1080);
+        mote__setup_result rg = mote__setup_portable(&got, &rs, X, Y, area2, v, F, 1920, 1080);
+        char msg[200];
+        snprintf(msg, sizeof msg, "triangle %d: (%d,%d) (%d,%d) (%d,%d)", it, X[0], Y[0], X[1], Y[1], X[2], Y[2]);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(rw, rg, msg);
+        if (rw != MOTE__SETUP_DRAWN)
+            continue;
+        drawn++;
+        for (int a = 0; a < MOTE__ATTRS; a++)
+            TEST_ASSERT_EQUAL_INT64_ARRAY_MESSAGE(want.n[a], got.n[a], 3, msg);
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&want, &got, sizeof want, msg);
+    }
+    /* most of them must reach the planes, or the comparison proves little */
+    TEST_ASSERT_GREATER_THAN_INT64(100000, drawn);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_portable_product_should_match_int128_on_edge_values);
+    RUN_TEST(test_portable_setup_should_match_the_library_bit_for_bit);
+    return UNITY_END();
+}
