@@ -36,8 +36,8 @@ static int mote__bitlen(uint64_t v)
 
 /* floor(a b / 2^s) for 0 < s < 64 (setup's shifts are 10 and more),
  * exact (128-bit product), modulo 2^64 when it does not fit: the same bits
- * on every target. Define MOTE_NO_INT128 to test the portable path on a
- * host that has __int128. */
+ * on every target. MOTE_NO_INT128 selects the portable path on a host
+ * that has __int128 (tests/test_setup_portable.c compares the two). */
 static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 {
 #if defined(__SIZEOF_INT128__) && !defined(MOTE_NO_INT128)
