@@ -296,6 +296,12 @@ typedef struct mote__fill_ctx {
     uint64_t affine_r;            /* affine: all qi are 1, Q is (nearly) constant: one r */
 } mote__fill_ctx;
 
+/* Bytes of a pixel of a target format. */
+MOTE__INLINE ptrdiff_t mote__pixel_bytes(mote_format fmt)
+{
+    return fmt == MOTE_FORMAT_RGBA8888 ? 4 : fmt == MOTE_FORMAT_GREY8 ? 1 : 2;
+}
+
 /* One row: pixels [x0, x1) given the planes' values at x0 (z, Q and the
  * numerator planes n[]). Returns the number of pixels written. */
 MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
@@ -317,11 +323,19 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
     ptrdiff_t seg_x0 = 0, seg_x1 = x0;
     bool seg_exact = true;        /* until a segment with both ends valid: no r1 to reuse */
     uint32_t rejected = 0;        /* counted rather than the written ones: rare */
+    /* Speed builds index the buffers from the row's end, i = x - x1 < 0:
+     * one counter for both and no end to compare with, a register fewer
+     * in a loop that spills. The generic-only build indexes from the row's
+     * start (base 0: less code on a 32-bit core). */
+    const ptrdiff_t base = MOTE_SPECIALISE_SPANS ? x1 : 0;
+    uint8_t *const cb = crow + base * mote__pixel_bytes(fmt);
+    uint16_t *const d16b = MOTE_SPECIALISE_SPANS && dsel == MOTE__D_16 ? d16 + base : d16;   /* NULL unless used */
+    uint32_t *const d32b = MOTE_SPECIALISE_SPANS && dsel == MOTE__D_32 ? d32 + base : d32;
 
-    for (ptrdiff_t x = x0; x < x1; x++, z = mote__plane_next(z, zdx), q = mote__plane_next(q, qdx),
-                                      nr = mote__plane_next(nr, nrdx), ng = mote__plane_next(ng, ngdx),
-                                      nb = mote__plane_next(nb, nbdx), nu = mote__plane_next(nu, nudx),
-                                      nv = mote__plane_next(nv, nvdx)) {
+    for (ptrdiff_t i = x0 - base; i < x1 - base; i++, z = mote__plane_next(z, zdx), q = mote__plane_next(q, qdx),
+                                                   nr = mote__plane_next(nr, nrdx), ng = mote__plane_next(ng, ngdx),
+                                                   nb = mote__plane_next(nb, nbdx), nu = mote__plane_next(nu, nudx),
+                                                   nv = mote__plane_next(nv, nvdx)) {
         uint32_t depth = 0;
         if (dsel != MOTE__D_NONE) {
             /* z is a convex combination of in-range depths: only rounding
@@ -332,7 +346,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 depth = zz < 0 ? 0u : MOTE__DEPTH_MAX;
             if (dsel == MOTE__D_16)
                 depth >>= 8;
-            if ((dmode & MOTE__D_TEST) && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16[x] : d32[x])) {
+            if ((dmode & MOTE__D_TEST) && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16b[i] : d32b[i])) {
                 rejected++;
                 continue;
             }
@@ -341,6 +355,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
         if (varying) {
             uint64_t r;
             if (MOTE_ENABLE_SUBSPAN && persp == MOTE__PERSP_SUBSPAN) {
+                const ptrdiff_t x = base + i;
                 if (x >= seg_x1) {
                     /* the segment's start is the last one's end, whose r is
                      * known, unless depth-rejected pixels skipped a segment */
@@ -393,12 +408,12 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
             }
         }
-        mote__store(crow, x, fmt, px);
+        mote__store(cb, i, fmt, px);
         if (dsel != MOTE__D_NONE && (dmode & MOTE__D_WRITE)) {
             if (dsel == MOTE__D_16)
-                d16[x] = (uint16_t)depth;
+                d16b[i] = (uint16_t)depth;
             else
-                d32[x] = depth;
+                d32b[i] = depth;
         }
     }
     return (uint32_t)(x1 - x0) - rejected;
