@@ -294,9 +294,14 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
                  const int32_t Y[3], int64_t area2, const mote__svert *const v[3],
                  int subpixel_bits, int width, int height);
 
-/* raster.c */
-void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,
-                      int subpixel_bits);
+/* Fills a set-up triangle's pixels inside region r with the pixel loop
+ * its draw and shade kind select (inline: a tile of small triangles calls
+ * it for each). */
+static inline void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r,
+                                    int subpixel_bits)
+{
+    t->rs->fill[t->shade](t, tg, r, subpixel_bits);
+}
 
 /* span.c */
 /* Fills rs->fill[] for the draw's features and the target's formats, and

@@ -82,8 +82,3 @@ void mote__walk_switch(mote__walk *w)
 {
     mote__edge_init(&w->shorte, w->xb, w->yb, w->xc, w->yc, w->y, w->subpixel_bits);
 }
-
-void mote__raster_tri(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
-{
-    t->rs->fill[t->shade](t, tg, r, F);
-}
