@@ -24,14 +24,7 @@ const char *mote_result_string(mote_result result)
 
 int mote_format_bytes(mote_format format)
 {
-    switch (format) {
-    case MOTE_FORMAT_DEFAULT:
-    case MOTE_FORMAT_RGBA8888: return 4;
-    case MOTE_FORMAT_RGB565:
-    case MOTE_FORMAT_RGB565_SWAPPED: return 2;
-    case MOTE_FORMAT_GREY8: return 1;
-    default: return 0;
-    }
+    return mote__format_bytes(format);
 }
 
 int mote_depth_format_bytes(mote_depth_format format)

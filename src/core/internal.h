@@ -32,6 +32,20 @@
 #define MOTE__MIN(a, b) ((a) < (b) ? (a) : (b))
 #define MOTE__MAX(a, b) ((a) > (b) ? (a) : (b))
 
+/* mote_format_bytes, inline: the pixel loops address rows with it, where
+ * the format is a constant. */
+static inline int mote__format_bytes(mote_format format)
+{
+    switch (format) {
+    case MOTE_FORMAT_DEFAULT:
+    case MOTE_FORMAT_RGBA8888: return 4;
+    case MOTE_FORMAT_RGB565:
+    case MOTE_FORMAT_RGB565_SWAPPED: return 2;
+    case MOTE_FORMAT_GREY8: return 1;
+    default: return 0;
+    }
+}
+
 /* Shade and weights fixed-point units (see CONVENTIONS in mote.h). */
 #define MOTE__SHADE_ONE (1 << 24)
 #define MOTE__DEPTH_MAX ((1u << 24) - 1u)

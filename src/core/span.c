@@ -296,12 +296,6 @@ typedef struct mote__fill_ctx {
     uint64_t affine_r;            /* affine: all qi are 1, Q is (nearly) constant: one r */
 } mote__fill_ctx;
 
-/* Bytes of a pixel of a target format. */
-MOTE__INLINE ptrdiff_t mote__pixel_bytes(mote_format fmt)
-{
-    return fmt == MOTE_FORMAT_RGBA8888 ? 4 : fmt == MOTE_FORMAT_GREY8 ? 1 : 2;
-}
-
 /* One row: pixels [x0, x1) given the planes' values at x0 (z, Q and the
  * numerator planes n[]). Returns the number of pixels written. */
 MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
@@ -328,7 +322,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
      * in a loop that spills. The generic-only build indexes from the row's
      * start (base 0: less code on a 32-bit core). */
     const ptrdiff_t base = MOTE_SPECIALISE_SPANS ? x1 : 0;
-    uint8_t *const cb = crow + base * mote__pixel_bytes(fmt);
+    uint8_t *const cb = crow + base * mote__format_bytes(fmt);
     uint16_t *const d16b = MOTE_SPECIALISE_SPANS && dsel == MOTE__D_16 ? d16 + base : d16;   /* NULL unless used */
     uint32_t *const d32b = MOTE_SPECIALISE_SPANS && dsel == MOTE__D_32 ? d32 + base : d32;
 
