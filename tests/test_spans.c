@@ -53,7 +53,7 @@ static mote__raster_state texture_state(mote__tex_kind kind, const mote_texture 
 /* A random triangle over the W x H target and a little past its edges,
  * with random w, depth and texel coordinates (u within +-uv_range, v half
  * that), shaded as shade kind sk makes shades: flat, one shade for all
- * (grey when grey); mono, grey vertices; RGB, any. */
+ * (grey when grey); mono, grey vertices; RGB, any; black, zero. */
 static void random_triangle(int32_t X[3], int32_t Y[3], mote__svert v[3], int sk, bool grey, float uv_range)
 {
     for (int k = 0; k < 3; k++) {
@@ -65,7 +65,8 @@ static void random_triangle(int32_t X[3], int32_t Y[3], mote__svert v[3], int sk
         for (int c = 0; c < 3; c++)
             v[k].s[c] = sk == MOTE__SHADE_FLAT && k > 0 ? v[0].s[c]
                       : (sk == MOTE__SHADE_MONO || (sk == MOTE__SHADE_FLAT && grey)) && c > 0
-                      ? v[k].s[0] : (int32_t)(frand(0.0f, 1.0f) * MOTE__SHADE_ONE);
+                      ? v[k].s[0] : sk == MOTE__SHADE_BLACK ? 0
+                      : (int32_t)(frand(1e-6f, 1.0f) * MOTE__SHADE_ONE);
         v[k].texel[0] = (int64_t)(frand(-uv_range, uv_range) * 65536.0f);
         v[k].texel[1] = (int64_t)(frand(-uv_range / 2.0f, uv_range / 2.0f) * 65536.0f);
     }
@@ -93,7 +94,8 @@ void every_specialised_span_should_match_the_generic_span(void)
         mote__raster_state rs = texture_state((mote__tex_kind)texk, &tex,
                                                addr == 0 ? MOTE_WRAP_MIRROR : MOTE_WRAP_REPEAT);
         float uv_range = addr == 2 ? 5000.0f : 40.0f;
-        rs.gouraud = sk != MOTE__SHADE_FLAT;
+        /* black: from a Gouraud draw, and from a flat one (affine runs) */
+        rs.gouraud = sk == MOTE__SHADE_BLACK ? p != 0 : sk != MOTE__SHADE_FLAT;
         rs.persp = (mote__persp_kind)p;
         rs.subspan_log2 = 3;
         rs.depth_test = rs.depth_write = depthf != MOTE_DEPTH_FORMAT_NONE;

@@ -156,9 +156,14 @@ typedef enum mote__tex_kind { MOTE__TEX_NONE, MOTE__TEX_NEAREST, MOTE__TEX_BILIN
 typedef enum mote__persp_kind { MOTE__PERSP_AFFINE, MOTE__PERSP_CORRECT, MOTE__PERSP_SUBSPAN } mote__persp_kind;
 /* How a triangle's shade varies, decided per triangle by setup: one value
  * (flat draws, or all three vertices alike), one grey value interpolated
- * (white or grey light on a grey material: the usual case), or three
- * channels. All three give the same bytes; the cheaper ones skip work. */
-typedef enum mote__shade_kind { MOTE__SHADE_FLAT, MOTE__SHADE_MONO, MOTE__SHADE_RGB, MOTE__SHADE_COUNT } mote__shade_kind;
+ * (white or grey light on a grey material: the usual case), three
+ * channels, or zero everywhere (unlit, no ambient), which makes every
+ * pixel black whatever the texture holds: filled as an untextured flat
+ * triangle, with no weights set up. All give the same bytes; the cheaper
+ * ones skip work. The first three index the specialised fill table. */
+typedef enum mote__shade_kind {
+    MOTE__SHADE_FLAT, MOTE__SHADE_MONO, MOTE__SHADE_RGB, MOTE__SHADE_BLACK, MOTE__SHADE_COUNT
+} mote__shade_kind;
 
 struct mote__tri;
 struct mote__target;
@@ -190,10 +195,12 @@ enum { MOTE__A_R, MOTE__A_G, MOTE__A_B, MOTE__A_U, MOTE__A_V, MOTE__ATTRS };
 
 /* Whether a triangle of this shade kind, with or without a texture, has a
  * plane for attribute a: red alone for one grey shade, all three for RGB,
- * none for a constant one, the texels with a texture. Setup makes only
- * those; the pixel loops read only those. */
+ * none for a constant one, the texels with a texture; none at all for a
+ * black one. Setup makes only those; the pixel loops read only those. */
 static inline bool mote__has_plane(int a, mote__shade_kind shade, bool textured)
 {
+    if (shade == MOTE__SHADE_BLACK)
+        return false;
     if (a >= MOTE__A_U)
         return textured;
     return shade == MOTE__SHADE_RGB || (shade == MOTE__SHADE_MONO && a == MOTE__A_R);

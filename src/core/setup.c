@@ -201,13 +201,32 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
     }
 
     t->shift = 0;
-    t->shade = MOTE__SHADE_FLAT;
     t->rbits = MOTE__RBITS;       /* any pixel loop stays defined (N = 0: A = a0) */
     t->q = t->qdx = t->qdy = 0;
-    for (int c = 0; c < 3; c++)   /* the shade at vertex 0: every draw has one */
-        t->a0[c] = v[0]->s[c];
+    /* The shade: vertex 0's, and the differences to it (shades and their
+     * differences fit in 32 bits). It is grey when its three channels agree
+     * at every vertex, constant when no channel changes, and black when it
+     * is also zero (shades are >= 0): mote__modulate(c, 0) is 0 for any
+     * texel, so a black triangle needs no weights. Tested with bits. */
+    int64_t d1[MOTE__ATTRS], d2[MOTE__ATTRS];
+    uint32_t differ = 0, vary = 0, lit = 0;
+    for (int c = 0; c < 3; c++) {
+        int32_t s0 = v[0]->s[c];
+        int32_t e1 = v[1]->s[c] - s0, e2 = v[2]->s[c] - s0;
+        t->a0[c] = s0;
+        d1[c] = e1;
+        d2[c] = e2;
+        differ |= (uint32_t)(s0 ^ (int32_t)t->a0[0]) | (uint32_t)(e1 ^ (int32_t)d1[0])
+                | (uint32_t)(e2 ^ (int32_t)d2[0]);
+        vary |= (uint32_t)(e1 | e2);
+        lit |= (uint32_t)s0;
+    }
+    if (!rs->gouraud)             /* one shade per triangle: vertex 0's */
+        vary = 0;
+    t->shade = vary != 0 ? (differ == 0 ? MOTE__SHADE_MONO : MOTE__SHADE_RGB)
+             : lit != 0 ? MOTE__SHADE_FLAT : MOTE__SHADE_BLACK;
     t->a0[MOTE__A_U] = t->a0[MOTE__A_V] = 0;
-    bool needs_weights = rs->gouraud || rs->tex != MOTE__TEX_NONE;
+    bool needs_weights = t->shade != MOTE__SHADE_BLACK && (rs->gouraud || rs->tex != MOTE__TEX_NONE);
     if (!needs_weights)
         memset(t->n, 0, sizeof t->n);
     else {
@@ -291,22 +310,6 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
         t->shift = (int8_t)MOTE__MAX(s, 0);
 
-        /* attribute differences to vertex 0; the shade is grey when its
-         * three channels agree at every vertex, constant when no channel
-         * changes (tested with bits, not branches) */
-        int64_t d1[MOTE__ATTRS], d2[MOTE__ATTRS];
-        uint32_t differ = 0, vary = 0;    /* shades and their differences fit in 32 bits */
-        for (int c = 0; c < 3; c++) {
-            int32_t s0 = (int32_t)t->a0[c];
-            int32_t e1 = v[1]->s[c] - s0, e2 = v[2]->s[c] - s0;
-            d1[c] = e1;
-            d2[c] = e2;
-            differ |= (uint32_t)(s0 ^ (int32_t)t->a0[0]) | (uint32_t)(e1 ^ (int32_t)d1[0])
-                    | (uint32_t)(e2 ^ (int32_t)d2[0]);
-            vary |= (uint32_t)(e1 | e2);
-        }
-        if (rs->gouraud && vary != 0)
-            t->shade = differ == 0 ? MOTE__SHADE_MONO : MOTE__SHADE_RGB;
         /* K (below): shade differences are at most 2^24 and never lower
          * it; texel differences' largest magnitude does, and has the bit
          * length of all their magnitudes or-ed together */
@@ -360,11 +363,11 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         /* D(x, y) = D0 + (E1 (D1 - D0) + E2 (D2 - D0)) / (2 area); E1, E2 at
          * the origin are below 2^32 (both vanish at vertex 0), steps below
          * 2^32, depth differences below 2^25: all products fit */
-        int64_t d1 = d[1] - d[0], d2 = d[2] - d[0];
+        int64_t dz1 = d[1] - d[0], dz2 = d[2] - d[0];
         int64_t zp[3];
         bool huge = false;
         for (int j = 0; j < 3; j++)
-            zp[j] = mote__scaled_div(ed[3 * j + 1] * d1 + ed[3 * j + 2] * d2, a2, &huge);
+            zp[j] = mote__scaled_div(ed[3 * j + 1] * dz1 + ed[3 * j + 2] * dz2, a2, &huge);
         /* such a sliver has no usable plane (a clamped gradient would be
          * wrong by far some pixels along it): it takes vertex 0's depth,
          * which at least lies within its vertices' range */
