@@ -460,6 +460,55 @@ void vertex_colours_should_multiply_the_lit_material_colour_in_every_mode(void)
     }
 }
 
+/* A textured quad whose light falls on its back, with no ambient: its
+ * shade is zero everywhere, so every pixel is black whatever the texture,
+ * and setup files both triangles as black (filled without the texture).
+ * An ambient too dim to move a channel makes them ordinary textured
+ * triangles: the same bytes, colour and depth. */
+void unlit_textured_triangles_should_be_black_and_the_same_as_textured(void)
+{
+    static uint8_t texels[4 * 4 * 4];
+    for (int i = 0; i < (int)sizeof texels; i++)
+        texels[i] = (uint8_t)(37 * i + 11);
+    static const mote_texture tex = {4, 4, MOTE_FORMAT_RGBA8888, 16, texels};
+    static uint8_t black_color[sizeof color];
+    static uint32_t black_depth[W * H];
+    mote_mesh q = make_quad(-3.0f, -2.0f, 4.0f, 3.0f, 5.0f);
+    q.material.texture = &tex;
+    quad_v[1].position[2] = 9.0f; /* tilted: perspective matters */
+    frame.light_count = 1;
+    frame.lights[0].type = MOTE_LIGHT_DIRECTIONAL;
+    frame.lights[0].direction[2] = -1.0f; /* toward the camera: lights the back */
+    mote_draw_desc d = {0};
+    d.mode = MOTE_MODE_TEXTURED;
+    for (int dim = 0; dim < 2; dim++) {
+        frame.ambient[0] = frame.ambient[1] = frame.ambient[2] = dim ? 1e-4f : 0.0f;
+        memset(color, 7, sizeof color);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &q, &d));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+        const mote_stats *s = mote_device_stats(&dev);
+        TEST_ASSERT_EQUAL_UINT32(2, s->triangles_drawn);
+        TEST_ASSERT_EQUAL_UINT32(dim ? 0 : 2, s->triangles_black);
+        if (!dim) {
+            int covered = 0;
+            for (int i = 0; i < W * H; i++) {
+                if (depth[i] == 0xffffffu)
+                    continue;
+                covered++;
+                TEST_ASSERT_EQUAL_HEX32(0xff000000u, (uint32_t)color[4 * i] | (uint32_t)color[4 * i + 1] << 8
+                                        | (uint32_t)color[4 * i + 2] << 16 | (uint32_t)color[4 * i + 3] << 24);
+            }
+            TEST_ASSERT_GREATER_THAN_INT(W * H / 8, covered);
+            memcpy(black_color, color, sizeof color);
+            memcpy(black_depth, depth, sizeof black_depth);
+        } else {
+            TEST_ASSERT_EQUAL_MEMORY(black_color, color, sizeof color);
+            TEST_ASSERT_EQUAL_MEMORY(black_depth, depth, sizeof black_depth);
+        }
+    }
+}
+
 void unlit_vertex_colours_should_be_interpolated_and_averaged_when_flat(void)
 {
     /* red, green and blue at the corners of the half-screen triangle */
@@ -770,6 +819,7 @@ int main(void)
     RUN_TEST(gouraud_shading_should_interpolate_vertex_intensities);
     RUN_TEST(lighting_should_follow_the_mesh_rotation);
     RUN_TEST(vertex_colours_should_multiply_the_lit_material_colour_in_every_mode);
+    RUN_TEST(unlit_textured_triangles_should_be_black_and_the_same_as_textured);
     RUN_TEST(unlit_vertex_colours_should_be_interpolated_and_averaged_when_flat);
     RUN_TEST(points_and_wireframe_should_keep_their_colour_over_vertex_colours);
     RUN_TEST(each_texel_should_land_on_its_pixels);

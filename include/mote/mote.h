@@ -491,6 +491,7 @@ typedef struct mote_stats {
     uint32_t triangles_backface;          /* culled by winding */
     uint32_t triangles_degenerate;        /* zero snapped area, or no pixel centre in its box */
     uint32_t triangles_drawn;             /* set up and rasterised */
+    uint32_t triangles_black;             /* of those, unlit (zero shade): filled black, texture skipped */
     uint32_t tiles_empty, tiles_drawn;    /* binned mode */
     uint32_t tiles_clear_skipped;         /* clear_drawn_tiles_only: tiles still clear, not cleared */
     uint32_t arena_flushes;               /* binned mode: times the arena filled up */

@@ -357,6 +357,7 @@ static void mote__stats_add(mote_stats *to, const mote_stats *from)
     to->triangles_backface += from->triangles_backface;
     to->triangles_degenerate += from->triangles_degenerate;
     to->triangles_drawn += from->triangles_drawn;
+    to->triangles_black += from->triangles_black;
     to->tiles_empty += from->tiles_empty;
     to->tiles_drawn += from->tiles_drawn;
     to->arena_flushes += from->arena_flushes;

@@ -431,6 +431,7 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
         return;
     }
     dev->stats.triangles_drawn++;
+    dev->stats.triangles_black += t.shade == MOTE__SHADE_BLACK;
     if (!MOTE_ENABLE_BINNING || cx->sink == MOTE__SINK_RASTER) {
         mote__raster_tri(&t, cx->tg, cx->region, dev->desc.subpixel_bits);
     } else {

@@ -1200,6 +1200,51 @@ static bench_table *section_savings(void)
                 100.0 * (1.0 - with->t.med / without->t.med), sw.triangles_backface,
                 (double)sw.pixels_written, (double)so.pixels_written);
     }
+    /* unlit triangles filled black without their texture, against the same
+     * frame with an ambient of 2^-22: a few units of the 2^24 shade scale,
+     * so no triangle is black, and a lit channel moves only where its
+     * product lies within a hair of a rounding boundary (counted) */
+    {
+        bench_scene *s = scene_named(have_assets ? "monkey-1920" : "torus-1920");
+        const float dim = 1.0f / 4194304.0f;
+        bench_row *with = run_mote("savings", s, tex, RUN_SERIAL, 1, 0, false, &sw);
+        snprintf(with->mode, sizeof with->mode, "black-unlit");
+        size_t n = (size_t)s->width * (size_t)s->height;
+        uint8_t *img[2][2];
+        float keep[3];
+        memcpy(keep, s->frame.ambient, sizeof keep);
+        for (int k = 0; k < 2; k++) {
+            for (int c = 0; c < 3; c++)
+                s->frame.ambient[c] = keep[c] + (k ? dim : 0.0f);
+            bench_dev bd;
+            dev_init(&bd, s, tex, RUN_SERIAL, 1);
+            img[k][0] = bench_alloc(n * 4);
+            img[k][1] = bench_alloc(n);
+            dev_render(&bd, s, tex, BENCH_ERR_FRAME, 0);
+            dev_image(&bd, img[k][0], img[k][1]);
+            dev_free(&bd);
+        }
+        unsigned differ = 0, maxd = 0;
+        for (size_t i = 0; i < n; i++) {
+            unsigned d = img[0][1][i] != img[1][1][i] ? 255u : 0u;
+            for (int c = 0; c < 3; c++) {
+                int e = abs((int)img[0][0][4 * i + c] - (int)img[1][0][4 * i + c]);
+                d = (unsigned)e > d ? (unsigned)e : d;
+            }
+            differ += d != 0;
+            maxd = d > maxd ? d : maxd;
+        }
+        for (int k = 0; k < 2; k++)
+            free(img[k][0]), free(img[k][1]);
+        bench_row *without = run_mote("savings", s, tex, RUN_SERIAL, 1, 0, false, &so);
+        snprintf(without->mode, sizeof without->mode, "ambient-2^-22");
+        memcpy(s->frame.ambient, keep, sizeof keep);
+        tbl_row(t, "unlit triangles filled black, not textured|%s|%s|%s|%.0f%%|%u of %u triangles black; "
+                   "without: ambient +2^-22, %u black, %u pixels differ (max %u)",
+                s->name, fmt_ms(with->t.med, a), fmt_ms(without->t.med, b),
+                100.0 * (1.0 - with->t.med / without->t.med), sw.triangles_black, sw.triangles_drawn,
+                so.triangles_black, differ, maxd);
+    }
     bench_scene *fill = scene_named("fill");
     if (fill) {
         bench_row *with = run_mote("savings", fill, tex, RUN_SERIAL, 1, 1, false, &sw);
