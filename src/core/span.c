@@ -553,13 +553,23 @@ static int mote__dsel(mote_depth_format f)
     return f == MOTE_DEPTH_FORMAT_16 ? MOTE__D_16 : f == MOTE_DEPTH_FORMAT_32 ? MOTE__D_32 : MOTE__D_NONE;
 }
 
+/* The texture and shade a fill of this shade kind draws with: a black
+ * triangle is drawn as an untextured flat one (for the table and the
+ * generic loop alike). */
+static inline void mote__fill_kinds(int shade_kind, int draw_tex, int *tex, int *shade)
+{
+    bool black = shade_kind == MOTE__SHADE_BLACK;
+    *tex = black ? MOTE__TEX_NONE : draw_tex;
+    *shade = black ? MOTE__SHADE_FLAT : shade_kind;
+}
+
 void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
 {
     const mote__raster_state *rs = t->rs;
     int dsel = (rs->depth_test || rs->depth_write) ? mote__dsel(tg->depth_format) : MOTE__D_NONE;
-    const bool black = t->shade == MOTE__SHADE_BLACK;   /* untextured, flat */
-    mote__fill_body(t, tg, r, F, black ? MOTE__TEX_NONE : rs->tex, MOTE_FORMAT_DEFAULT,
-                    black ? MOTE__SHADE_FLAT : t->shade, rs->persp, dsel,
+    int tex, shade;
+    mote__fill_kinds(t->shade, (int)rs->tex, &tex, &shade);
+    mote__fill_body(t, tg, r, F, tex, MOTE_FORMAT_DEFAULT, shade, rs->persp, dsel,
                     (rs->depth_test ? MOTE__D_TEST : 0) | (rs->depth_write ? MOTE__D_WRITE : 0), tg->format, 0);
 }
 
@@ -568,6 +578,7 @@ void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r
  * triangle takes the untextured flat entry) x perspective x depth x format,
  * with depth test and write both on (the common case) and RGBA8888
  * textures (what the loader makes). Anything else uses the generic loop. */
+enum { MOTE__TABLE_SHADES = MOTE__SHADE_BLACK };   /* flat, mono, RGB */
 #define MOTE__FORMATS(X, T, S, P, D) X(T, S, P, D, RGBA8888) X(T, S, P, D, RGB565)
 #define MOTE__DEPTHS(X, T, S, P) MOTE__FORMATS(X, T, S, P, 0) MOTE__FORMATS(X, T, S, P, 1) MOTE__FORMATS(X, T, S, P, 2)
 #define MOTE__PERSPS(X, T, S) MOTE__DEPTHS(X, T, S, 0) MOTE__DEPTHS(X, T, S, 1) MOTE__DEPTHS(X, T, S, 2)
@@ -587,7 +598,7 @@ MOTE__ALL(MOTE__DEFINE)
 static const mote__fill_fn mote__fill_table[] = {MOTE__ALL(MOTE__ENTRY)};
 #undef MOTE__ENTRY
 typedef char mote__fill_table_size_check[sizeof mote__fill_table / sizeof mote__fill_table[0]
-                                         == 3 * MOTE__SHADE_BLACK * 3 * 3 * 2 ? 1 : -1];
+                                         == 3 * MOTE__TABLE_SHADES * 3 * 3 * 2 ? 1 : -1];
 #endif
 
 /* Whether texels can be addressed by masks and shifts: both axes repeat,
@@ -621,13 +632,12 @@ void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_fo
         bool depth_on = rs->depth_test && rs->depth_write;
         bool depth_off = !rs->depth_test && !rs->depth_write;
         int f = format == MOTE_FORMAT_RGBA8888 ? 0 : format == MOTE_FORMAT_RGB565 ? 1 : -1;
-        bool tex_ok = rs->tex == MOTE__TEX_NONE || rs->texture->format == MOTE_FORMAT_RGBA8888;
-        /* a black triangle: the untextured flat loop */
-        bool black = s == MOTE__SHADE_BLACK;
-        if (f >= 0 && (tex_ok || black) && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
+        int tex, shade;
+        mote__fill_kinds(s, (int)rs->tex, &tex, &shade);
+        bool tex_ok = tex == MOTE__TEX_NONE || rs->texture->format == MOTE_FORMAT_RGBA8888;
+        if (f >= 0 && tex_ok && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
             int d = depth_on ? dsel : MOTE__D_NONE;
-            int tex = black ? MOTE__TEX_NONE : (int)rs->tex, shade = black ? MOTE__SHADE_FLAT : s;
-            int idx = (((tex * MOTE__SHADE_BLACK + shade) * 3 + (int)rs->persp) * 3 + d) * 2 + f;
+            int idx = (((tex * MOTE__TABLE_SHADES + shade) * 3 + (int)rs->persp) * 3 + d) * 2 + f;
             rs->fill[s] = mote__fill_table[idx];
         }
 #else
