@@ -84,7 +84,6 @@ static inline int32_t mote__floor_shift32(int32_t v, int k)
 
 void mote__mat4_identity(float m[16]);
 void mote__mat4_mul(const float a[16], const float b[16], float out[16]);
-void mote__mat4_point(const float m[16], const float p[3], float out[4]);
 /* Inverse-transpose of the upper 3x3 up to a positive scale (the cofactor
  * matrix, negated when the matrix mirrors, so normals stay outward), for
  * normals, row-major: n'[r] = sum_c out[r * 3 + c] n[c]. */
@@ -93,7 +92,6 @@ void mote__normal_matrix(const float m[16], bool mirrors, float out[9]);
 bool mote__world_matrix(const mote_mesh *mesh, float world[16]);
 void mote__cross3(const float a[3], const float b[3], float out[3]);
 float mote__sqrtf(float x);
-float mote__rsqrtf(float x);   /* 0 for 0, negative, NaN, Inf */
 
 /* A float's bits: tests on them spare soft-float targets a library call. */
 static inline uint32_t mote__float_bits(float x)
@@ -121,14 +119,58 @@ static inline bool mote__zero3(const float v[3])
     return ((mote__float_bits(v[0]) | mote__float_bits(v[1]) | mote__float_bits(v[2])) << 1) == 0;
 }
 
-/* Inline for speed; one shared copy (vmath.c) where flash counts. */
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+/* x > 0 and finite, from the bits: no library call on soft-float cores */
+static inline bool mote__positive_finite(float x)
+{
+    return mote__float_bits(x) - 1u < 0x7f7fffffu;
+}
+
+/* The helpers every vertex calls, inline for speed: as calls into
+ * vmath.c they cost the dense grid about 3% of its frame (the vertex
+ * stage spills around each). Where flash counts, one shared copy, which
+ * vmath.c defines (MOTE__VMATH_DEFINE). */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && !defined(MOTE__VMATH_DEFINE)
 float mote__dot3(const float a[3], const float b[3]);
+float mote__rsqrtf(float x);
+void mote__mat4_point(const float m[16], const float p[3], float out[4]);
 #else
-static inline float mote__dot3(const float a[3], const float b[3])
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define MOTE__VERTEX_FN
+#else
+#define MOTE__VERTEX_FN static inline
+#endif
+MOTE__VERTEX_FN float mote__dot3(const float a[3], const float b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
+
+/* 1/sqrt(x), 0 for 0, negative, NaN, Inf: the classic exponent-halving
+ * guess and three Newton steps (no division); about 1 ulp, and identical
+ * on every target. */
+MOTE__VERTEX_FN float mote__rsqrtf(float x)
+{
+    if (!mote__positive_finite(x))
+        return 0.0f;
+    union { float f; uint32_t u; } g;
+    g.f = x;
+    g.u = 0x5f375a86u - (g.u >> 1);
+    float y = g.f, h = 0.5f * x;
+    for (int i = 0; i < 3; i++)
+        y = y * (1.5f - h * y * y);
+    return y;
+}
+
+/* m (column-major) times the point (p, 1) */
+MOTE__VERTEX_FN void mote__mat4_point(const float m[16], const float p[3], float out[4])
+{
+    /* into a local first: out may alias p, and with the stores last the
+     * four rows can run as one vector operation */
+    float x = p[0], y = p[1], z = p[2], r[4];
+    for (int row = 0; row < 4; row++)
+        r[row] = m[0 * 4 + row] * x + m[1 * 4 + row] * y + m[2 * 4 + row] * z + m[3 * 4 + row];
+    memcpy(out, r, sizeof r);
+}
+#undef MOTE__VERTEX_FN
 #endif
 
 /* A vertex after the vertex stage: clip position and the attributes that

@@ -6,37 +6,10 @@
  * disables fused multiply-add, so every target computes the same bits; that
  * is also why sin/cos/tan are our own polynomials rather than libm's.
  */
+#define MOTE__VMATH_DEFINE     /* size builds: the one copy of internal.h's vertex helpers */
 #include "internal.h"
 
 #include <cglm/types.h>
-
-/* x > 0 and finite, from the bits: no library call on soft-float cores */
-static bool mote__positive_finite(float x)
-{
-    return mote__float_bits(x) - 1u < 0x7f7fffffu;
-}
-
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
-float mote__dot3(const float a[3], const float b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-#endif
-
-float mote__rsqrtf(float x)
-{
-    /* 1/sqrt(x): the classic exponent-halving guess and three Newton steps
-     * (no division); about 1 ulp, and identical on every target. */
-    if (!mote__positive_finite(x))
-        return 0.0f;
-    union { float f; uint32_t u; } g;
-    g.f = x;
-    g.u = 0x5f375a86u - (g.u >> 1);
-    float y = g.f, h = 0.5f * x;
-    for (int i = 0; i < 3; i++)
-        y = y * (1.5f - h * y * y);
-    return y;
-}
 
 float mote__sqrtf(float x)
 {
@@ -123,16 +96,6 @@ void mote__mat4_mul(const float a[16], const float b[16], float out[16])
         for (int row = 0; row < 4; row++)
             r[c * 4 + row] = a[0 * 4 + row] * b[c * 4 + 0] + a[1 * 4 + row] * b[c * 4 + 1]
                            + a[2 * 4 + row] * b[c * 4 + 2] + a[3 * 4 + row] * b[c * 4 + 3];
-    memcpy(out, r, sizeof r);
-}
-
-void mote__mat4_point(const float m[16], const float p[3], float out[4])
-{
-    /* into a local first: out may alias p, and with the stores last the
-     * four rows can run as one vector operation */
-    float x = p[0], y = p[1], z = p[2], r[4];
-    for (int row = 0; row < 4; row++)
-        r[row] = m[0 * 4 + row] * x + m[1 * 4 + row] * y + m[2 * 4 + row] * z + m[3 * 4 + row];
     memcpy(out, r, sizeof r);
 }
 
