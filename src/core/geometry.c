@@ -5,6 +5,15 @@
  */
 #include "internal.h"
 
+/* Lighting, snapping and the conversion to setup's units, inlined into
+ * each vertex's path in speed builds: GCC kept them as calls, and the
+ * dense grid ran 2% faster without them. Size builds keep one copy. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define MOTE__VERTEX_INLINE static inline __attribute__((always_inline))
+#else
+#define MOTE__VERTEX_INLINE static
+#endif
+
 /* A transformed vertex as cached per draw, with what every triangle using
  * it would otherwise recompute per corner: its outcode and, when it is
  * inside every clip plane, its snapped screen position. */
@@ -51,7 +60,7 @@ typedef struct mote__ctx {
 
 /* ---- lighting ------------------------------------------------------------ */
 
-static void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
+MOTE__VERTEX_INLINE void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
 {
     const mote_frame_desc *f = &cx->dev->frame;
     float acc[3] = {f->ambient[0], f->ambient[1], f->ambient[2]};
@@ -255,7 +264,7 @@ static bool mote__snap_axis(float n, int64_t h, int64_t lim, int32_t *out)
     return true;
 }
 
-static bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, int32_t *Y)
+MOTE__VERTEX_INLINE bool mote__snap(const mote__ctx *cx, const mote__cvert *v, int32_t *X, int32_t *Y)
 {
     if (!(v->w > 0.0f))
         return false;
@@ -296,7 +305,7 @@ static int64_t mote__round_scaled(float f, int s)
 /* A final vertex (as transformed, or made by clipping) in setup's units.
  * Any valid vertex converts (texels within 1e9, see mote__transform), also
  * one that clipping will drop. */
-static void mote__to_setup(const mote__cvert *v, mote__svert *out)
+MOTE__VERTEX_INLINE void mote__to_setup(const mote__cvert *v, mote__svert *out)
 {
     mote__shade_fixed(v->s, out->s);
     for (int k = 0; k < 2; k++)
