@@ -126,20 +126,20 @@ static inline bool mote__positive_finite(float x)
 }
 
 /* The helpers every vertex calls, inline for speed: as calls into
- * vmath.c they cost the dense grid about 3% of its frame (the vertex
- * stage spills around each). Where flash counts, one shared copy, which
- * vmath.c defines (MOTE__VMATH_DEFINE). */
+ * vmath.c they cost the dense grid 3-5% of its frame (the vertex stage
+ * spilled registers around each). Where flash counts, one shared copy,
+ * which vmath.c defines (MOTE__VMATH_DEFINE). */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && !defined(MOTE__VMATH_DEFINE)
 float mote__dot3(const float a[3], const float b[3]);
 float mote__rsqrtf(float x);
 void mote__mat4_point(const float m[16], const float p[3], float out[4]);
 #else
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
-#define MOTE__VERTEX_FN
+#define MOTE__VMATH_FN
 #else
-#define MOTE__VERTEX_FN static inline
+#define MOTE__VMATH_FN static inline
 #endif
-MOTE__VERTEX_FN float mote__dot3(const float a[3], const float b[3])
+MOTE__VMATH_FN float mote__dot3(const float a[3], const float b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
@@ -147,7 +147,7 @@ MOTE__VERTEX_FN float mote__dot3(const float a[3], const float b[3])
 /* 1/sqrt(x), 0 for 0, negative, NaN, Inf: the classic exponent-halving
  * guess and three Newton steps (no division); about 1 ulp, and identical
  * on every target. */
-MOTE__VERTEX_FN float mote__rsqrtf(float x)
+MOTE__VMATH_FN float mote__rsqrtf(float x)
 {
     if (!mote__positive_finite(x))
         return 0.0f;
@@ -161,7 +161,7 @@ MOTE__VERTEX_FN float mote__rsqrtf(float x)
 }
 
 /* m (column-major) times the point (p, 1) */
-MOTE__VERTEX_FN void mote__mat4_point(const float m[16], const float p[3], float out[4])
+MOTE__VMATH_FN void mote__mat4_point(const float m[16], const float p[3], float out[4])
 {
     /* into a local first: out may alias p, and with the stores last the
      * four rows can run as one vector operation */
@@ -170,7 +170,7 @@ MOTE__VERTEX_FN void mote__mat4_point(const float m[16], const float p[3], float
         r[row] = m[0 * 4 + row] * x + m[1 * 4 + row] * y + m[2 * 4 + row] * z + m[3 * 4 + row];
     memcpy(out, r, sizeof r);
 }
-#undef MOTE__VERTEX_FN
+#undef MOTE__VMATH_FN
 #endif
 
 /* A vertex after the vertex stage: clip position and the attributes that
