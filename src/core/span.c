@@ -204,20 +204,20 @@ MOTE__SMALL int64_t mote__attr(int64_t a0, int64_t n, uint64_t r, int k)
 }
 
 /* The nearest texel of a repeating power-of-two texture, from the texel
- * coordinates' numerator planes. u = a0 + P / 2^(k-20) with P = (n >> 10) r
- * (mote__attr), and the texel column is (u >> 16) & (w - 1): that is bits
- * k-4 and up of a0 2^(k-20) + P, which in modular 64-bit arithmetic are
- * right as long as they lie below bit 64, w <= 2^(68-k) (the raster state
- * keeps pow2_repeat for textures up to that). One addition and one shift
- * instead of two shifts, and the row's byte offset straight from v's sum. */
-MOTE__INLINE void mote__texel_pow2(const mote__tex_view *tx, const uint64_t origin[2], int64_t nu, int64_t nv,
-                                   uint64_t r, int k, uint32_t c[3])
+ * coordinates' numerator planes: its row, and its column in *col.
+ * u = a0 + P / 2^(k-20) with P = (n >> 10) r (mote__attr), and the texel
+ * column is (u >> 16) & (w - 1): that is bits k-4 and up of
+ * a0 2^(k-20) + P, which in modular 64-bit arithmetic are right as long as
+ * they lie below bit 64, w <= 2^(68-k) (the raster state keeps pow2_repeat
+ * for textures up to that). One addition and one shift instead of two
+ * shifts, and the row's byte offset straight from v's sum. */
+MOTE__INLINE const uint8_t *mote__texel_pow2(const mote__tex_view *tx, const uint64_t origin[2], int64_t nu,
+                                             int64_t nv, uint64_t r, int k, size_t *col)
 {
     uint64_t su = origin[0] + (uint64_t)(nu >> 10) * r, sv = origin[1] + (uint64_t)(nv >> 10) * r;
-    size_t col = (size_t)(su >> (k - 4)) & (size_t)(tx->w - 1);
+    *col = (size_t)(su >> (k - 4)) & (size_t)(tx->w - 1);
     /* the row's offset (v's texel << stride_log2) is those bits of sv moved down less far */
-    size_t row = (size_t)(sv >> (k - 4 - tx->stride_log2)) & ((size_t)(tx->h - 1) << tx->stride_log2);
-    mote__texel_in_row(tx->format, tx->pixels + row, col, c);
+    return tx->pixels + ((size_t)(sv >> (k - 4 - tx->stride_log2)) & ((size_t)(tx->h - 1) << tx->stride_log2));
 }
 
 /* Packs a colour for a format: one store per pixel in the loop. */
@@ -268,6 +268,41 @@ MOTE__INLINE void mote__modulate_grey(uint32_t c[3], uint32_t s)
     c[2] = (uint32_t)(rb >> 56);
 }
 
+/* An RGBA8888 texel word modulated by a shade per channel (mote__modulate)
+ * and packed as an RGBA8888 pixel, in SSE2's vector registers: the pixel
+ * loop runs short of integer ALUs, not of vector ones (Suzanne textured:
+ * 0.94x the time at 640x480, 0.88x at 1920x1080). The products
+ * c s + 2^23 < 2^32 lie in 64-bit lanes, red and blue in one multiplication
+ * (shades s_rb = {sr, -, sb, -}), green and alpha in the other
+ * (s_ga = {sg, -, 0, -}); the pixel's alpha is 255 whatever the texel's. */
+#if MOTE_SPECIALISE_SPANS && MOTE__LITTLE_ENDIAN && defined(__SSE2__)
+#include <emmintrin.h>
+#define MOTE__VECTOR_MODULATE 1
+MOTE__INLINE uint32_t mote__modulate_word(uint32_t texel, __m128i s_rb, __m128i s_ga)
+{
+    const __m128i zero = _mm_setzero_si128(), half = _mm_set1_epi64x((long long)1 << 23);
+    __m128i c = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128((int)texel), zero), zero);
+    __m128i rb = _mm_srli_epi64(_mm_add_epi64(_mm_mul_epu32(c, s_rb), half), 24);
+    __m128i ga = _mm_srli_epi64(_mm_add_epi64(_mm_mul_epu32(_mm_srli_epi64(c, 32), s_ga), half), 24);
+    __m128i x = _mm_or_si128(rb, _mm_slli_epi64(ga, 8));   /* 64-bit lanes r | g << 8, b | a << 8 */
+    x = _mm_or_si128(x, _mm_srli_si128(x, 6));             /* b | a << 8 moved to bits 16..31 */
+    return (uint32_t)_mm_cvtsi128_si32(x) | 0xff000000u;
+}
+
+/* The shade lanes mote__modulate_word multiplies by. */
+MOTE__INLINE void mote__shade_lanes(int shade, uint32_t sr, uint32_t sg, uint32_t sb, __m128i *s_rb, __m128i *s_ga)
+{
+    if (shade == MOTE__SHADE_MONO) {
+        *s_rb = *s_ga = _mm_shuffle_epi32(_mm_cvtsi32_si128((int)sr), 0);
+    } else {
+        *s_rb = _mm_unpacklo_epi64(_mm_cvtsi32_si128((int)sr), _mm_cvtsi32_si128((int)sb));
+        *s_ga = _mm_cvtsi32_si128((int)sg);
+    }
+}
+#else
+#define MOTE__VECTOR_MODULATE 0
+#endif
+
 MOTE__SMALL uint32_t mote__clamp_shade(int64_t v)
 {
     /* one test for the usual in-range value, as for depth */
@@ -300,8 +335,8 @@ typedef struct mote__fill_ctx {
  * numerator planes n[]). Returns the number of pixels written. */
 MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
                                    ptrdiff_t x0, ptrdiff_t x1, int64_t z, int64_t q, const int64_t n[MOTE__ATTRS],
-                                   const int tex, const bool pow2, const int shade, const int persp,
-                                   const int dsel, const int dmode, const mote_format fmt, const int k)
+                                   const int tex, const mote_format tfmt, const bool pow2, const int shade,
+                                   const int persp, const int dsel, const int dmode, const mote_format fmt, const int k)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     const int64_t zdx = c->zdx, qdx = c->qdx;
@@ -381,11 +416,28 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 sg = mote__shade_at(c->a0[MOTE__A_G], ng, r, k);
                 sb = mote__shade_at(c->a0[MOTE__A_B], nb, r, k);
             }
+            const bool pow2_nearest = MOTE_SPECIALISE_SPANS && tex == MOTE__TEX_NEAREST && pow2;
+#if MOTE__VECTOR_MODULATE
+            /* only where the texture's format is a constant: the
+             * specialised variants, not their oracle, the generic loop */
+            if (pow2_nearest && tfmt == MOTE_FORMAT_RGBA8888 && fmt == MOTE_FORMAT_RGBA8888) {
+                size_t col;
+                uint32_t word;
+                memcpy(&word, mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, &col) + 4 * col, 4);
+                __m128i s_rb, s_ga;
+                mote__shade_lanes(shade, sr, sg, sb, &s_rb, &s_ga);
+                px = mote__modulate_word(word, s_rb, s_ga);
+            } else
+#else
+            (void)tfmt;
+#endif
             if (tex) {
                 uint32_t t[3];
-                if (MOTE_SPECIALISE_SPANS && tex == MOTE__TEX_NEAREST && pow2)
-                    mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, t);
-                else
+                if (pow2_nearest) {
+                    size_t col;
+                    const uint8_t *row = mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, &col);
+                    mote__texel_in_row(c->tx.format, row, col, t);
+                } else
                     mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
                                  mote__attr(c->a0[MOTE__A_V], nv, r, k), t);
                 /* a flat shade takes three products: testing for grey at
@@ -426,8 +478,8 @@ MOTE__INLINE bool mote__reads_plane(int a, int shade, int tex)
  * planes are stepped down from their values at column ox of the first
  * row (unsigned: exact modulo 2^64, see mote__plane_at). */
 MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote__tri *t, const mote__target *tg,
-                             const int tex, const bool pow2, const int shade, const int persp,
-                             const int dsel, const int dmode, const mote_format fmt, const int k)
+                             const int tex, const mote_format tfmt, const bool pow2, const int shade,
+                             const int persp, const int dsel, const int dmode, const mote_format fmt, const int k)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     uint8_t *const color = tg->color;
@@ -464,7 +516,7 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
                                     dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
                                     mote__plane_at((int64_t)zr, c->zdx, dx0),
                                     varying ? mote__plane_at((int64_t)qr, c->qdx, dx0) : 0, n,
-                                    tex, pow2, shade, persp, dsel, dmode, fmt, k);
+                                    tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, k);
             tested += (uint64_t)(x1 - x0);
         }
         MOTE__UNROLL
@@ -536,11 +588,11 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
 #if MOTE_SPECIALISE_SPANS
     /* a power-of-two repeating texture: its own loop, texel addresses by masks */
     if (tex && c.tx.pow2_repeat) {
-        mote__rows(&c, &w, t, tg, tex, true, shade, persp, dsel, dmode, fmt, k);
+        mote__rows(&c, &w, t, tg, tex, tfmt, true, shade, persp, dsel, dmode, fmt, k);
         return;
     }
 #endif
-    mote__rows(&c, &w, t, tg, tex, c.tx.pow2_repeat, shade, persp, dsel, dmode, fmt, k);
+    mote__rows(&c, &w, t, tg, tex, tfmt, c.tx.pow2_repeat, shade, persp, dsel, dmode, fmt, k);
 }
 
 void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)
