@@ -17,6 +17,10 @@
  * reload them after every pixel. Row by row only the plane values at the
  * row start change.
  *
+ * On SSE2 hosts the variants do a textured pixel's colour arithmetic in
+ * vector registers (MOTE__VECTOR_COLOR): the same sums, on units the
+ * integer pixel loop leaves idle. The generic loop stays scalar.
+ *
  * Define MOTE_SPECIALISE_SPANS 0 to keep only the generic loop (small flash).
  */
 #include "internal.h"
@@ -299,16 +303,17 @@ MOTE__INLINE void mote__modulate_grey(uint32_t c[3], uint32_t s)
     c[2] = (uint32_t)(rb >> 56);
 }
 
-/* Vector registers (SSE2) for the colour arithmetic of textured pixels
- * with RGBA8888 texels and target: the pixel loop runs short of integer
- * ALUs, not of vector ones (Suzanne textured, nearest: 0.93x the time at
- * 640x480, 0.86x at 1920x1080; bilinear 0.64x at 1920x1080). A texel's
+/* MOTE__VECTOR_COLOR: vector registers (SSE2) for the colour arithmetic
+ * of textured pixels with RGBA8888 texels and target: the pixel loop runs
+ * short of integer ALUs, not of vector ones (Suzanne textured, nearest:
+ * 0.93x the time at 640x480, 0.86x at 1920x1080; bilinear 0.77x and
+ * 0.65x). A texel's
  * channels are the 32-bit lanes r, g, b, a of one register; the sums are
  * the scalar code's, channel by channel. Only the specialised variants
  * use them: the generic loop stays their oracle. */
 #if MOTE_SPECIALISE_SPANS && MOTE__LITTLE_ENDIAN && defined(__SSE2__)
 #include <emmintrin.h>
-#define MOTE__VECTOR_MODULATE 1
+#define MOTE__VECTOR_COLOR 1
 
 /* A texel word's channels. */
 MOTE__INLINE __m128i mote__word_channels(uint32_t texel)
@@ -369,7 +374,7 @@ MOTE__INLINE uint32_t mote__word(const uint8_t *row, size_t x)
     return v;
 }
 #else
-#define MOTE__VECTOR_MODULATE 0
+#define MOTE__VECTOR_COLOR 0
 #endif
 
 MOTE__SMALL uint32_t mote__clamp_shade(int64_t v)
@@ -486,7 +491,7 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 sb = mote__shade_at(c->a0[MOTE__A_B], nb, r, k);
             }
             const bool pow2_nearest = MOTE_SPECIALISE_SPANS && tex == MOTE__TEX_NEAREST && pow2;
-#if MOTE__VECTOR_MODULATE
+#if MOTE__VECTOR_COLOR
             /* only where the texture's format is a constant: the
              * specialised variants, not their oracle, the generic loop */
             if (tex && tfmt == MOTE_FORMAT_RGBA8888 && fmt == MOTE_FORMAT_RGBA8888) {
