@@ -147,7 +147,8 @@ MOTE__INLINE const uint8_t *mote__nearest(const mote__tex_view *tx, bool pow2_re
 
 /* The four texels bilinear filtering blends at (u, v), in 16.16 texels:
  * columns u0 and u1 of rows row0 and row1, weighted by fu and fv, the
- * 8-bit fractions of the way from u0 to u1 and row0 to row1. */
+ * 8-bit fractions of the way from u0 to u1 and row0 to row1. The pixel
+ * loop keeps a nearest texel in row0 and u0. */
 typedef struct mote__taps {
     const uint8_t *row0, *row1;
     size_t u0, u1;
@@ -181,23 +182,15 @@ MOTE__INLINE mote__taps mote__bilinear_taps(const mote__tex_view *tx, bool pow2_
     return t;
 }
 
-/* Samples the texture at (u, v) in 16.16 texels. */
-MOTE__INLINE void mote__sample(const mote__tex_view *tx, int bilinear, bool pow2_repeat, int64_t u, int64_t v,
-                               uint32_t c[3])
+/* Bilinear's blend of the four taps' texels, channel by channel. */
+MOTE__INLINE void mote__blend(mote_format format, const mote__taps *t, uint32_t c[3])
 {
-    if (!MOTE_ENABLE_BILINEAR || !bilinear) {
-        size_t col;
-        const uint8_t *row = mote__nearest(tx, pow2_repeat, u, v, &col);
-        mote__texel_in_row(tx->format, row, col, c);
-        return;
-    }
-    mote__taps t = mote__bilinear_taps(tx, pow2_repeat, u, v);
     uint32_t a[3], b[3], d[3], e[3];
-    mote__texel_in_row(tx->format, t.row0, t.u0, a);
-    mote__texel_in_row(tx->format, t.row0, t.u1, b);
-    mote__texel_in_row(tx->format, t.row1, t.u0, d);
-    mote__texel_in_row(tx->format, t.row1, t.u1, e);
-    const uint32_t fu = t.fu, fv = t.fv;
+    mote__texel_in_row(format, t->row0, t->u0, a);
+    mote__texel_in_row(format, t->row0, t->u1, b);
+    mote__texel_in_row(format, t->row1, t->u0, d);
+    mote__texel_in_row(format, t->row1, t->u1, e);
+    const uint32_t fu = t->fu, fv = t->fv;
     for (int k = 0; k < 3; k++)
         c[k] = (a[k] * (256 - fu) * (256 - fv) + b[k] * fu * (256 - fv) + d[k] * (256 - fu) * fv
                 + e[k] * fu * fv + 32768) >> 16;
@@ -322,7 +315,7 @@ MOTE__INLINE __m128i mote__word_channels(uint32_t texel)
     return _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128((int)texel), zero), zero);
 }
 
-/* mote__sample's bilinear blend of texel words a, b (row 0) and d, e
+/* mote__blend's sums for texel words a, b (row 0) and d, e
  * (row 1): each row's a (256 - fu) + b fu < 2^16 by one pmaddwd of 16-bit
  * lanes a_r b_r a_g b_g ..., then the rows weighted by 256 - fv and fv in
  * 64-bit lanes (red and blue, then green and alpha). */
@@ -490,53 +483,49 @@ MOTE__INLINE uint32_t mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint1
                 sg = mote__shade_at(c->a0[MOTE__A_G], ng, r, k);
                 sb = mote__shade_at(c->a0[MOTE__A_B], nb, r, k);
             }
-            const bool pow2_nearest = MOTE_SPECIALISE_SPANS && tex == MOTE__TEX_NEAREST && pow2;
-#if MOTE__VECTOR_COLOR
-            /* only where the texture's format is a constant: the
-             * specialised variants, not their oracle, the generic loop */
-            if (tex && tfmt == MOTE_FORMAT_RGBA8888 && fmt == MOTE_FORMAT_RGBA8888) {
-                __m128i t;
-                if (pow2_nearest) {
-                    size_t col;
-                    const uint8_t *row = mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, &col);
-                    t = mote__word_channels(mote__word(row, col));
-                } else if (tex == MOTE__TEX_NEAREST || !MOTE_ENABLE_BILINEAR) {
-                    size_t col;
-                    const uint8_t *row = mote__nearest(&c->tx, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
-                                                       mote__attr(c->a0[MOTE__A_V], nv, r, k), &col);
-                    t = mote__word_channels(mote__word(row, col));
-                } else {
-                    mote__taps p = mote__bilinear_taps(&c->tx, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
-                                                       mote__attr(c->a0[MOTE__A_V], nv, r, k));
-                    t = mote__blend_channels(mote__word(p.row0, p.u0), mote__word(p.row0, p.u1),
-                                             mote__word(p.row1, p.u0), mote__word(p.row1, p.u1), p.fu, p.fv);
-                }
-                __m128i s_rb, s_ga;
-                mote__shade_lanes(shade, sr, sg, sb, &s_rb, &s_ga);
-                px = mote__modulate_channels(t, s_rb, s_ga);
-            } else
-#else
-            (void)tfmt;
-#endif
             if (tex) {
-                uint32_t t[3];
-                if (pow2_nearest) {
-                    size_t col;
-                    const uint8_t *row = mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, &col);
-                    mote__texel_in_row(c->tx.format, row, col, t);
-                } else
-                    mote__sample(&c->tx, tex == MOTE__TEX_BILINEAR, pow2, mote__attr(c->a0[MOTE__A_U], nu, r, k),
-                                 mote__attr(c->a0[MOTE__A_V], nv, r, k), t);
-                /* a flat shade takes three products: testing for grey at
-                 * every pixel costs what the shared product saves */
-                if (MOTE__WIDE_REGISTERS && shade == MOTE__SHADE_MONO) {
-                    mote__modulate_grey(t, sr);
+                /* where the texel lies, or bilinear's four (nearest: row0, u0) */
+                const bool bilinear = MOTE_ENABLE_BILINEAR && tex == MOTE__TEX_BILINEAR;
+                mote__taps p;
+                if (MOTE_SPECIALISE_SPANS && !bilinear && pow2) {
+                    p.row0 = mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, &p.u0);
                 } else {
-                    t[0] = mote__modulate(t[0], sr);
-                    t[1] = mote__modulate(t[1], sg);
-                    t[2] = mote__modulate(t[2], sb);
+                    const int64_t u = mote__attr(c->a0[MOTE__A_U], nu, r, k), v = mote__attr(c->a0[MOTE__A_V], nv, r, k);
+                    if (bilinear)
+                        p = mote__bilinear_taps(&c->tx, pow2, u, v);
+                    else
+                        p.row0 = mote__nearest(&c->tx, pow2, u, v, &p.u0);
                 }
-                px = mote__pack(fmt, t[0], t[1], t[2]);
+                /* vector registers only where the texture's format is a
+                 * constant: the specialised variants, not their oracle,
+                 * the generic loop */
+                if (MOTE__VECTOR_COLOR && tfmt == MOTE_FORMAT_RGBA8888 && fmt == MOTE_FORMAT_RGBA8888) {
+#if MOTE__VECTOR_COLOR
+                    __m128i t = bilinear ? mote__blend_channels(mote__word(p.row0, p.u0), mote__word(p.row0, p.u1),
+                                                                mote__word(p.row1, p.u0), mote__word(p.row1, p.u1),
+                                                                p.fu, p.fv)
+                                         : mote__word_channels(mote__word(p.row0, p.u0));
+                    __m128i s_rb, s_ga;
+                    mote__shade_lanes(shade, sr, sg, sb, &s_rb, &s_ga);
+                    px = mote__modulate_channels(t, s_rb, s_ga);
+#endif
+                } else {
+                    uint32_t t[3];
+                    if (bilinear)
+                        mote__blend(c->tx.format, &p, t);
+                    else
+                        mote__texel_in_row(c->tx.format, p.row0, p.u0, t);
+                    /* a flat shade takes three products: testing for grey
+                     * at every pixel costs what the shared product saves */
+                    if (MOTE__WIDE_REGISTERS && shade == MOTE__SHADE_MONO) {
+                        mote__modulate_grey(t, sr);
+                    } else {
+                        t[0] = mote__modulate(t[0], sr);
+                        t[1] = mote__modulate(t[1], sg);
+                        t[2] = mote__modulate(t[2], sb);
+                    }
+                    px = mote__pack(fmt, t[0], t[1], t[2]);
+                }
             } else {
                 px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
             }
