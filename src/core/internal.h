@@ -297,13 +297,14 @@ typedef struct mote__edge {
     int64_t den, qstep, rstep;
 } mote__edge;
 
-/* A triangle's rows inside a region: rows [y, yend); the short edge
- * changes from a-b to b-c at row ymid. */
+/* A triangle's rows inside a region: rows [y, yend), between the left
+ * and the right edge; one is the long edge a-c, the other the short one,
+ * which changes from a-b to b-c at row ymid. */
 typedef struct mote__walk {
-    mote__edge longe, shorte;
+    mote__edge left, right;
     int y, ymid, yend;
     int rx0, rx1;                 /* the region's columns, cut to the triangle's box */
-    bool long_left;               /* the long edge a-c is the left one */
+    bool short_left;              /* the short edge is the left one */
     int32_t xb, yb, xc, yc;       /* vertices b and c (sorted by y) */
     int subpixel_bits;
 } mote__walk;
@@ -329,15 +330,11 @@ static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
 {
     if (w->y == w->ymid)
         mote__walk_switch(w);
-    /* left and right by mask, not by a branch on the triangle's shape */
-    int64_t swap = (w->longe.x ^ w->shorte.x) & -(int64_t)w->long_left;
-    int64_t a = w->shorte.x ^ swap, b = w->longe.x ^ swap;
-    a = MOTE__MAX(a, w->rx0);     /* rx0 < rx1 */
-    b = MOTE__MIN(b, w->rx1);
-    *x0 = (int)MOTE__MIN(a, w->rx1);
-    *x1 = (int)MOTE__MAX(b, w->rx0);
-    mote__edge_step(&w->longe);
-    mote__edge_step(&w->shorte);
+    /* cut to the region; an empty row stays empty (x0 >= x1) */
+    *x0 = (int)MOTE__MAX(w->left.x, w->rx0);
+    *x1 = (int)MOTE__MIN(w->right.x, w->rx1);
+    mote__edge_step(&w->left);
+    mote__edge_step(&w->right);
     w->y++;
 }
 

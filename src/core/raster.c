@@ -52,7 +52,8 @@ bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
     /* the vertices sorted by y (then x) and the long edge's side: from setup */
     const int o = t->order, a = o & 3, b = (o >> 2) & 3, c = (o >> 4) & 3;
     const int32_t xa = t->X[a], ya = t->Y[a], xb = t->X[b], yb = t->Y[b], xc = t->X[c], yc = t->Y[c];
-    w->long_left = (o >> 6) & 1;
+    const bool long_left = (o >> 6) & 1;
+    w->short_left = !long_left;
 
     w->rx0 = MOTE__MAX(r.x0, t->xmin);
     w->rx1 = MOTE__MIN(r.x1, t->xmax + 1);
@@ -69,16 +70,16 @@ bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
     w->xc = xc;
     w->yc = yc;
     w->subpixel_bits = F;
-    mote__edge_init(&w->longe, xa, ya, xc, yc, w->y, F);
+    mote__edge_init(long_left ? &w->left : &w->right, xa, ya, xc, yc, w->y, F);
     /* the short edge: a-b, or b-c when the region starts at or below b
      * (then no switch is to come: rows are >= 0); chosen without a branch */
     int upper = w->y < w->ymid, s0 = b ^ ((a ^ b) & -upper), s1 = c ^ ((b ^ c) & -upper);
-    mote__edge_init(&w->shorte, t->X[s0], t->Y[s0], t->X[s1], t->Y[s1], w->y, F);
+    mote__edge_init(long_left ? &w->right : &w->left, t->X[s0], t->Y[s0], t->X[s1], t->Y[s1], w->y, F);
     w->ymid |= upper - 1;
     return true;
 }
 
 void mote__walk_switch(mote__walk *w)
 {
-    mote__edge_init(&w->shorte, w->xb, w->yb, w->xc, w->yc, w->y, w->subpixel_bits);
+    mote__edge_init(w->short_left ? &w->left : &w->right, w->xb, w->yb, w->xc, w->yc, w->y, w->subpixel_bits);
 }
