@@ -31,6 +31,16 @@ typedef struct mote__tvert {
     mote__svert sv;               /* c in setup's units, once ready */
 } mote__tvert;
 
+/* Lit Gouraud vertices are finished four at a time on SSE2 hosts
+ * (mote__finish4): GCC's vector types, each lane the same float
+ * operations in the same order as mote__finish, so the same bits. */
+#if defined(__SSE2__) && defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define MOTE__VECTOR_FINISH 1
+#else
+#define MOTE__VECTOR_FINISH 0
+#endif
+struct mote__lit_queue;
+
 /* Direct-mapped vertex cache used without an arena (a power of two; each
  * entry is about 120 bytes of stack). */
 #ifndef MOTE_VERTEX_CACHE
@@ -57,9 +67,26 @@ typedef struct mote__ctx {
     mote__rect region;
     mote_draw_desc d;
     float nrm[9], mvp[16], world[16];
+    struct mote__lit_queue *queue; /* not NULL: front faces wait for their vertices (MOTE__VECTOR_FINISH) */
 } mote__ctx;
 
 /* ---- lighting ------------------------------------------------------------ */
+
+/* What lighting takes of light l: its colour (white when unset), its
+ * intensity (1 when unset) and the sign that turns a directional or
+ * hemispheric light's direction toward the light. False for a type that
+ * lights nothing. */
+MOTE__VERTEX_INLINE bool mote__light_terms(const mote_light *l, float col[3], float *k, float *s)
+{
+    if (l->type != MOTE_LIGHT_POINT && l->type != MOTE_LIGHT_DIRECTIONAL && l->type != MOTE_LIGHT_HEMISPHERIC)
+        return false;
+    memcpy(col, l->color, 3 * sizeof *col);
+    if (mote__zero3(col))
+        col[0] = col[1] = col[2] = 1.0f;
+    *k = mote__or(l->intensity, 1.0f);
+    *s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
+    return true;
+}
 
 MOTE__VERTEX_INLINE void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
 {
@@ -67,23 +94,11 @@ MOTE__VERTEX_INLINE void mote__light(const mote__ctx *cx, const float p[3], cons
     float acc[3] = {f->ambient[0], f->ambient[1], f->ambient[2]};
     for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
         const mote_light *l = &f->lights[i];
-        float col[3] = {l->color[0], l->color[1], l->color[2]};
-        if (mote__zero3(col))
-            col[0] = col[1] = col[2] = 1.0f;
-        float k = mote__or(l->intensity, 1.0f);
-        float L[3];
-        if (l->type == MOTE_LIGHT_POINT) {
-            L[0] = l->position[0] - p[0];
-            L[1] = l->position[1] - p[1];
-            L[2] = l->position[2] - p[2];
-        } else if (l->type == MOTE_LIGHT_DIRECTIONAL || l->type == MOTE_LIGHT_HEMISPHERIC) {
-            float s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
-            L[0] = s * l->direction[0];
-            L[1] = s * l->direction[1];
-            L[2] = s * l->direction[2];
-        } else {
+        float col[3], k, s, L[3];
+        if (!mote__light_terms(l, col, &k, &s))
             continue;
-        }
+        for (int c = 0; c < 3; c++)
+            L[c] = l->type == MOTE_LIGHT_POINT ? l->position[c] - p[c] : s * l->direction[c];
         float ndl = mote__dot3(n, L) * mote__rsqrtf(mote__dot3(L, L));
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
@@ -390,6 +405,129 @@ static void mote__finish(const mote__ctx *cx, mote__tvert *tv)
     mote__to_setup(&tv->c, &tv->sv);
 }
 
+#if MOTE__VECTOR_FINISH
+typedef float mote__v4f __attribute__((vector_size(16)));
+typedef int32_t mote__v4i __attribute__((vector_size(16)));
+typedef uint32_t mote__v4u __attribute__((vector_size(16)));
+
+static inline mote__v4f mote__v4_splat(float x)
+{
+    return (mote__v4f){x, x, x, x};
+}
+
+/* a where m is set, b elsewhere, bit for bit */
+static inline mote__v4f mote__v4_select(mote__v4i m, mote__v4f a, mote__v4f b)
+{
+    return (mote__v4f)((m & (mote__v4i)a) | (~m & (mote__v4i)b));
+}
+
+static inline mote__v4f mote__v4_dot3(const mote__v4f a[3], const mote__v4f b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* mote__rsqrtf in each lane */
+static inline mote__v4f mote__v4_rsqrt(mote__v4f x)
+{
+    const mote__v4u bits = (mote__v4u)x;
+    const mote__v4i finite = (mote__v4i)(bits - 1u < 0x7f7fffffu);   /* mote__positive_finite */
+    mote__v4f y = (mote__v4f)(0x5f375a86u - (bits >> 1)), h = 0.5f * x;
+    for (int i = 0; i < 3; i++)
+        y = y * (1.5f - h * y * y);
+    return (mote__v4f)(finite & (mote__v4i)y);
+}
+
+/* mote__light in each lane: p and n the lanes' world positions and
+ * normals */
+static void mote__light4(const mote__ctx *cx, const mote__v4f p[3], const mote__v4f n[3], mote__v4f out[3])
+{
+    const mote_frame_desc *f = &cx->dev->frame;
+    mote__v4f acc[3] = {mote__v4_splat(f->ambient[0]), mote__v4_splat(f->ambient[1]), mote__v4_splat(f->ambient[2])};
+    for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
+        const mote_light *l = &f->lights[i];
+        float col[3], k, s;
+        if (!mote__light_terms(l, col, &k, &s))
+            continue;
+        mote__v4f L[3];
+        for (int c = 0; c < 3; c++)
+            L[c] = l->type == MOTE_LIGHT_POINT ? l->position[c] - p[c] : mote__v4_splat(s * l->direction[c]);
+        mote__v4f ndl = mote__v4_dot3(n, L) * mote__v4_rsqrt(mote__v4_dot3(L, L));
+        if (l->type == MOTE_LIGHT_HEMISPHERIC) {
+            mote__v4f w = 0.5f + 0.5f * ndl;
+            for (int c = 0; c < 3; c++)
+                acc[c] += k * (col[c] * w + l->ground_color[c] * (1.0f - w));
+        } else {
+            const mote__v4i lit = ndl > 0.0f;
+            for (int c = 0; c < 3; c++)
+                acc[c] = mote__v4_select(lit, acc[c] + k * col[c] * ndl, acc[c]);
+        }
+    }
+    for (int c = 0; c < 3; c++) {
+        mote__v4f v = acc[c];
+        v = mote__v4_select(v > 0.0f, mote__v4_select(v < 1.0f, v, mote__v4_splat(1.0f)), mote__v4_splat(0.0f));
+        out[c] = v * cx->color[c];
+    }
+}
+
+/* mote__finish of four vertices (not yet ready; the same one twice is
+ * fine) of a lit Gouraud draw */
+static void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
+{
+    mote__v4f pos[3], nin[3], world[3], normal[3], shade[3];
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < 4; i++) {
+            const mote_vertex *in = &cx->mesh->vertices[tv[i]->index];
+            pos[k][i] = in->position[k];
+            nin[k][i] = in->normal[k];
+        }
+    /* mote__mat4_point's rows, and mote__dot3 with the normal matrix */
+    const float *m = cx->world, *nrm = cx->nrm;
+    for (int k = 0; k < 3; k++) {
+        world[k] = m[0 * 4 + k] * pos[0] + m[1 * 4 + k] * pos[1] + m[2 * 4 + k] * pos[2] + m[3 * 4 + k];
+        normal[k] = nrm[k * 3 + 0] * nin[0] + nrm[k * 3 + 1] * nin[1] + nrm[k * 3 + 2] * nin[2];
+    }
+    const mote__v4f scale = mote__v4_rsqrt(mote__v4_dot3(normal, normal));
+    for (int k = 0; k < 3; k++)
+        normal[k] *= scale;
+    mote__light4(cx, world, normal, shade);
+    /* mote__to_setup's shades and depth, in vectors */
+    mote__v4i fixed[3];
+    for (int c = 0; c < 3; c++) {
+        const mote__v4i v = __builtin_convertvector(shade[c] * (float)MOTE__SHADE_ONE + 0.5f, mote__v4i);
+        const mote__v4i low = v < 0, high = v > MOTE__SHADE_ONE;
+        fixed[c] = (v & ~(low | high)) | (high & MOTE__SHADE_ONE);
+    }
+    mote__v4f z, w;
+    for (int i = 0; i < 4; i++) {
+        z[i] = tv[i]->c.z;
+        w[i] = tv[i]->c.w;
+    }
+    mote__v4f d = z / w;
+    d = mote__v4_select(d > 0.0f, mote__v4_select(d < 1.0f, d, mote__v4_splat(1.0f)), mote__v4_splat(0.0f));
+    for (int i = 0; i < 4; i++) {
+        mote__tvert *v = tv[i];
+        v->ready = true;
+        for (int k = 0; k < 3; k++) {
+            v->world[k] = world[k][i];
+            v->normal[k] = normal[k][i];
+            v->c.s[k] = shade[k][i];
+        }
+        if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors) {
+            mote__tint(cx, &tv[i], 1, v->c.s);
+            mote__to_setup(&v->c, &v->sv);
+            continue;
+        }
+        for (int k = 0; k < 3; k++)
+            v->sv.s[k] = fixed[k][i];
+        for (int k = 0; k < 2; k++)
+            v->sv.texel[k] = mote__round_scaled(k ? v->c.v : v->c.u, 16);
+        v->sv.depth = d[i];
+        v->sv.z = (int32_t)mote__round_scaled(d[i] * (float)MOTE__DEPTH_MAX, 0);
+        v->sv.w = v->c.w;
+    }
+}
+#endif
+
 /* A vertex transformed and, when valid, finished at once (an invalid one
  * is never drawn, nor converts). */
 static void mote__transform_finished(mote__ctx *cx, uint32_t index, mote__tvert *tv)
@@ -472,6 +610,93 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
     }
 }
 
+/* Twice the signed screen area of a triangle that goes on, 0 (counted)
+ * for a degenerate or culled one. */
+MOTE__VERTEX_INLINE int64_t mote__facing_area(mote__ctx *cx, const int32_t X[3], const int32_t Y[3])
+{
+    int64_t area = mote__area2(X, Y);
+    if (area == 0) {
+        cx->dev->stats.triangles_degenerate++;
+        return 0;
+    }
+    if (mote__culled(cx, area)) {
+        cx->dev->stats.triangles_backface++;
+        return 0;
+    }
+    return area;
+}
+
+#if MOTE__VECTOR_FINISH
+/* Front faces waiting for their vertices: a vertex is marked ready when
+ * queued and lit with the next four; the faces queued before then go on,
+ * in order, once it is. Faces that clipping cuts wait for none (the queue
+ * is emptied first), so triangles reach setup in submission order. */
+#define MOTE__QUEUED_FACES 8
+typedef struct mote__lit_queue {
+    mote__tvert *batch[4];
+    int vertices, faces;
+    struct {
+        mote__tvert *tv[3];
+        int32_t X[3], Y[3];
+        int64_t area;
+    } face[MOTE__QUEUED_FACES];
+} mote__lit_queue;
+
+static void mote__queue_emit(mote__ctx *cx)
+{
+    mote__lit_queue *q = cx->queue;
+    for (int f = 0; f < q->faces; f++) {
+        const mote__svert *const v[3] = {&q->face[f].tv[0]->sv, &q->face[f].tv[1]->sv, &q->face[f].tv[2]->sv};
+        mote__emit(cx, q->face[f].X, q->face[f].Y, q->face[f].area, v);
+    }
+    q->faces = 0;
+}
+
+/* lights the queued vertices (repeating the first to make four) and lets
+ * every queued face go on */
+static void mote__queue_flush(mote__ctx *cx)
+{
+    mote__lit_queue *q = cx->queue;
+    if (q->vertices > 0) {
+        for (int i = q->vertices; i < 4; i++)
+            q->batch[i] = q->batch[0];
+        mote__finish4(cx, q->batch);
+        q->vertices = 0;
+    }
+    mote__queue_emit(cx);
+}
+
+/* mote__fan_triangle of an unclipped triangle of the draw's cache */
+static void mote__queue_face(mote__ctx *cx, mote__tvert *const tv[3], const int32_t X[3], const int32_t Y[3])
+{
+    int64_t area = mote__facing_area(cx, X, Y);
+    if (area == 0)
+        return;
+    mote__lit_queue *q = cx->queue;
+    for (int k = 0; k < 3; k++) {
+        if (tv[k]->ready)
+            continue;
+        tv[k]->ready = true;
+        q->batch[q->vertices++] = tv[k];
+        if (q->vertices == 4)
+            mote__queue_flush(cx);
+    }
+    if (q->vertices == 0 && q->faces == 0) {  /* its vertices are lit: on at once */
+        const mote__svert *const v[3] = {&tv[0]->sv, &tv[1]->sv, &tv[2]->sv};
+        mote__emit(cx, X, Y, area, v);
+        return;
+    }
+    for (int k = 0; k < 3; k++) {
+        q->face[q->faces].tv[k] = tv[k];
+        q->face[q->faces].X[k] = X[k];
+        q->face[q->faces].Y[k] = Y[k];
+    }
+    q->face[q->faces++].area = area;
+    if (q->faces == MOTE__QUEUED_FACES)
+        mote__queue_flush(cx);
+}
+#endif
+
 /* A flat triangle's colour: the lighting at its centroid (lit draws) x
  * the material colour x the mean of its vertex colours (when it has them). */
 static void mote__flat_shade(const mote__ctx *cx, mote__tvert *const tv[3], float s[3])
@@ -510,15 +735,9 @@ MOTE__VERTEX_INLINE void mote__fan_triangle(mote__ctx *cx, mote__tvert *const tv
                                             mote__svert *v1, mote__svert *v2, const int32_t X[3],
                                             const int32_t Y[3])
 {
-    int64_t area = mote__area2(X, Y);
-    if (area == 0) {
-        cx->dev->stats.triangles_degenerate++;
+    int64_t area = mote__facing_area(cx, X, Y);
+    if (area == 0)
         return;
-    }
-    if (mote__culled(cx, area)) {
-        cx->dev->stats.triangles_backface++;
-        return;
-    }
     for (int i = 0; i < 3; i++)
         mote__finish(cx, tv[i]);
 #if MOTE_ENABLE_BINNING
@@ -638,6 +857,10 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
     if ((any & MOTE__OC_CLIP) || (MOTE_ENABLE_LINES && cx->d.mode == MOTE_MODE_WIREFRAME)) {
         /* wireframe takes the polygon path even unclipped (clipping to no
          * plane leaves the triangle as it is): lines are not worth a second path */
+#if MOTE__VECTOR_FINISH
+        if (cx->queue)
+            mote__queue_flush(cx);
+#endif
         mote__clip_polygon(cx, tv, any & MOTE__OC_CLIP);
         return;
     }
@@ -647,6 +870,12 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
     }
     /* no clipping: the cached snapped points, culled before anything else */
     int32_t X[3] = {tv[0]->X, tv[1]->X, tv[2]->X}, Y[3] = {tv[0]->Y, tv[1]->Y, tv[2]->Y};
+#if MOTE__VECTOR_FINISH
+    if (cx->queue) {
+        mote__queue_face(cx, tv, X, Y);
+        return;
+    }
+#endif
     mote__fan_triangle(cx, tv, &tv[0]->sv, &tv[1]->sv, &tv[2]->sv, X, Y);
 }
 
@@ -903,8 +1132,21 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
             tris = MOTE__MIN(piece->tri1, tris);
         }
         dev->stats.triangles_in += tris - first;
+#if MOTE__VECTOR_FINISH
+        /* a full cache this draw fills itself (a shared one is finished
+         * already): front faces queue for their vertices, lit in fours */
+        mote__lit_queue queue;
+        if (cx.lit && cx.rs->gouraud && !cx.cache_mask && !(MOTE_ENABLE_BINNING && piece && piece->vertices)) {
+            queue.vertices = queue.faces = 0;
+            cx.queue = &queue;
+        }
+#endif
         for (uint32_t i = first; i < tris && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++)
             mote__triangle(&cx, &mesh->indices[3 * i]);
+#if MOTE__VECTOR_FINISH
+        if (cx.queue)
+            mote__queue_flush(&cx);
+#endif
     }
     if (MOTE_ENABLE_BINNING && cache_bytes)
         mote__bin_top_release(dev, cache_bytes);
