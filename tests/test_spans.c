@@ -272,6 +272,29 @@ static mote_device_desc test_desc(uint8_t *color, uint32_t *depth, void *arena, 
     return d;
 }
 
+/* The camera in front of the scene and every type of light: binned draws
+ * transform and light their vertices four at a time on SSE2 hosts
+ * (geometry.c), direct ones and bands one by one. */
+static void lit_frame(mote_frame_desc *f)
+{
+    memset(f, 0, sizeof *f);
+    f->camera.position[2] = -5.0f;
+    f->camera.position[1] = 1.0f;
+    f->camera.znear = 0.5f;
+    f->light_count = 3;
+    f->lights[0].type = MOTE_LIGHT_POINT;
+    f->lights[0].position[1] = 4.0f;
+    f->lights[1].type = MOTE_LIGHT_DIRECTIONAL;
+    f->lights[1].direction[0] = 1.0f;
+    f->lights[1].color[0] = 0.3f;
+    f->lights[1].color[1] = 0.1f;
+    f->lights[1].color[2] = 0.1f;
+    f->lights[2].type = MOTE_LIGHT_HEMISPHERIC;
+    f->lights[2].direction[1] = 1.0f;
+    f->lights[2].intensity = 0.4f;
+    f->lights[2].ground_color[2] = 0.5f;
+}
+
 /* Renders the scene with the given execution setup into out (RGBA). */
 static void render(const mote_mesh meshes[3], int band, void *arena, size_t arena_size, int tile,
                    int threads, mote_draw_desc dd, uint8_t *out)
@@ -286,24 +309,7 @@ static void render(const mote_mesh meshes[3], int band, void *arena, size_t aren
     d.flush_user = &sink;
     TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
     mote_frame_desc f;
-    memset(&f, 0, sizeof f);
-    f.camera.position[2] = -5.0f;
-    f.camera.position[1] = 1.0f;
-    f.camera.znear = 0.5f;
-    /* every type of light: binned draws light their vertices four at a
-     * time on SSE2 hosts (geometry.c), direct ones and bands one by one */
-    f.light_count = 3;
-    f.lights[0].type = MOTE_LIGHT_POINT;
-    f.lights[0].position[1] = 4.0f;
-    f.lights[1].type = MOTE_LIGHT_DIRECTIONAL;
-    f.lights[1].direction[0] = 1.0f;
-    f.lights[1].color[0] = 0.3f;
-    f.lights[1].color[1] = 0.1f;
-    f.lights[1].color[2] = 0.1f;
-    f.lights[2].type = MOTE_LIGHT_HEMISPHERIC;
-    f.lights[2].direction[1] = 1.0f;
-    f.lights[2].intensity = 0.4f;
-    f.lights[2].ground_color[2] = 0.5f;
+    lit_frame(&f);
     /* two frames: the second begins on an arena the first one's tile jobs
      * read (mote_begin takes those bytes back) */
     for (int frame = 0; frame < 2; frame++) {
@@ -474,6 +480,77 @@ void binned_draws_set_up_in_groups_should_match_the_serial_path(void)
             TEST_ASSERT_TRUE(st.arena_flushes > 0);   /* and says so */
             TEST_ASSERT_TRUE(st.tiles_drawn > 0);
         }
+}
+
+/* A binned draw transforms its vertices four at a time on SSE2 hosts, a
+ * direct one one at a time: vertices behind the eye, on its plane, far
+ * outside the guard band, in it, NaN, infinite, denormal or with texels
+ * out of range among ordinary ones (and a count that is no multiple of
+ * four) must give the same bytes and counts either way. */
+void vertices_transformed_four_at_a_time_should_match_one_at_a_time(void)
+{
+    enum { HV = NV + 3 };
+    static mote_vertex hostile[HV];
+    static uint32_t hostile_indices[NT * 3];
+    static uint8_t ref[W * H * 4], got[W * H * 4];
+    static uint32_t depth[W * H];
+    static uint64_t arena[(8u << 20) / 8];
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    for (int i = 0; i < HV; i++) {
+        hostile[i] = verts[i % NV];
+        if (i % 5)
+            continue;
+        float *p = hostile[i].position;
+        switch (i / 5 % 8) {
+        case 0: p[2] = -5.0f; p[1] = 1.0f; break;   /* on the eye's plane: w = 0 */
+        case 1: p[2] = -9.0f; break;                /* behind the eye */
+        case 2: p[0] = 1e6f; break;                 /* far outside the guard band */
+        case 3: p[0] = 40.0f; break;                /* outside the view, inside the band */
+        case 4: p[1] = 0.0f / 0.0f; break;
+        case 5: p[0] = 1.0f / 0.0f; break;
+        case 6: p[0] = p[1] = 1e-40f; break;        /* denormal */
+        default: hostile[i].uv[0] = 1e12f; break;   /* texels out of range */
+        }
+    }
+    for (int i = 0; i < NT * 3; i++)
+        hostile_indices[i] = next_u32() % HV;
+    mote_mesh mesh = meshes[0];
+    mesh.vertices = hostile;
+    mesh.vertex_count = HV;
+    mesh.indices = hostile_indices;
+    mesh.index_count = NT * 3;
+    mote_mode modes[] = {MOTE_MODE_TEXTURED, MOTE_MODE_GOURAUD, MOTE_MODE_FLAT};
+    for (int mi = 0; mi < 3; mi++) {
+        mote_stats direct, st;
+        for (int run = 0; run < 3; run++) {   /* direct, binned serially, binned on 2 threads */
+            int threads = run == 2 ? 2 : 0;
+            mote_device dev;
+            mote_device_desc d = test_desc(run ? got : ref, depth, run ? arena : NULL, run ? sizeof arena : 0, 16,
+                                           &threads);
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+            mote_frame_desc f;
+            lit_frame(&f);
+            mote_draw_desc dd;
+            memset(&dd, 0, sizeof dd);
+            dd.mode = modes[mi];
+            dd.cull = MOTE_CULL_NONE;
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &mesh, &dd));
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+            st = *mote_device_stats(&dev);
+            if (run == 0) {
+                direct = st;
+                /* every kind of vertex was met */
+                TEST_ASSERT_TRUE(st.triangles_invalid > 0);
+                TEST_ASSERT_TRUE(st.triangles_clipped_away > 0);
+                TEST_ASSERT_TRUE(st.triangles_drawn > NT / 4);
+                continue;
+            }
+            TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+            assert_same_counts(&direct, &st, false);
+        }
+    }
 }
 
 /* A draw larger than its share of the frame is set up in pieces, on
@@ -790,6 +867,7 @@ int main(void)
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);
+    RUN_TEST(vertices_transformed_four_at_a_time_should_match_one_at_a_time);
     RUN_TEST(a_draw_cut_into_pieces_should_match_drawing_it_whole);
     RUN_TEST(the_clear_beside_parallel_setup_should_run_without_triangles_and_before_points);
     RUN_TEST(clearing_only_the_drawn_tiles_should_give_the_frames_of_a_full_clear);
