@@ -126,7 +126,11 @@ void every_specialised_span_should_match_the_generic_span(void)
             TEST_ASSERT_EQUAL_INT(sk, tri.shade);
             wide += tri.rbits != MOTE__RBITS;
             mote__rect all = {0, 0, W, H};
-            mote__raster_tri(&tri, &ta, all, 8);
+            /* as binned: the record's bytes only (mote__tri_bytes), garbage after them */
+            mote__tri binned;
+            memset(&binned, 0xa5, sizeof binned);
+            memcpy(&binned, &tri, mote__tri_bytes(&tri));
+            mote__raster_tri(&binned, &ta, all, 8);
             /* the oracle: the generic loop, interpolating all three channels
              * (setup makes only red's plane for one grey shade: the three
              * are the same plane) */

@@ -118,11 +118,17 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
     int tx0 = t->xmin >> s, tx1 = t->xmax >> s, ty0 = t->ymin >> s, ty1 = t->ymax >> s;
     size_t ntiles = (size_t)(tx1 - tx0 + 1) * (size_t)(ty1 - ty0 + 1);
     /* worst case first, so a triangle is never half binned */
-    size_t need = mote__align(sizeof *t) + ntiles * mote__align(sizeof(mote__block));
+    const size_t bytes = mote__tri_bytes(t);
+    size_t need = mote__align(bytes) + ntiles * mote__align(sizeof(mote__block));
     if (need > b->top - b->used)
         return false;
-    mote__tri *copy = (mote__tri *)mote__bin_alloc(dev, sizeof *t);
-    *copy = *t;
+    mote__tri *copy = (mote__tri *)mote__bin_alloc(dev, bytes);
+    if (bytes == MOTE__TRI_BYTES(0))
+        memcpy(copy, t, MOTE__TRI_BYTES(0));
+    else if (bytes == MOTE__TRI_BYTES(MOTE__A_V + 1))
+        memcpy(copy, t, MOTE__TRI_BYTES(MOTE__A_V + 1));
+    else
+        *copy = *t;
     uint32_t off = (uint32_t)((unsigned char *)copy - b->base);
     mote__tile *tiles = (mote__tile *)b->tiles;
     for (int ty = ty0; ty <= ty1; ty++) {

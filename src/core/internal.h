@@ -232,8 +232,11 @@ typedef struct mote__raster_state {
     int32_t depth_half;           /* half a unit of the depth buffer, in the depth plane's 1/65536 */
 } mote__raster_state;
 
-/* Interpolated attributes of a triangle, by index. */
-enum { MOTE__A_R, MOTE__A_G, MOTE__A_B, MOTE__A_U, MOTE__A_V, MOTE__ATTRS };
+/* Interpolated attributes of a triangle, by index. A binned triangle's
+ * record ends after the last plane it has (mote__plane_count): red, the
+ * texels, then green and blue, so that a grey textured triangle, a lit
+ * textured mesh's, keeps three planes of five (208 bytes, not 256). */
+enum { MOTE__A_R, MOTE__A_U, MOTE__A_V, MOTE__A_G, MOTE__A_B, MOTE__ATTRS };
 
 /* Whether a triangle of this shade kind, with or without a texture, has a
  * plane for attribute a: red alone for one grey shade, all three for RGB,
@@ -243,9 +246,22 @@ static inline bool mote__has_plane(int a, mote__shade_kind shade, bool textured)
 {
     if (shade == MOTE__SHADE_BLACK)
         return false;
-    if (a >= MOTE__A_U)
+    if (a == MOTE__A_U || a == MOTE__A_V)
         return textured;
     return shade == MOTE__SHADE_RGB || (shade == MOTE__SHADE_MONO && a == MOTE__A_R);
+}
+
+/* How many planes, from the first, a triangle of this kind keeps: up to
+ * its last one (mote__has_plane); those before it that it lacks are 0. */
+static inline int mote__plane_count(int shade, bool textured)
+{
+    if (shade == MOTE__SHADE_BLACK)
+        return 0;
+    if (shade == MOTE__SHADE_RGB)
+        return MOTE__A_B + 1;
+    if (textured)
+        return MOTE__A_V + 1;
+    return shade == MOTE__SHADE_MONO ? MOTE__A_R + 1 : 0;
 }
 
 /* A set-up triangle. Planes are evaluated at pixel centres relative to the
@@ -268,8 +284,18 @@ typedef struct mote__tri {
      * only the planes the shade kind reads are made (red alone for MONO,
      * none for FLAT, texels with a texture), the others are 0 */
     int64_t a0[MOTE__ATTRS];
-    int64_t n[MOTE__ATTRS][3];
+    int64_t n[MOTE__ATTRS][3];    /* last: a binned copy ends after its planes (mote__tri_bytes) */
 } mote__tri;
+
+/* The bytes of t that its pixel loops read, in one of three sizes (each
+ * a copy the compiler unrolls): the record without planes, up to the
+ * texels', or all of it. */
+#define MOTE__TRI_BYTES(planes) (offsetof(mote__tri, n) + (planes) * sizeof(int64_t[3]))
+static inline size_t mote__tri_bytes(const mote__tri *t)
+{
+    int planes = mote__plane_count(t->shade, t->rs->tex != MOTE__TEX_NONE);
+    return planes == 0 ? MOTE__TRI_BYTES(0) : planes <= MOTE__A_V + 1 ? MOTE__TRI_BYTES(MOTE__A_V + 1) : sizeof(mote__tri);
+}
 
 /* Pixels a region tested (reached the depth test) and wrote. */
 typedef struct mote__counts { uint64_t tested, written; } mote__counts;

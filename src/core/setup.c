@@ -210,14 +210,16 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
      * texel, so a black triangle needs no weights. Tested with bits. */
     int64_t d1[MOTE__ATTRS], d2[MOTE__ATTRS];
     uint32_t differ = 0, vary = 0, lit = 0;
+    static const int channel_attr[3] = {MOTE__A_R, MOTE__A_G, MOTE__A_B};
     for (int c = 0; c < 3; c++) {
         int32_t s0 = v[0]->s[c];
         int32_t e1 = v[1]->s[c] - s0, e2 = v[2]->s[c] - s0;
-        t->a0[c] = s0;
-        d1[c] = e1;
-        d2[c] = e2;
-        differ |= (uint32_t)(s0 ^ (int32_t)t->a0[0]) | (uint32_t)(e1 ^ (int32_t)d1[0])
-                | (uint32_t)(e2 ^ (int32_t)d2[0]);
+        const int a = channel_attr[c];
+        t->a0[a] = s0;
+        d1[a] = e1;
+        d2[a] = e2;
+        differ |= (uint32_t)(s0 ^ (int32_t)t->a0[MOTE__A_R]) | (uint32_t)(e1 ^ (int32_t)d1[MOTE__A_R])
+                | (uint32_t)(e2 ^ (int32_t)d2[MOTE__A_R]);
         vary |= (uint32_t)(e1 | e2);
         lit |= (uint32_t)s0;
     }

@@ -387,7 +387,10 @@ MOTE__SMALL uint32_t mote__shade_at(int64_t a0, int64_t n, uint64_t r, int k)
 /* What the pixel loop needs of a triangle, read once per triangle into
  * locals (see the top of the file). */
 typedef struct mote__fill_ctx {
-    int64_t zdx, qdx, ndx[MOTE__ATTRS];
+    int64_t zdx, qdx;
+    /* the numerator planes: origin value, x and y steps (0 for those the
+     * triangle lacks: a binned record ends after its last plane) */
+    int64_t n0[MOTE__ATTRS], ndx[MOTE__ATTRS], ndy[MOTE__ATTRS];
     int shift;
     int64_t a0[MOTE__ATTRS];
     uint32_t flat_px;             /* the pixel when nothing varies */
@@ -570,7 +573,7 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
         MOTE__UNROLL
         for (int a = 0; a < MOTE__ATTRS; a++)
             if (mote__reads_plane(a, shade, tex))
-                nrow[a] = (uint64_t)mote__plane_at(t->n[a][0], t->n[a][2], dy0);
+                nrow[a] = (uint64_t)mote__plane_at(c->n0[a], c->ndy[a], dy0);
     }
     const int ox = t->ox;
     uint64_t tested = 0;
@@ -598,7 +601,7 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
         MOTE__UNROLL
         for (int a = 0; a < MOTE__ATTRS; a++)
             if (mote__reads_plane(a, shade, tex))
-                nrow[a] += (uint64_t)t->n[a][2];
+                nrow[a] += (uint64_t)c->ndy[a];
     }
     tg->counts->tested += tested;
     tg->counts->written += written;
@@ -630,9 +633,15 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     c.zdx = t->zdx;
     c.qdx = t->qdx;
     c.shift = t->shift;
+    /* only binned records are cut short: drawn directly, t has them all */
+    const int planes = MOTE_ENABLE_BINNING ? mote__plane_count(shade, tex != MOTE__TEX_NONE) : MOTE__ATTRS;
     for (int a = 0; a < MOTE__ATTRS; a++) {
         c.a0[a] = t->a0[a];
-        c.ndx[a] = t->n[a][1];
+        /* the generic loop reads every plane the record holds */
+        const bool has = a < planes && (!MOTE_SPECIALISE_SPANS || mote__reads_plane(a, shade, tex));
+        c.n0[a] = has ? t->n[a][0] : 0;
+        c.ndx[a] = has ? t->n[a][1] : 0;
+        c.ndy[a] = has ? t->n[a][2] : 0;
     }
     /* without Gouraud the shade is the triangle's; without a texture too,
      * the pixel value is one constant */
