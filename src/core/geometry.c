@@ -412,6 +412,7 @@ static void mote__finish(const mote__ctx *cx, mote__tvert *tv)
 }
 
 #if MOTE__VECTOR_VERTEX
+#include <emmintrin.h>
 typedef float mote__v4f __attribute__((vector_size(16)));
 typedef int32_t mote__v4i __attribute__((vector_size(16)));
 typedef uint32_t mote__v4u __attribute__((vector_size(16)));
@@ -533,6 +534,38 @@ static void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
     }
 }
 
+/* mote__snap_axis in each lane, *ok where it succeeds. n h (a 24-bit
+ * mantissa times h < 2^23) is exact in double, and so is n h + 1/2 while
+ * |n h| < 2^30, so floor(n h + 1/2) is the scalar's rounding (half up),
+ * found by truncation and a correction; beyond 2^30 (and for NaN) the
+ * scalar fails too, its limit being below. */
+#if MOTE_GUARD_BITS + 1 + 8 <= 29 && MOTE_MAX_SIZE <= 65536
+#define MOTE__VECTOR_SNAP 1
+static inline mote__v4i mote__v4_snap_axis(mote__v4f n, int32_t h, int32_t lim, mote__v4i *ok)
+{
+    const __m128d hd = _mm_set1_pd((double)h), half = _mm_set1_pd(0.5), range = _mm_set1_pd(1073741824.0);
+    const __m128 nf = (__m128)n;
+    const __m128d y[2] = {_mm_add_pd(_mm_mul_pd(_mm_cvtps_pd(nf), hd), half),
+                          _mm_add_pd(_mm_mul_pd(_mm_cvtps_pd(_mm_movehl_ps(nf, nf)), hd), half)};
+    __m128i floor2[2], in2[2];
+    for (int i = 0; i < 2; i++) {
+        const __m128i t = _mm_cvttpd_epi32(y[i]);   /* toward zero, in lanes 0 and 1 */
+        const __m128d magnitude = _mm_andnot_pd(_mm_set1_pd(-0.0), y[i]);
+        /* 64-bit masks to the 32-bit lanes 0 and 1 */
+        const __m128i below = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmplt_pd(y[i], _mm_cvtepi32_pd(t))), 0x08);
+        in2[i] = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmplt_pd(magnitude, range)), 0x08);
+        floor2[i] = _mm_add_epi32(t, below);          /* below: -1 */
+    }
+    const __m128i v = _mm_add_epi32(_mm_unpacklo_epi64(floor2[0], floor2[1]), _mm_set1_epi32(h));
+    const __m128i in = _mm_unpacklo_epi64(in2[0], in2[1]);
+    *ok = (mote__v4i)_mm_and_si128(in, _mm_and_si128(_mm_cmpgt_epi32(v, _mm_set1_epi32(-lim)),
+                                                      _mm_cmplt_epi32(v, _mm_set1_epi32(lim))));
+    return (mote__v4i)v;
+}
+#else
+#define MOTE__VECTOR_SNAP 0
+#endif
+
 /* mote__transform of vertices index to index + 3 into tv[0..3]: the clip
  * position, texels, validity, outcode and the quotients x / w and y / w in
  * vectors, each lane the scalar code's operations in the same order; the
@@ -569,8 +602,16 @@ MOTE__VERTEX_INLINE void mote__transform4(mote__ctx *cx, uint32_t index, mote__t
     const mote__v4i oc = ((z < 0.0f) & 1) | (((w - z) < 0.0f) & 2) | (((x + gx) < 0.0f) & 4)
                        | (((gx - x) < 0.0f) & 8) | (((y + gy) < 0.0f) & 16) | (((gy - y) < 0.0f) & 32)
                        | ((x > w) & 0x100) | ((x < -w) & 0x200) | ((y > w) & 0x400) | ((y < -w) & 0x800);
-    /* mote__snap's quotients; its integer part per vertex below */
+    /* mote__snap's quotients */
     const mote__v4f nx = x / w, ny = -(y / w);
+#if MOTE__VECTOR_SNAP
+    const int F = cx->dev->desc.subpixel_bits;
+    const int32_t lim = (int32_t)1 << (MOTE_GUARD_BITS + 1 + F);
+    mote__v4i xok, yok;
+    const mote__v4i sx = mote__v4_snap_axis(nx, cx->dev->desc.width << (F - 1), lim, &xok);
+    const mote__v4i sy = mote__v4_snap_axis(ny, cx->dev->desc.height << (F - 1), lim, &yok);
+    const mote__v4i snapped = (w > 0.0f) & xok & yok;
+#endif
     for (int i = 0; i < 4; i++) {
         mote__tvert *t = &tv[i];
         t->index = index + (uint32_t)i;
@@ -586,8 +627,19 @@ MOTE__VERTEX_INLINE void mote__transform4(mote__ctx *cx, uint32_t index, mote__t
         t->outcode = 0;
         if (!invalid[i]) {
             unsigned code = (unsigned)oc[i];
+#if MOTE__VECTOR_SNAP
+            if (!(code & MOTE__OC_CLIP)) {
+                if (snapped[i]) {
+                    t->X = sx[i];
+                    t->Y = sy[i];
+                } else {
+                    code |= MOTE__OC_NO_SNAP;
+                }
+            }
+#else
             if (!(code & MOTE__OC_CLIP) && !(w[i] > 0.0f && mote__snap_ndc(cx, nx[i], ny[i], &t->X, &t->Y)))
                 code |= MOTE__OC_NO_SNAP;
+#endif
             t->outcode = (uint16_t)code;
         }
     }

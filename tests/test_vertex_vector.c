@@ -1,0 +1,127 @@
+/*
+ * test_vertex_vector.c - the snap of four vertices at a time against the
+ * scalar one, value by value.
+ *
+ * On SSE2 hosts a full vertex cache is transformed four vertices at a
+ * time (geometry.c, mote__transform4), and the snap to sub-pixels goes
+ * through double arithmetic (mote__v4_snap_axis) where the scalar path,
+ * the one every microcontroller runs, splits the float into mantissa and
+ * exponent (mote__snap_axis). Frames compare the two only on the values a
+ * scene happens to produce; this file compiles geometry.c a second time
+ * and holds them to the same answer on the values where rounding is
+ * decided: exact ties (n h = j + 1/2), their neighbouring floats, every
+ * exponent, zero, denormals, NaN, infinities and the limit's edges, for
+ * each sub-pixel precision and several viewport sizes.
+ *
+ * Threshold: 0 differences (whether the snap succeeds, and its value).
+ */
+#include "core/internal.h"
+#define mote__resolve_draw_desc vector_test_resolve_draw_desc
+#define mote__vertex_cache_bytes vector_test_vertex_cache_bytes
+#define mote__prepare_vertices vector_test_prepare_vertices
+#define mote__process_draw vector_test_process_draw
+#include "core/geometry.c"
+
+#include "support/testutil.h"
+#include "unity.h"
+
+#include <math.h>
+#include <string.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+#if MOTE__VECTOR_VERTEX && MOTE__VECTOR_SNAP
+static float float_from_bits(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+/* Snaps four values both ways; returns the lanes that differ. */
+static int compare_four(const float n[4], int32_t h, int32_t lim)
+{
+    mote__v4i ok;
+    mote__v4i v = mote__v4_snap_axis((mote__v4f){n[0], n[1], n[2], n[3]}, h, lim, &ok);
+    int differ = 0;
+    for (int i = 0; i < 4; i++) {
+        int32_t s = 0;
+        bool sok = mote__snap_axis(n[i], h, lim, &s);
+        differ += sok != (ok[i] != 0) || (sok && s != v[i]);
+    }
+    return differ;
+}
+
+void vector_snap_should_match_the_scalar_snap(void)
+{
+    tu_rng rng = tu_rng_seed(20261124);
+    const int sizes[] = {1, 97, 640, 1920, 4095, MOTE_MAX_SIZE};
+    long compared = 0, differ = 0, ties = 0;
+    for (int F = 4; F <= 8; F++) {
+        const int32_t lim = (int32_t)1 << (MOTE_GUARD_BITS + 1 + F);
+        for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+            const int32_t h = sizes[si] << (F - 1);
+            float n[4];
+            int lane = 0;
+            for (int k = 0; k < 40000; k++) {
+                float f;
+                switch (k % 4) {
+                case 0:   /* any bits: every exponent, NaN, infinities, denormals */
+                    f = float_from_bits((uint32_t)tu_rand_u64(&rng));
+                    break;
+                case 1: { /* a tie n h = j + 1/2 where a float holds it, or the float nearest */
+                    int64_t j = tu_rand_int(&rng, -(int64_t)lim - 2 * h, (int64_t)lim);
+                    f = (float)(((double)j + 0.5) / (double)h);
+                    ties += (double)f * (double)h == (double)j + 0.5;
+                    break;
+                }
+                case 2: { /* a neighbour of a tie, one or two floats away */
+                    int64_t j = tu_rand_int(&rng, -(int64_t)lim - 2 * h, (int64_t)lim);
+                    f = (float)(((double)j + 0.5) / (double)h);
+                    uint32_t u;
+                    memcpy(&u, &f, sizeof u);
+                    u += (uint32_t)tu_rand_int(&rng, -2, 2);
+                    f = float_from_bits(u);
+                    break;
+                }
+                default:  /* around the limit: where the snap starts failing */
+                    f = (float)((double)((tu_rand_u64(&rng) & 1) ? lim : -lim) / (double)h
+                                + tu_rand_range(&rng, -2.0, 2.0) / (double)h) - 1.0f;
+                    break;
+                }
+                n[lane++] = f;
+                if (lane == 4) {
+                    differ += compare_four(n, h, lim);
+                    compared += 4;
+                    lane = 0;
+                }
+            }
+        }
+        /* the edge values themselves */
+        const float special[] = {0.0f, -0.0f, 1e-45f, -1e-45f, 1.17549435e-38f, 0.5f, -0.5f, 1.0f, -1.0f,
+                                 INFINITY, -INFINITY, NAN, 3.4028235e38f, -3.4028235e38f, 1073741824.0f,
+                                 -1073741824.0f};
+        for (size_t i = 0; i + 4 <= sizeof special / sizeof special[0]; i += 4)
+            for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+                differ += compare_four(&special[i], sizes[si] << (F - 1), lim);
+                compared += 4;
+            }
+    }
+    TEST_ASSERT_EQUAL_INT(0, differ);
+    TEST_ASSERT_GREATER_THAN_INT(1000000, compared);
+    TEST_ASSERT_GREATER_THAN_INT(10000, ties);   /* exact ties were really met */
+}
+#else
+void vector_snap_should_match_the_scalar_snap(void)
+{
+    TEST_IGNORE_MESSAGE("no vector snap on this host (SSE2 with GCC or clang)");
+}
+#endif
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(vector_snap_should_match_the_scalar_snap);
+    return UNITY_END();
+}
