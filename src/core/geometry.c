@@ -26,8 +26,8 @@ typedef struct mote__tvert {
     uint32_t index;
     int32_t X, Y;                 /* snapped; set when outcode has no clip bit and no MOTE__OC_NO_SNAP */
     mote__cvert c;
-    float world[3];               /* lit draws, once ready */
-    float normal[3];              /* world-space, normalised; lit draws, once ready */
+    float world[3];               /* lit draws, once ready; flat shading's (mote__finish4 leaves it) */
+    float normal[3];              /* world-space, normalised; likewise */
     mote__svert sv;               /* c in setup's units, once ready */
 } mote__tvert;
 
@@ -514,11 +514,9 @@ static void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
     for (int i = 0; i < 4; i++) {
         mote__tvert *v = tv[i];
         v->ready = true;
-        for (int k = 0; k < 3; k++) {
-            v->world[k] = world[k][i];
-            v->normal[k] = normal[k][i];
+        /* world and normal stay unset: only flat shading reads them */
+        for (int k = 0; k < 3; k++)
             v->c.s[k] = shade[k][i];
-        }
         if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors) {
             mote__tint(cx, &tv[i], 1, v->c.s);
             mote__to_setup(&v->c, &v->sv);
