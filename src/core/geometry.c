@@ -566,9 +566,10 @@ static inline mote__v4i mote__v4_snap_axis(mote__v4f n, int32_t h, int32_t lim, 
 
 /* mote__transform of vertices index to index + 3 into tv[0..3]: the clip
  * position, texels, validity, outcode and the quotients x / w and y / w in
- * vectors, each lane the scalar code's operations in the same order; the
- * snap's integer part per vertex. About 180 instructions a vertex instead
- * of 250, 80 of them the snap's (the dense grid transforms 89,000 a frame). */
+ * vectors, each lane the scalar code's operations in the same order, and
+ * the snap (mote__v4_snap_axis, or per vertex). With the vector snap about
+ * 130 instructions a vertex instead of 250 (the dense grid transforms
+ * 89,000 a frame). */
 MOTE__VERTEX_INLINE void mote__transform4(mote__ctx *cx, uint32_t index, mote__tvert tv[4])
 {
     const mote_vertex *in = &cx->mesh->vertices[index];
