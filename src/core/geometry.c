@@ -533,7 +533,7 @@ static void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
 }
 
 /* mote__snap_axis in each lane, *ok where it succeeds. n h (a 24-bit
- * mantissa times h < 2^23) is exact in double, and so is n h + 1/2 while
+ * mantissa times h <= 2^23) is exact in double, and so is n h + 1/2 while
  * |n h| < 2^30, so floor(n h + 1/2) is the scalar's rounding (half up),
  * found by truncation and a correction; beyond 2^30 (and for NaN) the
  * scalar fails too, its limit being below. */
