@@ -150,6 +150,21 @@ void every_specialised_span_should_match_the_generic_span(void)
     TEST_ASSERT_EQUAL_INT(2 * 3 * 3 * MOTE__SHADE_COUNT * 3, variants);
 }
 
+/* A binned record keeps its planes up to the last one its kind has
+ * (mote__plane_count, written out for speed and flash) and none after:
+ * the count must be what mote__has_plane says, for every kind. */
+void a_record_should_keep_planes_up_to_its_last_one(void)
+{
+    for (int shade = 0; shade < MOTE__SHADE_COUNT; shade++)
+        for (int textured = 0; textured < 2; textured++) {
+            int last = 0;
+            for (int a = 0; a < MOTE__ATTRS; a++)
+                if (mote__has_plane(a, (mote__shade_kind)shade, textured))
+                    last = a + 1;
+            TEST_ASSERT_EQUAL_INT(last, mote__plane_count(shade, textured));
+        }
+}
+
 /* Sub-span perspective: r is exact at the columns that are multiples of
  * the segment length and linear between them, so a pixel must not depend
  * on which pixels before it in its row failed the depth test. (The loop
@@ -865,6 +880,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(every_specialised_span_should_match_the_generic_span);
+    RUN_TEST(a_record_should_keep_planes_up_to_its_last_one);
     RUN_TEST(subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them);
     RUN_TEST(a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in);
     RUN_TEST(setup_should_box_a_triangle_by_the_pixel_centres_its_vertices_span);

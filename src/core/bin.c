@@ -123,6 +123,8 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
     if (need > b->top - b->used)
         return false;
     mote__tri *copy = (mote__tri *)mote__bin_alloc(dev, bytes);
+    /* by its size's constant: one memcpy of a variable size made the
+     * dense grid 1.046x slower (9 runs) */
     if (bytes == MOTE__TRI_BYTES(0))
         memcpy(copy, t, MOTE__TRI_BYTES(0));
     else if (bytes == MOTE__TRI_BYTES(MOTE__A_V + 1))

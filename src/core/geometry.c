@@ -645,6 +645,27 @@ MOTE__VERTEX_INLINE void mote__transform4(mote__ctx *cx, uint32_t index, mote__t
 }
 #endif
 
+/* The vertices [first, end) of a full cache, transformed (not finished):
+ * four at a time where the host has vectors. */
+static void mote__transform_range(mote__ctx *cx, mote__tvert *tv, uint32_t first, uint32_t end)
+{
+    uint32_t i = first;
+#if MOTE__VECTOR_VERTEX
+    for (; i + 4 <= end; i += 4)
+        mote__transform4(cx, i, &tv[i]);
+#endif
+    for (; i < end; i++)
+        mote__transform(cx, i, &tv[i]);
+}
+
+#if MOTE__VECTOR_VERTEX
+/* Whether mote__finish4 can finish this draw's vertices: lit Gouraud ones. */
+static bool mote__finish_in_fours(const mote__ctx *cx)
+{
+    return cx->lit && cx->rs->gouraud;
+}
+#endif
+
 /* A vertex transformed and, when valid, finished at once (an invalid one
  * is never drawn, nor converts). */
 static void mote__transform_finished(mote__ctx *cx, uint32_t index, mote__tvert *tv)
@@ -1167,23 +1188,19 @@ void mote__prepare_vertices(mote_device *dev, const mote_mesh *mesh, const mote_
     if (!mote__draw_context(&cx, &rs, dev, mesh, desc))
         return;
     mote__tvert *tv = (mote__tvert *)cache;
+    mote__transform_range(&cx, tv, first, end);
     uint32_t i = first;
 #if MOTE__VECTOR_VERTEX
-    for (; i + 4 <= end; i += 4) {
-        mote__transform4(&cx, i, &tv[i]);
-        if (cx.lit && cx.rs->gouraud) {
+    if (mote__finish_in_fours(&cx))
+        for (; i + 4 <= end; i += 4) {
             /* an invalid vertex is lit too, harmlessly: nothing reads it */
             mote__tvert *const four[4] = {&tv[i], &tv[i + 1], &tv[i + 2], &tv[i + 3]};
             mote__finish4(&cx, four);
-        } else {
-            for (int k = 0; k < 4; k++)
-                if (tv[i + k].state == 1)
-                    mote__finish(&cx, &tv[i + k]);
         }
-    }
 #endif
     for (; i < end; i++)
-        mote__transform_finished(&cx, i, &tv[i]);
+        if (tv[i].state == 1)
+            mote__finish(&cx, &tv[i]);
 }
 #endif
 
@@ -1238,15 +1255,8 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         }
         if (!cx.cache)
             cache_bytes = 0;
-        else if (!prepared) {
-            uint32_t i = 0;
-#if MOTE__VECTOR_VERTEX
-            for (; i + 4 <= mesh->vertex_count; i += 4)
-                mote__transform4(&cx, i, &cx.cache[i]);
-#endif
-            for (; i < mesh->vertex_count; i++)
-                mote__transform(&cx, i, &cx.cache[i]);
-        }
+        else if (!prepared)
+            mote__transform_range(&cx, cx.cache, 0, mesh->vertex_count);
     }
     if (!cx.cache) {
         memset(small_cache, 0, sizeof small_cache);
@@ -1274,7 +1284,7 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         /* a full cache this draw fills itself (a shared one is finished
          * already): front faces queue for their vertices, lit in fours */
         mote__lit_queue queue;
-        if (cx.lit && cx.rs->gouraud && !cx.cache_mask && !(MOTE_ENABLE_BINNING && piece && piece->vertices)) {
+        if (mote__finish_in_fours(&cx) && !cx.cache_mask && !(MOTE_ENABLE_BINNING && piece && piece->vertices)) {
             queue.vertices = queue.faces = 0;
             cx.queue = &queue;
         }
