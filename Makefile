@@ -91,6 +91,7 @@ help:
 	@echo "make demo       render the demo scene and the chapter examples to $(OUT)/*.png"
 	@echo "make test       build and run the Unity test suite (SAN=1: with ASan+UBSan)"
 	@echo "make bench      time against error, tables and plot (tests/bench)"
+	@echo "make profile    where a frame's instructions go, by stage (Callgrind)"
 	@echo "make accuracy   error of every mode against the reference renderer"
 	@echo "make cross      build the core for Cortex-M0+, Cortex-M4F and RV32IMAC"
 	@echo "make test-embedded  render on an emulated Cortex-M (qemu) and compare"

@@ -4,6 +4,11 @@
 # The target installs what it needs itself (gnuplot-nox, libosmesa6-dev);
 # without OSMesa the llvmpipe comparison is skipped with the reason, without
 # gnuplot the plot is. BENCH_ARGS passes options (--cap S, --frames N, ...).
+#
+# `make profile`: where a frame's instructions go, by stage (fills, setup,
+# vertex stage, culling and binning, clear), counted by Callgrind on the
+# grid and on Suzanne at both sizes (tests/bench/profile.sh; installs
+# valgrind). PROFILE_SCENES picks other scenes.
 
 BENCH_DIR     := $(BUILD)/bench
 BENCH_BIN     := $(BENCH_DIR)/mote-bench
@@ -21,7 +26,14 @@ BENCH_CFLAGS   = $(CFLAGS) -Itests -Itests/bench -DMOTE_SOURCE_DIR=\"$(CURDIR)\"
 BENCH_OBJ      = $(BENCH_DIR)/bench.o $(BENCH_DIR)/gl-$(BENCH_OSMESA).o \
                  $(if $(BENCH_REF_ON),$(BENCH_DIR)/bench_ref.o $(BENCH_REF_OBJ))
 
-.PHONY: bench bench-run bench-build
+.PHONY: bench bench-run bench-build profile
+
+PROFILE_SCENES ?= grid monkey-1920 monkey-640
+
+profile:
+	@MOTE_EXTRA_PACKAGES=valgrind sh third_party/setup.sh
+	@$(MAKE) --no-print-directory bench-build
+	sh tests/bench/profile.sh $(BENCH_BIN) $(PROFILE_SCENES)
 
 bench:
 	@for p in $(BENCH_PKGS); do \

@@ -1,0 +1,38 @@
+#!/bin/sh
+# profile.sh BENCH [SCENE ...]: where mote's instructions go, by stage, for
+# each scene (a prefix of a mote-bench scene name), textured with nearest
+# texels on one thread: Callgrind counts the instructions run inside
+# mote_begin, mote_draw and mote_end, and tests/bench/profile.awk sums them
+# by stage. Counts are exact and the same on every run of one build, so
+# they compare builds where times on a shared machine are too noisy.
+# PROFILE_FRAMES (default 20) frames are counted, and mote-bench's two
+# warm-up frames before them (the first one clears the whole frame).
+set -eu
+if [ $# -lt 1 ] || [ ! -x "$1" ]; then
+    echo "usage: profile.sh MOTE-BENCH [SCENE ...]" >&2
+    exit 2
+fi
+bench=$1
+shift
+[ $# -gt 0 ] || set -- grid monkey-1920 monkey-640
+dir=$(dirname "$0")
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+for scene in "$@"; do
+    if ! valgrind --tool=callgrind --callgrind-out-file="$out/cg" --compress-strings=no --compress-pos=no \
+            --toggle-collect=mote_begin --toggle-collect=mote_draw --toggle-collect=mote_end \
+            "$bench" --scene "$scene" --mode tex-nearest --threads 1 --frames "${PROFILE_FRAMES:-20}" \
+            >"$out/log" 2>&1; then
+        cat "$out/log" >&2
+        echo "profile: $scene: valgrind failed" >&2
+        exit 1
+    fi
+    name=$(sed -n 's/^  scene \([^ ]*\).*/\1/p' "$out/log" | head -n 1)
+    if [ -z "$name" ]; then      # monkey-*: Suzanne's files are not there
+        echo "profile: skipped $scene: mote-bench has no scene of that name here"
+        echo
+        continue
+    fi
+    awk -v scene="$name" -f "$dir/profile.awk" "$out/cg"
+    echo
+done
