@@ -14,6 +14,10 @@ if [ $# -lt 1 ] || [ ! -x "$1" ]; then
 fi
 bench=$1
 shift
+if ! command -v valgrind >/dev/null 2>&1; then
+    echo "profile: valgrind is not installed (make profile installs it: apt-get install valgrind)" >&2
+    exit 1
+fi
 [ $# -gt 0 ] || set -- grid monkey-1920 monkey-640
 dir=$(dirname "$0")
 out=$(mktemp -d)
