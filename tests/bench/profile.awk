@@ -4,9 +4,10 @@
 #
 # Each function of mote (one defined in a file under src/) is put in a
 # stage by its name (stage() below); a function outside mote (memcpy,
-# memset) counts in the stage of the mote function that called it. Per unit: instructions a set-up call (setup),
-# a fill call (fills: one triangle in one tile, with its edge walk), and a
-# frame (calls of mote_begin).
+# memset) counts in the stage of the mote function that called it. Per
+# unit: instructions a set-up call (setup), a fill call (fills: one
+# triangle in one tile, with its edge walk), and a frame (calls of
+# mote_begin).
 #
 # Variables: scene (a title for the table).
 
@@ -40,7 +41,6 @@ function stage(f) {
     if (in_call) {
         calls[fn, cfn] += ncalls
         cost[fn, cfn] += $2
-        callees[cfn] = 1
         in_call = 0
     } else {
         self[fn] += $2
