@@ -7,8 +7,8 @@
 #
 # `make profile`: where a frame's instructions go, by stage (fills, setup,
 # vertex stage, culling and binning, clear), counted by Callgrind on the
-# grid and on Suzanne at both sizes (tests/bench/profile.sh; installs
-# valgrind). PROFILE_SCENES picks other scenes.
+# grid and on Suzanne at both sizes (tests/bench/profile.sh, which holds
+# that default; installs valgrind). PROFILE_SCENES picks other scenes.
 
 BENCH_DIR     := $(BUILD)/bench
 BENCH_BIN     := $(BENCH_DIR)/mote-bench
@@ -27,8 +27,6 @@ BENCH_OBJ      = $(BENCH_DIR)/bench.o $(BENCH_DIR)/gl-$(BENCH_OSMESA).o \
                  $(if $(BENCH_REF_ON),$(BENCH_DIR)/bench_ref.o $(BENCH_REF_OBJ))
 
 .PHONY: bench bench-run bench-build profile
-
-PROFILE_SCENES ?= grid monkey-1920 monkey-640
 
 profile:
 	@MOTE_EXTRA_PACKAGES=valgrind sh third_party/setup.sh
