@@ -77,6 +77,28 @@ static double bench_load(void)
     return l;
 }
 
+/* The processor's name (Linux: /proc/cpuinfo's first "model name"), or
+ * "unknown processor": llvmpipe's time against mote's moves with it. */
+static void bench_cpu_name(char *out, size_t size)
+{
+    snprintf(out, size, "unknown processor");
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (!f)
+        return;
+    char line[256];
+    while (fgets(line, sizeof line, f)) {
+        char *colon = strchr(line, ':');
+        if (strncmp(line, "model name", 10) != 0 || !colon)
+            continue;
+        colon += 1 + (colon[1] == ' ');
+        colon[strcspn(colon, "\n")] = 0;
+        if (*colon)
+            snprintf(out, size, "%s", colon);
+        break;
+    }
+    fclose(f);
+}
+
 static double bench_now(void)
 {
     struct timespec ts;
@@ -1543,8 +1565,10 @@ int main(int argc, char **argv)
     else
         snprintf(cores_line, sizeof cores_line, "not measured (profiling one mode)");
 
-    printf("mote benchmark: %ld cores online, OpenMP %s, time cap %.1f s per run, %d frames asked per run, "
-           "error frame %d\n", cores,
+    char cpu[160];
+    bench_cpu_name(cpu, sizeof cpu);
+    printf("mote benchmark: %s, %ld cores online, OpenMP %s, time cap %.1f s per run, %d frames asked per run, "
+           "error frame %d\n", cpu, cores,
 #ifdef _OPENMP
            "on",
 #else
@@ -1592,11 +1616,11 @@ int main(int argc, char **argv)
     write_csv(csv);
     fclose(csv);
     FILE *md = open_out("bench.md");
-    fprintf(md, "## Benchmark\n\n`make bench` on %ld cores; scenes rotate one turn per 100 frames; "
+    fprintf(md, "## Benchmark\n\n`make bench` on %s, %ld cores; scenes rotate one turn per 100 frames; "
                 "%s. Frames timed per run: the `frames` column (capped at %.1f s per run). "
                 "Load average %.2f before, %.2f after (other work skews the timings). "
                 "Core check (each core alone): %s.\n\n",
-            cores, have_assets ? "Suzanne from ../shared/assets" : "a generated torus instead of Suzanne (../shared absent)",
+            cpu, cores, have_assets ? "Suzanne from ../shared/assets" : "a generated torus instead of Suzanne (../shared absent)",
             opt.cap_s, load0, load1, cores_line);
     for (int i = 0; i < ntab; i++)
         tbl_print(tabs[i], md, true);
