@@ -328,6 +328,37 @@ void the_depth_test_should_not_depend_on_draw_order(void)
     TEST_ASSERT_TRUE(diff <= 2 * H);
 }
 
+/* The statistics count a depth-rejected pixel as tested, not written: the
+ * screen quad drawn again at its own depth loses every pixel, a nearer one
+ * wins every pixel (with and without an arena, flat and Gouraud). */
+void depth_rejected_pixels_should_be_tested_but_not_written(void)
+{
+    static uint8_t arena[1 << 16];
+    for (int binned = 0; binned < 2; binned++)
+        for (int gouraud = 0; gouraud < 2; gouraud++) {
+            mote_device_desc d = dev.desc;
+            d.arena = binned ? arena : NULL;
+            d.arena_size = binned ? sizeof arena : 0;
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+            mote_draw_desc dd = {0};
+            dd.unlit = !gouraud;
+            dd.mode = gouraud ? MOTE_MODE_GOURAUD : MOTE_MODE_FLAT;
+            frame.light_count = 1;
+            frame.lights[0].position[2] = -1.0f;
+            frame.lights[0].intensity = 1.0f;
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+            mote_mesh far = screen_quad(5.0f);
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &far, &dd));
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &far, &dd));
+            mote_mesh near = screen_quad(4.0f);
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &near, &dd));
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+            const mote_stats *st = mote_device_stats(&dev);
+            TEST_ASSERT_EQUAL_UINT64(3 * (uint64_t)W * H, st->pixels_tested);
+            TEST_ASSERT_EQUAL_UINT64(2 * (uint64_t)W * H, st->pixels_written);
+        }
+}
+
 /* ---- lighting --------------------------------------------------------------- */
 
 void flat_shading_should_use_the_face_normal_against_the_light(void)
@@ -815,6 +846,7 @@ int main(void)
     RUN_TEST(a_triangulated_square_should_cover_every_pixel_exactly_once);
     RUN_TEST(a_random_fan_over_the_screen_should_cover_every_pixel_exactly_once);
     RUN_TEST(the_depth_test_should_not_depend_on_draw_order);
+    RUN_TEST(depth_rejected_pixels_should_be_tested_but_not_written);
     RUN_TEST(flat_shading_should_use_the_face_normal_against_the_light);
     RUN_TEST(gouraud_shading_should_interpolate_vertex_intensities);
     RUN_TEST(lighting_should_follow_the_mesh_rotation);
