@@ -465,6 +465,25 @@ void loader_should_draw_a_mesh_again_for_each_of_its_instances(void)
     mote_scene_free(&s);
 }
 
+/* a child of an instance names the instance's source and the instance's
+ * place among the source's instances (parentInstanceIndex); -1 is the
+ * source itself */
+void loader_should_attach_a_child_to_the_instance_its_parent_index_names(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"src\"," TRI ","
+                    "\"instances\":[{\"name\":\"i0\",\"position\":[5,0,0]},"
+                    "{\"name\":\"i1\",\"position\":[-5,0,0]}]},"
+                    "{\"id\":\"on-i1\",\"parentId\":\"src\",\"parentInstanceIndex\":1," TRI "},"
+                    "{\"id\":\"on-src\",\"parentId\":\"src\",\"parentInstanceIndex\":-1," TRI "}]}";
+    mote_scene s;
+    load_json(j, "pi", &s);
+    TEST_ASSERT_EQUAL(5, s.mesh_count);   /* src, on-i1, on-src, i0, i1 */
+    ASSERT_VEC3(-5.0f, 0.0f, 0.0f, s.meshes[4].position, 0.0f);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[4], s.meshes[1].parent);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[0], s.meshes[2].parent);
+    mote_scene_free(&s);
+}
+
 void loader_should_use_the_first_camera_without_an_active_one(void)
 {
     const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
@@ -742,6 +761,7 @@ int main(void)
     RUN_TEST(loader_should_read_the_current_layout_with_exact_fields);
     RUN_TEST(loader_should_give_transform_nodes_a_mesh_to_be_parents);
     RUN_TEST(loader_should_resolve_a_numeric_parent_id_by_unique_id);
+    RUN_TEST(loader_should_attach_a_child_to_the_instance_its_parent_index_names);
     RUN_TEST(loader_should_hide_invisible_and_disabled_meshes);
     RUN_TEST(loader_should_take_the_texture_row_of_v0_from_invert_y);
     RUN_TEST(loader_should_keep_explicit_zeros_of_scale_and_light);

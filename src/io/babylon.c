@@ -18,7 +18,10 @@
  *   parent); empty arrays are fine and give 0 triangles.
  * - Duplicate material ids: the first wins, with a warning.
  * - A materialId (or multi-material slot) naming nothing: default white
- *   material, with a warning. A parentId naming nothing is an error.
+ *   material, with a warning. A parentId naming nothing is an error, and
+ *   so is a parentInstanceIndex past the parent's instances.
+ * - A mesh whose arrays are in another file (incremental or binary
+ *   exports) loads without them, with a warning.
  * - Materials and multi-materials count against limits.max_meshes too, and
  *   so do transform nodes and instances.
  * - Meshes naming one geometryId, and a mesh's instances, share its arrays.
@@ -96,6 +99,8 @@ typedef struct mote__node {
     const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
     const char *parent_id;        /* an id, or a uniqueId as text (parent_by_unique) */
     bool parent_by_unique;        /* parentId was a number: Babylon.js writes the parent's uniqueId */
+    int parent_instance;          /* parentInstanceIndex: the parent's instance, -1: the parent itself */
+    int first_instance, instance_count;   /* a mesh's instances among the nodes */
     const char *material_id;
     char where[48];               /* "meshes[3]" or "transformNodes[0]" */
     int parent;                   /* node index, -1: none */
@@ -1038,6 +1043,18 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
         MOTE__TRY(mote__number_text(ld, mesh, "parentId", where, &nd->parent_id));
     else
         MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
+    /* a child of an instance names the instance's source mesh and the
+     * instance's place among the source's instances (Babylon.js resolves
+     * it so when it loads parents); -1, or absent: the parent itself */
+    nd->parent_instance = -1;
+    const cJSON *pii = mote__get(mesh, "parentInstanceIndex");
+    if (pii && !(cJSON_IsNumber(pii) && pii->valuedouble == -1.0)) {
+        char at[96];
+        uint32_t k;
+        snprintf(at, sizeof at, "%s.parentInstanceIndex", where);
+        MOTE__TRY(mote__to_uint(ld, pii, at, 0, INT32_MAX, &k));
+        nd->parent_instance = (int)k;
+    }
     MOTE__TRY(mote__vec(ld, mesh, "position", where, 3, 0, nd->position));
     MOTE__TRY(mote__vec(ld, mesh, "rotation", where, 3, 0, nd->rotation));
     nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
@@ -1091,6 +1108,12 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
             g->owner = (int)(nd - ld->nodes);
         }
     } else {
+        /* an incremental (.incremental.babylon) or binary export keeps the
+         * arrays in another file, which mote does not read: say so rather
+         * than draw nothing without a word */
+        if (mote__get(mesh, "delayLoadingFile") || mote__get(mesh, "_binaryInfo"))
+            mote__warn(ld, "%s: its geometry is in a separate file (an incremental or binary "
+                       "export), which mote does not read; it is drawn without it", where);
         const cJSON *ind;
         MOTE__TRY(mote__arr(ld, mesh, "indices", where, &ind));
         if (ind && ind->child) {
@@ -1158,6 +1181,8 @@ static R mote__nodes(mote__ld *ld)
         snprintf(nd->where, sizeof nd->where, "meshes[%d]", i);
         MOTE__TRY(mote__node_read(ld, m, nd->where, nd));
         const cJSON *inst = mote__get(m, "instances");   /* an array: checked above */
+        nd->first_instance = next_instance;
+        nd->instance_count = (int)mote__array_len(inst);
         int k = 0;
         for (const cJSON *e = inst ? inst->child : NULL; e; e = e->next, k++) {
             mote__node *in = &ld->nodes[next_instance++];
@@ -1209,6 +1234,17 @@ static R mote__parents(mote__ld *ld)
         if (nd->parent < 0)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
                               "transform node", nd->where, mote__quote(nd->parent_id).s);
+    }
+    for (int i = 0; i < ld->node_count; i++) {
+        mote__node *nd = &ld->nodes[i];
+        if (nd->parent < 0 || nd->parent_instance < 0)
+            continue;
+        const mote__node *p = &ld->nodes[nd->parent];
+        if (nd->parent_instance >= p->instance_count)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentInstanceIndex: %s has no instance %d "
+                              "(it has %d)", nd->where, p->where, nd->parent_instance,
+                              p->instance_count);
+        nd->parent = p->first_instance + nd->parent_instance;
     }
     for (int i = 0; i < ld->node_count; i++) {
         /* walk up marking the path; meeting the path again is a cycle */
