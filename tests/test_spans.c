@@ -501,6 +501,62 @@ void binned_draws_set_up_in_groups_should_match_the_serial_path(void)
         }
 }
 
+/* A parallel_for that runs the tasks in order and counts its steps. */
+static int steps_taken;
+static void counting_parallel_for(void *user, int count, mote_task_fn fn, void *arg)
+{
+    (void)user;
+    steps_taken++;
+    for (int i = 0; i < count; i++)
+        fn(arg, i);
+}
+
+/* Many one-triangle draws (a scene of small meshes): a batch of them is
+ * set up on the calling thread, not in a parallel step of its own, which
+ * would cost more than its triangles (and, on a loaded machine, waits
+ * for a thread the system has put aside). Only the frame's first batch,
+ * beside the clear, and the tiles take a step; the bytes are the serial
+ * path's. */
+void batches_of_tiny_draws_should_not_take_a_parallel_step_each(void)
+{
+    enum { DRAWS = 4 * MOTE_MAX_DRAWS + 5 };
+    static uint8_t ref[W * H * 4], got[W * H * 4];
+    static uint32_t depth[W * H];
+    static uint64_t arena[(8u << 20) / 8];
+    static mote_mesh tiny[DRAWS];
+    mote_mesh meshes[3];
+    make_scene(meshes);
+    for (int k = 0; k < DRAWS; k++) {
+        tiny[k] = meshes[k % 3];
+        tiny[k].indices = indices + 3 * k;
+        tiny[k].index_count = 3;
+        mote_mesh_update_bounds(&tiny[k]);
+    }
+    for (int run = 0; run < 2; run++) {   /* serial, then with the counting hook */
+        int threads = 0;
+        mote_device dev;
+        mote_device_desc d = test_desc(run ? got : ref, depth, arena, sizeof arena, 16, &threads);
+        d.parallel_for = run ? counting_parallel_for : NULL;
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+        mote_frame_desc f;
+        memset(&f, 0, sizeof f);
+        f.camera.position[2] = -5.0f;
+        mote_draw_desc dd;
+        memset(&dd, 0, sizeof dd);
+        dd.cull = MOTE_CULL_NONE;
+        dd.mode = MOTE_MODE_TEXTURED;
+        steps_taken = 0;
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+        for (int k = 0; k < DRAWS; k++)
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &tiny[k], &dd));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+        TEST_ASSERT_EQUAL(DRAWS, mote_device_stats(&dev)->draws);
+    }
+    TEST_ASSERT_EQUAL_MEMORY(ref, got, sizeof ref);
+    /* the first batch beside the clear, then the tiles (five batches) */
+    TEST_ASSERT_EQUAL(2, steps_taken);
+}
+
 /* A binned draw transforms its vertices four at a time on SSE2 hosts, a
  * direct one one at a time: vertices behind the eye, on its plane, far
  * outside the guard band, in it, NaN, infinite, denormal or with texels
@@ -887,6 +943,7 @@ int main(void)
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(vertex_colours_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
     RUN_TEST(binned_draws_set_up_in_groups_should_match_the_serial_path);
+    RUN_TEST(batches_of_tiny_draws_should_not_take_a_parallel_step_each);
     RUN_TEST(vertices_transformed_four_at_a_time_should_match_one_at_a_time);
     RUN_TEST(a_draw_cut_into_pieces_should_match_drawing_it_whole);
     RUN_TEST(the_clear_beside_parallel_setup_should_run_without_triangles_and_before_points);

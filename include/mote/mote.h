@@ -161,8 +161,9 @@ extern "C" {
 
 /* Binned mode with parallel_for: a draw of at least twice this many
  * triangles (and more than its share of the frame's) is cut into pieces
- * that are set up on several threads. The fuzz build lowers it, so that
- * its small draws are cut too. */
+ * that are set up on several threads, and each thread's group of draws
+ * holds at least this many (fewer are set up on the calling thread). The
+ * fuzz build lowers it, so that its small draws are cut too. */
 #ifndef MOTE_PIECE_MIN
 #define MOTE_PIECE_MIN 128
 #endif

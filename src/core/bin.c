@@ -263,10 +263,12 @@ void mote__bin_flush(mote_device *dev)
  * transformed and lit first, in parallel chunks, into one cache that its
  * pieces only read. A group whose slice runs out stops, and the whole
  * batch is binned serially instead, which flushes a full arena as usual.
- * The parts depend on the draws alone; a single small draw is binned
- * serially, or as one group when the frame's clear is still to run: its
- * stripes are tasks of the first parallel step, beside the setup, which
- * touches no pixel (a group never flushes). */
+ * The parts depend on the draws alone, and a group gets at least
+ * MOTE_PIECE_MIN triangles: a batch smaller than that (one small draw, or
+ * many tiny ones) is binned serially, or as one group when the frame's
+ * clear is still to run: its stripes are tasks of the first parallel
+ * step, beside the setup, which touches no pixel (a group never
+ * flushes). */
 #define MOTE__BIN_GROUPS 16
 /* A cut draw's vertices are prepared in tasks of at least this many. Its
  * pieces have at least MOTE_PIECE_MIN triangles (mote.h: 64 and 256 were
@@ -374,11 +376,12 @@ static void mote__stats_add(mote_stats *to, const mote_stats *from)
 }
 
 /* What cutting a batch's draws gives: parts, cuts and their vertex tasks,
- * the cuts' caches, and the largest cache of a draw not cut (a group's
- * private one). */
+ * the cuts' caches, the largest cache of a draw not cut (a group's
+ * private one), and the batch's triangles. */
 typedef struct mote__cut_sizes {
     int parts, cuts, chunks;
     size_t cut_bytes, uncut_cache;
+    uint64_t triangles;
 } mote__cut_sizes;
 
 /* Cuts the draws [0, n) into parts, in pieces of at least a group's share
@@ -388,10 +391,11 @@ typedef struct mote__cut_sizes {
 static mote__cut_sizes mote__bin_cut(const mote_device *dev, int n, mote__part *parts, mote__cut *cuts,
                                      unsigned char *caches)
 {
-    mote__cut_sizes sz = {0, 0, 0, 0, 0};
+    mote__cut_sizes sz = {0, 0, 0, 0, 0, 0};
     uint64_t total = 0;
     for (int i = 0; i < n; i++)
         total += mote__draw_triangles(&dev->draws[i]);
+    sz.triangles = total;
     uint64_t share = (total + MOTE__BIN_GROUPS - 1) / MOTE__BIN_GROUPS;
     share = MOTE__MAX(share, (uint64_t)MOTE__MAX(MOTE_PIECE_MIN, 1));
     for (int i = 0; i < n; i++) {
@@ -483,7 +487,13 @@ mote_result mote__bin_run_draws(mote_device *dev)
     dev->draw_count = 0;
     mote__bin *b = &dev->bin;
     mote__cut_sizes sz = mote__bin_cut(dev, n, NULL, NULL, NULL);
-    int groups = MOTE__MIN(sz.parts, MOTE__BIN_GROUPS);
+    /* a group gets at least a piece's worth of triangles: batches of
+     * tiny draws (60,000 one-triangle meshes: a parallel step every 64
+     * draws) each set up in a step of their own cost more than their
+     * triangles, and on a loaded machine, where a step waits for a thread
+     * the system has put aside, over ten times the one-thread time */
+    uint64_t fill = sz.triangles / (uint64_t)MOTE__MAX(MOTE_PIECE_MIN, 1);
+    int groups = (int)MOTE__MIN((uint64_t)MOTE__MIN(sz.parts, MOTE__BIN_GROUPS), MOTE__MAX(fill, 1u));
     size_t table = mote__bin_table_bytes(dev), cache = sz.uncut_cache;
     /* the groups, parts and cuts; per group its device, tile table and
      * vertex cache; the cuts' caches */
