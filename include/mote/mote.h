@@ -154,6 +154,13 @@ extern "C" {
 #define MOTE_GUARD_BITS 13
 #endif
 
+/* Parents a mesh's world matrix follows (mote_mesh.parent): a longer
+ * chain is cut there, which also ends a cyclic one. The scene loader
+ * refuses files whose chains are longer. */
+#ifndef MOTE_MAX_PARENTS
+#define MOTE_MAX_PARENTS 64
+#endif
+
 /* Lights per frame. */
 #ifndef MOTE_MAX_LIGHTS
 #define MOTE_MAX_LIGHTS 4
@@ -313,7 +320,7 @@ typedef struct mote_mesh {
     bool use_quaternion;
     bool hidden;                  /* mote_draw draws nothing; still a parent */
     float scaling[3];
-    const struct mote_mesh *parent;
+    const struct mote_mesh *parent;   /* followed up to MOTE_MAX_PARENTS levels */
     mote_material material;
     /* Bounding sphere in the mesh's own space, for whole-mesh frustum
      * rejection; radius <= 0 means unknown (never rejected). See

@@ -177,7 +177,7 @@ bool mote__world_matrix(const mote_mesh *mesh, float world[16])
     bool mirrors = mote__local_matrix(mesh, world);
     /* Parents are applied iteratively (bounded) so a cyclic chain cannot recurse forever. */
     const mote_mesh *p = mesh->parent;
-    for (int depth = 0; p && depth < 64; depth++, p = p->parent) {
+    for (int depth = 0; p && depth < MOTE_MAX_PARENTS; depth++, p = p->parent) {
         float pm[16];
         mirrors ^= mote__local_matrix(p, pm);
         mote__mat4_mul(pm, world, world);

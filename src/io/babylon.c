@@ -1259,13 +1259,13 @@ static R mote__parents(mote__ld *ld)
         for (j = i; j >= 0 && ld->nodes[j].state == 1; j = ld->nodes[j].parent)
             ld->nodes[j].state = 2;
     }
-    /* the core follows at most 64 parents */
+    /* the core follows at most MOTE_MAX_PARENTS parents */
     for (int i = 0; i < ld->node_count; i++) {
         int depth = 0;
         for (int j = ld->nodes[i].parent; j >= 0; j = ld->nodes[j].parent)
-            if (++depth > 64)
-                return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than 64 parents",
-                                  ld->nodes[i].where);
+            if (++depth > MOTE_MAX_PARENTS)
+                return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than %d parents (MOTE_MAX_PARENTS)",
+                                  ld->nodes[i].where, MOTE_MAX_PARENTS);
     }
     return MOTE_OK;
 }
