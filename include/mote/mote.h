@@ -265,8 +265,8 @@ typedef struct mote_rgba { uint8_t r, g, b, a; } mote_rgba;
 typedef struct mote_texture {
     int width, height;
     mote_format format;           /* RGBA8888, RGB565 or GREY8 */
-    int stride;                   /* bytes per row */
-    const void *pixels;
+    int stride;                   /* bytes per row, a multiple of the texel size; 0 = packed */
+    const void *pixels;           /* aligned to the texel size */
 } mote_texture;
 
 typedef enum mote_wrap {
@@ -296,7 +296,7 @@ typedef struct mote_material {
     mote_rgba color;              /* diffuse colour; alpha unused; {0} = white when
                                      color_set is false */
     bool color_set;               /* false: white (so a zeroed material is white) */
-    const mote_texture *texture;  /* NULL: untextured */
+    const mote_texture *texture;  /* NULL: untextured; so is one of bad size, format, stride or alignment */
     mote_wrap wrap_u, wrap_v;
     float u_scale, v_scale;       /* 0 = 1 */
     float u_offset, v_offset;     /* uv' = uv * scale + offset */
@@ -380,7 +380,10 @@ typedef struct mote_frame_desc {
     int light_count;
     float ambient[3];             /* added to every lit colour */
     bool keep_color;              /* true: do not clear the colour buffer */
-    bool keep_depth;              /* true: do not clear the depth buffer */
+    bool keep_depth;              /* true: do not clear the depth buffer
+                                     (both: full-frame devices; band mode
+                                     clears each band, as its buffer holds
+                                     other rows between frames) */
 } mote_frame_desc;
 
 typedef enum mote_mode {
@@ -461,19 +464,20 @@ typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
 typedef struct mote_device_desc {
     int width, height;
     mote_format color_format;
-    void *color;                  /* band_height rows of stride bytes */
+    void *color;                  /* band_height rows of stride bytes, aligned to the pixel size */
     int color_stride;             /* bytes per row, a multiple of the pixel size; 0 = packed */
     mote_depth_format depth_format;
-    void *depth;                  /* band_height * width depth values; may be NULL
-                                     only with MOTE_DEPTH_FORMAT_NONE */
+    void *depth;                  /* band_height * width depth values, aligned to
+                                     their size; may be NULL only with
+                                     MOTE_DEPTH_FORMAT_NONE */
     mote_rgba clear_color;
     float clear_depth;            /* 0 = 1.0 (far) */
     int subpixel_bits;            /* 0 = 8; 4..8 */
     int band_height;              /* 0 = height (full frame) */
     mote_flush_fn flush;
     void *flush_user;
-    void *arena;                  /* optional binning memory (full frame only) */
-    size_t arena_size;
+    void *arena;                  /* optional binning memory (full frame only), 8-byte aligned */
+    size_t arena_size;            /* used in whole 8-byte words, up to 4 GiB */
     int tile_size;                /* 0 = 64; a power of two from 8 to 256 */
     /* Binned mode: mote_begin clears only the tiles drawn into since their
      * last clear, not the whole frame (a scene that covers part of the
@@ -525,9 +529,9 @@ typedef struct mote_device {
 } mote_device;
 
 /* Checks desc, fills defaults and clears nothing yet. Returns
- * MOTE_ERR_INVALID_ARGUMENT for a missing buffer, a size outside
- * [1, MOTE_MAX_SIZE], an unknown format, a band mode without flush, or an
- * arena in band mode; MOTE_ERR_UNSUPPORTED for an arena when the library
+ * MOTE_ERR_INVALID_ARGUMENT for a missing or misaligned buffer, a size
+ * outside [1, MOTE_MAX_SIZE], an unknown format, a band mode without flush,
+ * or an arena in band mode; MOTE_ERR_UNSUPPORTED for an arena when the library
  * was built with MOTE_ENABLE_BINNING 0. */
 mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc);
 
@@ -537,7 +541,8 @@ mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc);
 /* Starts a frame: sets camera and lights, clears colour and depth (full-frame
  * mode; band mode clears each band in mote_end). With parallel_for in binned
  * mode the clear runs beside the setup of the frame's first draws, before
- * any pixel is drawn: the buffers hold the frame only after mote_end. */
+ * any pixel is drawn: the buffers hold the frame only after mote_end.
+ * Called again before mote_end, it abandons the frame's recorded draws. */
 mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame);
 
 /* Draws (or records, or bins) one mesh; a hidden one is skipped (MOTE_OK).
@@ -555,7 +560,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh,
 /* Finishes the frame: rasterises binned tiles or renders the bands. */
 mote_result mote_end(mote_device *dev);
 
-/* Statistics of the current or last frame. */
+/* Statistics of the current or last frame (all zero for a NULL device). */
 const mote_stats *mote_device_stats(const mote_device *dev);
 
 /* Arena bytes one binned triangle needs at most (setup record and bin entry). */
@@ -566,8 +571,10 @@ size_t mote_arena_bytes_per_triangle(void);
 size_t mote_band_bytes(int width, int band_height, mote_format color,
                        mote_depth_format depth);
 
-/* Reads pixel (x, y) of a full-frame colour buffer as RGBA (alpha 255),
- * whatever the format. Out-of-range coordinates give {0,0,0,0}. */
+/* Reads pixel (x, y) of a full-frame colour buffer as RGBA, whatever the
+ * format: alpha as stored in RGBA8888 (255 where triangles drew, the clear
+ * colour's elsewhere), 255 in the others. Out-of-range coordinates give
+ * {0,0,0,0}. */
 mote_rgba mote_read_pixel(const mote_device *dev, int x, int y);
 
 /* Converts one row of pixels between formats (any to RGBA8888 or from it). */
@@ -582,8 +589,10 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16]);
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect,
                                    float proj[16]);
 
-/* Projects a world-space point to screen pixels (x, y) and depth z in [0,1]
- * with the device's camera; returns false behind the near plane. */
+/* Projects a world-space point to screen pixels (x, y) and depth z with
+ * the device's camera: z is 0 on the near plane, 1 on the far one, above
+ * 1 beyond it. Returns false behind the near plane (or for a NULL device
+ * or point); x, y and z may each be NULL. */
 bool mote_project(const mote_device *dev, const float world_point[3],
                   float *x, float *y, float *z);
 

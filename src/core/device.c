@@ -84,6 +84,12 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
     if (d.color_stride < d.width * mote_format_bytes(d.color_format)
         || d.color_stride % mote_format_bytes(d.color_format) != 0)   /* rows stay aligned */
         return MOTE_ERR_INVALID_ARGUMENT;
+    /* pixels and depth values are stored as whole 16- and 32-bit words,
+     * which a core without unaligned access (Cortex-M0+) faults on */
+    if ((uintptr_t)d.color % (uintptr_t)mote_format_bytes(d.color_format) != 0
+        || (d.depth_format != MOTE_DEPTH_FORMAT_NONE
+            && (uintptr_t)d.depth % (d.depth_format == MOTE_DEPTH_FORMAT_16 ? 2u : 4u) != 0))
+        return MOTE_ERR_INVALID_ARGUMENT;
     if (d.subpixel_bits < 4 || d.subpixel_bits > 8 || d.band_height < 1)
         return MOTE_ERR_INVALID_ARGUMENT;
     if (d.band_height < d.height && (!d.flush || d.arena))
@@ -96,7 +102,9 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
             return MOTE_ERR_UNSUPPORTED;
         mote__bin *b = &dev->bin;
         b->base = (unsigned char *)d.arena;
-        b->size = d.arena_size;
+        /* whole 8-byte words, as the records in it are aligned from both
+         * ends; and no more than its 32-bit offsets reach */
+        b->size = (d.arena_size < UINT32_MAX ? d.arena_size : UINT32_MAX) & ~(size_t)7u;
         while ((1 << b->tile_shift) < d.tile_size)
             b->tile_shift++;
         b->tiles_x = (d.width + d.tile_size - 1) / d.tile_size;
@@ -128,7 +136,8 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
 
 const mote_stats *mote_device_stats(const mote_device *dev)
 {
-    return &dev->stats;
+    static const mote_stats none;   /* all zero, for no device */
+    return dev ? &dev->stats : &none;
 }
 
 /* ---- targets and clearing ---------------------------------------------- */
@@ -257,7 +266,15 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
         return MOTE_ERR_INVALID_ARGUMENT;
     if (!dev->ready)
         return MOTE_ERR_STATE;
+    /* a frame begun again before its mote_end is abandoned, but the clear
+     * it put off is owed: the marks of the tiles it was to clear are about
+     * to be replaced */
+    if (dev->in_frame && dev->clear_pending)
+        mote__clear_frame(dev);
     dev->frame = *frame;
+    /* a band's buffer holds other rows between frames: nothing to keep */
+    if (mote__band_mode(dev))
+        dev->frame.keep_color = dev->frame.keep_depth = false;
     if (dev->frame.light_count < 0)
         dev->frame.light_count = 0;
     if (dev->frame.light_count > MOTE_MAX_LIGHTS)

@@ -743,6 +743,7 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
                 mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
                 mote__raster_tri(&t, &tg, all, dev->desc.subpixel_bits);
                 mote__add_counts(dev, &count);
+                mote__bin_mark_all_drawn(dev);   /* not through the tiles */
             }
         }
     }
@@ -1061,9 +1062,15 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
 
 static bool mote__texture_ok(const mote_texture *t)
 {
-    return t && t->pixels && t->width > 0 && t->height > 0 && t->width <= 65536 && t->height <= 65536
-        && (t->format == MOTE_FORMAT_RGBA8888 || t->format == MOTE_FORMAT_RGB565
-            || t->format == MOTE_FORMAT_GREY8);
+    if (!(t && t->pixels && t->width > 0 && t->height > 0 && t->width <= 65536 && t->height <= 65536
+          && (t->format == MOTE_FORMAT_RGBA8888 || t->format == MOTE_FORMAT_RGB565
+              || t->format == MOTE_FORMAT_GREY8)))
+        return false;
+    /* texels are read as whole 16- and 32-bit words (a core without
+     * unaligned access faults on others), and rows must hold a row */
+    const int bpp = mote_format_bytes(t->format);
+    return (uintptr_t)t->pixels % (uintptr_t)bpp == 0
+        && (t->stride == 0 || (t->stride >= t->width * bpp && t->stride % bpp == 0));
 }
 
 /* Whole-mesh rejection: the bounding sphere against the view frustum. For a

@@ -170,10 +170,12 @@ mote_result mote__io_read_file(const char *path, size_t max_bytes, char **data,
                                    max_bytes);
                 break;
             }
+            /* one byte past the limit tells a file over it; a limit of
+             * SIZE_MAX (no limit) must not wrap that to 0 */
             size_t ncap = cap ? cap * 2 : 65536;
-            if (ncap > max_bytes + 1)
+            if (max_bytes < SIZE_MAX - 1 && ncap > max_bytes + 1)
                 ncap = max_bytes + 1;
-            char *nb = mote__io_malloc(ncap + 1);
+            char *nb = cap <= SIZE_MAX / 4 ? mote__io_malloc(ncap + 1) : NULL;
             if (!nb) {
                 r = mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
                                    "%s: out of memory reading %zu bytes", name, ncap);
