@@ -12,6 +12,7 @@
 #include <mote/mote.h>
 #include <mote/mote_io.h>
 
+#include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -274,8 +275,8 @@ void textures_with_bad_strides_should_draw_untextured(void)
     TEST_ASSERT_TRUE(memcmp(plain, got, sizeof plain) != 0);
 }
 
-/* NULL where a pointer is optional, or a device is missing. */
-void queries_should_take_null_where_they_can(void)
+/* NULL pointers give a failed projection and no statistics, not a crash. */
+void null_pointers_should_fail_without_a_crash(void)
 {
     static uint8_t color[W * H * 4];
     static uint32_t depth[W * H];
@@ -284,16 +285,33 @@ void queries_should_take_null_where_they_can(void)
     TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
     draw_frame(&dev, NULL);
     const float origin[3] = {0, 0, 0};
-    float x = -1.0f, z = -1.0f;
-    TEST_ASSERT_TRUE(mote_project(&dev, origin, &x, NULL, &z));
+    float x = -1.0f, y = -1.0f, z = -1.0f;
+    TEST_ASSERT_TRUE(mote_project(&dev, origin, &x, &y, &z));
     TEST_ASSERT_FLOAT_WITHIN(1e-3f, W / 2.0f, x);
     TEST_ASSERT_TRUE(z > 0.0f && z < 1.0f);
-    TEST_ASSERT_TRUE(mote_project(&dev, origin, NULL, NULL, NULL));
-    TEST_ASSERT_FALSE(mote_project(NULL, origin, &x, NULL, &z));
-    TEST_ASSERT_FALSE(mote_project(&dev, NULL, &x, NULL, &z));
-    const mote_stats *none = mote_device_stats(NULL);
-    TEST_ASSERT_NOT_NULL(none);
-    TEST_ASSERT_EQUAL_UINT32(0, none->draws);
+    TEST_ASSERT_FALSE(mote_project(&dev, origin, NULL, NULL, NULL));
+    TEST_ASSERT_FALSE(mote_project(NULL, origin, &x, &y, &z));
+    TEST_ASSERT_FALSE(mote_project(&dev, NULL, &x, &y, &z));
+    TEST_ASSERT_NULL(mote_device_stats(NULL));
+}
+
+/* Sizes and formats no device can have: no size, and no bytes written. */
+void sizes_and_formats_no_device_has_should_give_nothing(void)
+{
+    TEST_ASSERT_EQUAL_UINT64(0, (uint64_t)mote_band_bytes(INT_MAX, INT_MAX, MOTE_FORMAT_RGBA8888,
+                                                          MOTE_DEPTH_FORMAT_32));
+    TEST_ASSERT_EQUAL_UINT64(0, (uint64_t)mote_band_bytes(MOTE_MAX_SIZE + 1, 1, MOTE_FORMAT_GREY8,
+                                                          MOTE_DEPTH_FORMAT_NONE));
+    TEST_ASSERT_EQUAL_UINT64((uint64_t)MOTE_MAX_SIZE * MOTE_MAX_SIZE * 8,
+                             (uint64_t)mote_band_bytes(MOTE_MAX_SIZE, MOTE_MAX_SIZE, MOTE_FORMAT_RGBA8888,
+                                                       MOTE_DEPTH_FORMAT_32));
+    const uint8_t src[8] = {1, 2, 3, 4, 5, 6, 7, 8};
+    uint8_t dst[16];
+    memset(dst, 0xab, sizeof dst);
+    mote_convert_row(src, MOTE_FORMAT_RGBA8888, dst, MOTE_FORMAT_COUNT, 2);
+    mote_convert_row(src, (mote_format)99, dst, MOTE_FORMAT_RGBA8888, 2);
+    for (size_t i = 0; i < sizeof dst; i++)
+        TEST_ASSERT_EQUAL_HEX8(0xab, dst[i]);
 }
 
 /* max_file_bytes = SIZE_MAX means no limit: the file's one-past-the-limit
@@ -329,7 +347,8 @@ int main(void)
     RUN_TEST(a_frame_begun_twice_should_still_clear_what_the_last_one_drew);
     RUN_TEST(band_mode_should_clear_every_band_even_when_asked_to_keep);
     RUN_TEST(textures_with_bad_strides_should_draw_untextured);
-    RUN_TEST(queries_should_take_null_where_they_can);
+    RUN_TEST(null_pointers_should_fail_without_a_crash);
+    RUN_TEST(sizes_and_formats_no_device_has_should_give_nothing);
     RUN_TEST(a_file_limit_of_size_max_should_be_no_limit);
     return UNITY_END();
 }

@@ -456,7 +456,8 @@ typedef void (*mote_flush_fn)(void *user, int y0, int rows,
  * clipping, snapping and culling, in submission order, with its snapped
  * screen vertices (fixed point, subpixel_bits fraction), their depth z/w
  * clamped to [0, 1] as the rasteriser uses it, and clip w, in the original
- * winding. */
+ * winding. Band mode calls it again for each band a frame's draws are
+ * replayed in. */
 typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
                                       const int32_t y[3], const float z[3],
                                       const float w[3]);
@@ -560,14 +561,15 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh,
 /* Finishes the frame: rasterises binned tiles or renders the bands. */
 mote_result mote_end(mote_device *dev);
 
-/* Statistics of the current or last frame (all zero for a NULL device). */
+/* Statistics of the current or last frame (NULL for a NULL device). */
 const mote_stats *mote_device_stats(const mote_device *dev);
 
 /* Arena bytes one binned triangle needs at most (setup record and bin entry). */
 size_t mote_arena_bytes_per_triangle(void);
 
 /* Bytes a band-mode device needs for its buffers (colour + depth), so that
- * firmware can size static buffers: mote_band_bytes(320, 16, RGB565, 16). */
+ * firmware can size static buffers: mote_band_bytes(320, 16, RGB565, 16);
+ * 0 for a size no device can have (outside [1, MOTE_MAX_SIZE]). */
 size_t mote_band_bytes(int width, int band_height, mote_format color,
                        mote_depth_format depth);
 
@@ -577,7 +579,8 @@ size_t mote_band_bytes(int width, int band_height, mote_format color,
  * {0,0,0,0}. */
 mote_rgba mote_read_pixel(const mote_device *dev, int x, int y);
 
-/* Converts one row of pixels between formats (any to RGBA8888 or from it). */
+/* Converts one row of pixels between formats (any to RGBA8888 or from it);
+ * an unknown format converts nothing. */
 void mote_convert_row(const void *src, mote_format src_format,
                       void *dst, mote_format dst_format, int count);
 
@@ -591,8 +594,8 @@ void mote_camera_projection_matrix(const mote_camera *camera, float aspect,
 
 /* Projects a world-space point to screen pixels (x, y) and depth z with
  * the device's camera: z is 0 on the near plane, 1 on the far one, above
- * 1 beyond it. Returns false behind the near plane (or for a NULL device
- * or point); x, y and z may each be NULL. */
+ * 1 beyond it. Returns false behind the near plane, or for a NULL
+ * argument. */
 bool mote_project(const mote_device *dev, const float world_point[3],
                   float *x, float *y, float *z);
 

@@ -39,7 +39,8 @@ int mote_depth_format_bytes(mote_depth_format format)
 
 size_t mote_band_bytes(int width, int band_height, mote_format color, mote_depth_format depth)
 {
-    if (width <= 0 || band_height <= 0)
+    /* no device is larger: the product then fits a 32-bit size_t */
+    if (width <= 0 || band_height <= 0 || width > MOTE_MAX_SIZE || band_height > MOTE_MAX_SIZE)
         return 0;
     return (size_t)width * (size_t)band_height
          * (size_t)(mote_format_bytes(color) + mote_depth_format_bytes(depth));
@@ -54,7 +55,9 @@ mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc)
         d.depth_format = MOTE_DEPTH_FORMAT_32;
     if (d.color_stride == 0)
         d.color_stride = d.width * mote_format_bytes(d.color_format);
-    if (!(d.clear_depth > 0.0f && d.clear_depth <= 1.0f))   /* also NaN */
+    /* 0 < clear_depth <= 1 (not NaN) by its bits, which order as positive
+     * floats do (-0 and negatives have the sign bit): no soft-float calls */
+    if (mote__float_bits(d.clear_depth) - 1u >= 0x3f800000u)
         d.clear_depth = 1.0f;
     if (d.subpixel_bits == 0)
         d.subpixel_bits = 8;
@@ -81,14 +84,13 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
         return MOTE_ERR_INVALID_ARGUMENT;
     if (d.depth_format != MOTE_DEPTH_FORMAT_NONE && !d.depth)
         return MOTE_ERR_INVALID_ARGUMENT;
-    if (d.color_stride < d.width * mote_format_bytes(d.color_format)
-        || d.color_stride % mote_format_bytes(d.color_format) != 0)   /* rows stay aligned */
-        return MOTE_ERR_INVALID_ARGUMENT;
     /* pixels and depth values are stored as whole 16- and 32-bit words,
-     * which a core without unaligned access (Cortex-M0+) faults on */
-    if ((uintptr_t)d.color % (uintptr_t)mote_format_bytes(d.color_format) != 0
-        || (d.depth_format != MOTE_DEPTH_FORMAT_NONE
-            && (uintptr_t)d.depth % (d.depth_format == MOTE_DEPTH_FORMAT_16 ? 2u : 4u) != 0))
+     * which a core without unaligned access (Cortex-M0+) faults on: the
+     * buffers and the rows start at multiples of their size (1, 2 or 4) */
+    const int pixel_mask = mote_format_bytes(d.color_format) - 1;
+    const uintptr_t depth_bytes = (uintptr_t)mote_depth_format_bytes(d.depth_format);
+    if (d.color_stride < d.width * (pixel_mask + 1) || (d.color_stride & pixel_mask)
+        || ((uintptr_t)d.color & (uintptr_t)pixel_mask) || (depth_bytes && ((uintptr_t)d.depth & (depth_bytes - 1))))
         return MOTE_ERR_INVALID_ARGUMENT;
     if (d.subpixel_bits < 4 || d.subpixel_bits > 8 || d.band_height < 1)
         return MOTE_ERR_INVALID_ARGUMENT;
@@ -136,8 +138,7 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
 
 const mote_stats *mote_device_stats(const mote_device *dev)
 {
-    static const mote_stats none;   /* all zero, for no device */
-    return dev ? &dev->stats : &none;
+    return dev ? &dev->stats : NULL;
 }
 
 /* ---- targets and clearing ---------------------------------------------- */
@@ -197,8 +198,11 @@ void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect
         mote__fill_rows(row0 + (size_t)r.x0 * bpp, bpp, (size_t)w * bpp, (size_t)tg->stride, rows);
     }
     if (!dev->frame.keep_depth && d->depth_format != MOTE_DEPTH_FORMAT_NONE) {
+        /* clear_depth is in (0, 1]: fv is at most 2^24, which converts
+         * exactly; the clamp in integers costs a soft-float core no call */
         float fv = d->clear_depth * (float)MOTE__DEPTH_MAX + 0.5f;
-        uint32_t v = fv >= (float)MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : (uint32_t)fv;
+        uint32_t v = (uint32_t)fv;
+        v = v > MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : v;
         size_t off = (size_t)(r.y0 - tg->y0) * (size_t)d->width + (size_t)r.x0;
         size_t bytes = (size_t)mote_depth_format_bytes(d->depth_format);
         uint8_t *p;
@@ -269,7 +273,7 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     /* a frame begun again before its mote_end is abandoned, but the clear
      * it put off is owed: the marks of the tiles it was to clear are about
      * to be replaced */
-    if (dev->in_frame && dev->clear_pending)
+    if (MOTE_ENABLE_BINNING && dev->in_frame && dev->clear_pending)
         mote__clear_frame(dev);
     dev->frame = *frame;
     /* a band's buffer holds other rows between frames: nothing to keep */
@@ -459,6 +463,9 @@ void mote_convert_row(const void *src, mote_format src_format, void *dst, mote_f
         src_format = MOTE_FORMAT_RGBA8888;
     if (dst_format == MOTE_FORMAT_DEFAULT)
         dst_format = MOTE_FORMAT_RGBA8888;
+    /* an unknown format: no pixel has a size to convert */
+    if ((unsigned)src_format >= MOTE_FORMAT_COUNT || (unsigned)dst_format >= MOTE_FORMAT_COUNT)
+        return;
     for (int x = 0; x < count; x++) {
         uint8_t v[4];
         mote__read_rgb((const uint8_t *)src, x, src_format, v);

@@ -1068,9 +1068,9 @@ static bool mote__texture_ok(const mote_texture *t)
         return false;
     /* texels are read as whole 16- and 32-bit words (a core without
      * unaligned access faults on others), and rows must hold a row */
-    const int bpp = mote_format_bytes(t->format);
-    return (uintptr_t)t->pixels % (uintptr_t)bpp == 0
-        && (t->stride == 0 || (t->stride >= t->width * bpp && t->stride % bpp == 0));
+    const int bpp = mote_format_bytes(t->format);   /* 1, 2 or 4 */
+    return (((uintptr_t)t->pixels | (uintptr_t)t->stride) & (uintptr_t)(bpp - 1)) == 0
+        && (t->stride == 0 || t->stride >= t->width * bpp);
 }
 
 /* Whole-mesh rejection: the bounding sphere against the view frustum. For a

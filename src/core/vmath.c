@@ -263,19 +263,16 @@ void mote_camera_projection_matrix(const mote_camera *camera, float aspect, floa
 
 bool mote_project(const mote_device *dev, const float p[3], float *x, float *y, float *z)
 {
-    if (!dev || !p)
+    if (!dev || !p || !x || !y || !z)
         return false;
     float c[4];
     mote__mat4_point(dev->view_proj, p, c);
     if (!(c[3] > 0.0f) || c[2] < 0.0f)
         return false;
     float W = (float)dev->desc.width, H = (float)dev->desc.height;
-    if (x)
-        *x = (c[0] / c[3] + 1.0f) * 0.5f * W;
-    if (y)
-        *y = (1.0f - c[1] / c[3]) * 0.5f * H;
-    if (z)
-        *z = c[2] / c[3];
+    *x = (c[0] / c[3] + 1.0f) * 0.5f * W;
+    *y = (1.0f - c[1] / c[3]) * 0.5f * H;
+    *z = c[2] / c[3];
     return true;
 }
 
