@@ -465,6 +465,31 @@ void loader_should_draw_a_mesh_again_for_each_of_its_instances(void)
     mote_scene_free(&s);
 }
 
+/* materialUniqueId picks among materials sharing an id (glTF re-exports);
+ * when it matches nothing, materialId (last holder) is used; a multi-
+ * material is found by its uniqueId too. */
+void loader_should_resolve_material_unique_id_before_material_id(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"m\",\"uniqueId\":5,\"diffuse\":[1,0,0]},"
+                    "{\"id\":\"m\",\"uniqueId\":6,\"diffuse\":[0,1,0]},"
+                    "{\"id\":\"m\",\"uniqueId\":7,\"diffuse\":[0,0,1]}],"
+                    "\"multiMaterials\":[{\"id\":\"mm\",\"uniqueId\":9,\"materials\":[\"m\"]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m\",\"materialUniqueId\":5," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"m\",\"materialUniqueId\":6," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"m\",\"materialUniqueId\":42," TRI "},"
+                    "{\"id\":\"d\",\"materialUniqueId\":9," TRI "}]}";
+    mote_scene s;
+    load_json(j, "u", &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
+    static const uint8_t rgb[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {0, 0, 255}};
+    for (int k = 0; k < 4; k++) {
+        TEST_ASSERT_EQUAL_UINT8(rgb[k][0], s.meshes[k].material.color.r);
+        TEST_ASSERT_EQUAL_UINT8(rgb[k][1], s.meshes[k].material.color.g);
+        TEST_ASSERT_EQUAL_UINT8(rgb[k][2], s.meshes[k].material.color.b);
+    }
+    mote_scene_free(&s);
+}
+
 void loader_should_use_the_first_camera_without_an_active_one(void)
 {
     const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
@@ -756,6 +781,7 @@ int main(void)
     RUN_TEST(write_image_should_refuse_unknown_extensions_and_band_devices);
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
+    RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

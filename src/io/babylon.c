@@ -16,7 +16,10 @@
  * Decisions (tested in tests/test_loader_errors.c):
  * - A mesh with no vertex data loads as a 0-vertex mesh (it may be a
  *   parent); empty arrays are fine and give 0 triangles.
- * - Duplicate material ids: the first wins, with a warning.
+ * - Duplicate material (and multi-material) ids: the last wins, with a
+ *   warning, as Babylon.js resolves materialId with getLastMaterialById.
+ *   A mesh's materialUniqueId, when it matches a (multi-)material's
+ *   uniqueId, is used before its materialId (current Babylon.js files).
  * - A materialId (or multi-material slot) naming nothing: default white
  *   material, with a warning. A parentId naming nothing is an error.
  * - Materials and multi-materials count against limits.max_meshes too, and
@@ -76,12 +79,14 @@ static void *mote__store_alloc(mote__store *s, size_t count, size_t size)
 
 typedef struct mote__mat {
     const char *id;
+    const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
     mote_material material;
     signed char invert_y;         /* the texture's invertY: 0, 1, or -1 (not said) */
 } mote__mat;
 
 typedef struct mote__multi {
     const char *id;
+    const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
     int *slots;                   /* material index per slot, -1: default */
     int slot_count;
 } mote__multi;
@@ -97,6 +102,7 @@ typedef struct mote__node {
     const char *parent_id;        /* an id, or a uniqueId as text (parent_by_unique) */
     bool parent_by_unique;        /* parentId was a number: Babylon.js writes the parent's uniqueId */
     const char *material_id;
+    const char *material_unique_id; /* materialUniqueId as text, or NULL */
     char where[48];               /* "meshes[3]" or "transformNodes[0]" */
     int parent;                   /* node index, -1: none */
     int state;                    /* cycle search: 0 new, 1 on the path, 2 done */
@@ -123,7 +129,7 @@ typedef struct mote__geometry {
 } mote__geometry;
 
 /* An id -> index map: a count, then sorted (id, index) pairs; the first of
- * equal ids wins. */
+ * equal ids wins, or the last for mote__idmap_find_last. */
 typedef struct mote__idmap {
     const char *id;
     int index;
@@ -141,10 +147,10 @@ typedef struct mote__ld {
     const cJSON *root;
     mote__mat *mats;
     int mat_count;
-    mote__idmap *mat_map;
+    mote__idmap *mat_map, *mat_unique_map;
     mote__multi *multis;
     int multi_count;
-    mote__idmap *multi_map;
+    mote__idmap *multi_map, *multi_unique_map;
     mote__geometry *geometries;   /* geometries.vertexData */
     int geometry_count;
     mote__idmap *geometry_map;
@@ -428,20 +434,36 @@ static mote__idmap *mote__idmap_build(mote__ld *ld, const char *const *ids, size
     return head;
 }
 
-static int mote__idmap_find(const mote__idmap *m, const char *id)
+/* The first (last: false) or last holder of id, or -1. */
+static int mote__idmap_lookup(const mote__idmap *m, const char *id, bool last)
 {
     if (!m || !id)
         return -1;
-    int lo = 0, hi = m[0].index; /* m[0] holds the count */
+    int n = m[0].index, lo = 0, hi = n; /* m[0] holds the count */
     m++;
-    while (lo < hi) { /* first entry >= id */
+    while (lo < hi) { /* first entry > id (last) or >= id */
         int mid = lo + (hi - lo) / 2;
-        if (strcmp(m[mid].id, id) < 0)
+        int c = strcmp(m[mid].id, id);
+        if (c < 0 || (last && c == 0))
             lo = mid + 1;
         else
             hi = mid;
     }
-    return (lo < m[-1].index && strcmp(m[lo].id, id) == 0) ? m[lo].index : -1;
+    if (last)
+        lo--;
+    return (lo >= 0 && lo < n && strcmp(m[lo].id, id) == 0) ? m[lo].index : -1;
+}
+
+static int mote__idmap_find(const mote__idmap *m, const char *id)
+{
+    return mote__idmap_lookup(m, id, false);
+}
+
+/* Materials resolve as Babylon.js's scene.getLastMaterialById does: the
+ * last of equal ids. */
+static int mote__idmap_find_last(const mote__idmap *m, const char *id)
+{
+    return mote__idmap_lookup(m, id, true);
 }
 
 /* ---- textures ---------------------------------------------------------- */
@@ -604,22 +626,27 @@ static R mote__materials(mote__ld *ld)
             MOTE__TRY(mote__str(ld, m, "name", at, &mm->id));
         if (!mm->id)
             return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        MOTE__TRY(mote__number_text(ld, m, "uniqueId", at, &mm->unique_id));
         ld->mat_count = i + 1;
     }
-    int dup;
+    int dup, unused;
     ld->mat_map = mote__idmap_build(ld, &ld->mats[0].id, sizeof *ld->mats, ld->mat_count, &dup);
-    if (!ld->mat_map)
+    ld->mat_unique_map = mote__idmap_build(ld, &ld->mats[0].unique_id, sizeof *ld->mats,
+                                           ld->mat_count, &unused);
+    if (!ld->mat_map || !ld->mat_unique_map)
         return mote__oom(ld, "materials");
     if (dup >= 0)
-        mote__warn(ld, "materials[%d]: id \"%s\" is used before; the first one is kept", dup,
+        mote__warn(ld, "materials[%d]: id \"%s\" is used before; the last one is kept", dup,
                    mote__quote(ld->mats[dup].id).s);
     i = 0;
     for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
         char at[64];
         snprintf(at, sizeof at, "materials[%d]", i);
         mote__mat *mm = &ld->mats[i];
-        if (mote__idmap_find(ld->mat_map, mm->id) != i)
-            continue; /* a duplicate: never used, do not load its texture */
+        /* shadowed by a later one of the same id, and not reachable by a
+         * uniqueId: never used, so its texture is not loaded */
+        if (mote__idmap_find_last(ld->mat_map, mm->id) != i && !mm->unique_id)
+            continue;
         static const char *const color_keys[4] = {"diffuse", "diffuseColor", "albedo",
                                                   "albedoColor"};
         for (int k = 0; k < 4; k++) {
@@ -668,6 +695,7 @@ static R mote__multi_materials(mote__ld *ld)
         MOTE__TRY(mote__str(ld, m, "id", at, &mm->id));
         if (!mm->id)
             return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        MOTE__TRY(mote__number_text(ld, m, "uniqueId", at, &mm->unique_id));
         const cJSON *slots;
         MOTE__TRY(mote__arr(ld, m, "materials", at, &slots));
         size_t count = mote__array_len(slots);
@@ -687,20 +715,22 @@ static R mote__multi_materials(mote__ld *ld)
                 return mote__fail(ld, MOTE_ERR_PARSE,
                                   "%s.materials[%d]: expected a material id, found %s", at,
                                   k, mote__type_name(s));
-            mm->slots[k] = mote__idmap_find(ld->mat_map, s->valuestring);
+            mm->slots[k] = mote__idmap_find_last(ld->mat_map, s->valuestring);
             if (mm->slots[k] < 0)
                 mote__warn(ld, "%s.materials[%d]: \"%s\" names no material", at, k,
                            mote__quote(s->valuestring).s);
         }
         ld->multi_count = i + 1;
     }
-    int dup;
+    int dup, unused;
     ld->multi_map = mote__idmap_build(ld, &ld->multis[0].id, sizeof *ld->multis,
                                       ld->multi_count, &dup);
-    if (!ld->multi_map)
+    ld->multi_unique_map = mote__idmap_build(ld, &ld->multis[0].unique_id, sizeof *ld->multis,
+                                             ld->multi_count, &unused);
+    if (!ld->multi_map || !ld->multi_unique_map)
         return mote__oom(ld, "multiMaterials");
     if (dup >= 0)
-        mote__warn(ld, "multiMaterials[%d]: id \"%s\" is used before; the first one is kept",
+        mote__warn(ld, "multiMaterials[%d]: id \"%s\" is used before; the last one is kept",
                    dup, mote__quote(ld->multis[dup].id).s);
     return MOTE_OK;
 }
@@ -1063,6 +1093,7 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
 {
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
     MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
+    MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     const cJSON *verts, *pos;
     MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
@@ -1164,6 +1195,7 @@ static R mote__nodes(mote__ld *ld)
             snprintf(in->where, sizeof in->where, "meshes[%d].instances[%d]", i, k);
             MOTE__TRY(mote__node_common(ld, e, in->where, in));
             in->material_id = nd->material_id;
+            in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
             mote__share_arrays(in, nd);
             in->subs = nd->subs;
@@ -1234,21 +1266,34 @@ static R mote__parents(mote__ld *ld)
     return MOTE_OK;
 }
 
-/* The material of one sub-mesh: a material, a multi-material slot, or the
- * default (white) with a warning when the id names nothing. */
-/* The material of a (sub-)mesh, or NULL for the default one. */
+/* The material of a (sub-)mesh: a material, a multi-material slot, or NULL
+ * for the default (white) one, with a warning when nothing is named.
+ * materialUniqueId comes first, as in Babylon.js (materials re-exported from
+ * glTF often share an id); when it matches nothing, materialId is tried.
+ * Either resolves to the last holder, as getLastMaterialById does. */
 static const mote__mat *mote__resolve_material(mote__ld *ld, const mote__node *nd,
                                                uint32_t material_index)
 {
-    if (!nd->material_id)
-        return NULL;
-    int m = mote__idmap_find(ld->mat_map, nd->material_id);
+    int m = -1, mm = -1;
+    if (nd->material_unique_id) {
+        m = mote__idmap_find_last(ld->mat_unique_map, nd->material_unique_id);
+        if (m < 0)
+            mm = mote__idmap_find_last(ld->multi_unique_map, nd->material_unique_id);
+    }
+    if (m < 0 && mm < 0 && nd->material_id) {
+        m = mote__idmap_find_last(ld->mat_map, nd->material_id);
+        if (m < 0)
+            mm = mote__idmap_find_last(ld->multi_map, nd->material_id);
+    }
     if (m >= 0)
         return &ld->mats[m];
-    int mm = mote__idmap_find(ld->multi_map, nd->material_id);
     if (mm < 0) {
-        mote__warn(ld, "%s.materialId: \"%s\" names no material", nd->where,
-                   mote__quote(nd->material_id).s);
+        if (nd->material_id)
+            mote__warn(ld, "%s.materialId: \"%s\" names no material", nd->where,
+                       mote__quote(nd->material_id).s);
+        else if (nd->material_unique_id)
+            mote__warn(ld, "%s.materialUniqueId: %s is the uniqueId of no material",
+                       nd->where, nd->material_unique_id);
         return NULL;
     }
     const mote__multi *multi = &ld->multis[mm];
