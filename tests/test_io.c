@@ -490,6 +490,31 @@ void loader_should_resolve_material_unique_id_before_material_id(void)
     mote_scene_free(&s);
 }
 
+/* An image embedded as a base64 data: URL, in base64String (SceneSerializer,
+ * whose "name" is no file) or in name itself: decoded, loaded once for the
+ * two materials carrying the same text, rows as in the PNG. */
+void loader_should_decode_textures_embedded_as_base64_data_urls(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK,
+                              mote_scene_load(MOTE_SOURCE_DIR "/tests/data/bad/texture_embedded.babylon",
+                                              NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[0].material.texture);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[1].material.texture);
+    const mote_texture *t = &s.textures[0];
+    TEST_ASSERT_EQUAL(2, t->width);
+    TEST_ASSERT_EQUAL(2, t->height);
+    /* red, green / blue, white */
+    static const uint8_t want[16] = {255, 0, 0, 255, 0, 255, 0, 255,
+                                     0, 0, 255, 255, 255, 255, 255, 255};
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(want, t->pixels, 16);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 void loader_should_use_the_first_camera_without_an_active_one(void)
 {
     const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
@@ -782,6 +807,7 @@ int main(void)
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
+    RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

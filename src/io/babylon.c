@@ -158,7 +158,7 @@ typedef struct mote__ld {
     int node_count;
     mote__idmap *node_map;
     int texture_cap;
-    char **texture_paths;         /* resolved path of scene->textures[i] */
+    const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
 } mote__ld;
 
 typedef mote_result R;
@@ -493,14 +493,53 @@ static bool mote__path_escapes(const char *name, const char **why)
     return false;
 }
 
-/* Loads (once per resolved path) the texture a material names. */
+/* The texture at path (a file, or with embedded a data: URL), loaded once
+ * however many materials name it; key names the JSON member in messages. */
+static R mote__texture_found(mote__ld *ld, const char *at, const char *key, const char *path,
+                             bool embedded, mote_material *m)
+{
+    mote_scene *sc = ld->scene;
+    for (int i = 0; i < sc->texture_count; i++)
+        if (strcmp(ld->texture_paths[i], path) == 0) {
+            m->texture = &sc->textures[i];
+            return MOTE_OK;
+        }
+    if (sc->texture_count >= ld->texture_cap)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: too many textures", at);
+    char why[256];
+    mote_texture *t = &sc->textures[sc->texture_count];
+    R r = embedded
+              ? mote__io_texture_load_data_url(path, &ld->lim, t, why, sizeof why)
+              : mote_texture_load(path, &ld->lim, t, why, sizeof why);
+    if (r == MOTE_ERR_OUT_OF_MEMORY)
+        return mote__fail(ld, r, "%s.%s: %s", at, key, why);
+    if (r != MOTE_OK) {
+        if (ld->lim.missing_texture_is_warning) {
+            mote__warn(ld, "%s: %s (drawn untextured)", at, why);
+            return MOTE_OK;
+        }
+        return mote__fail(ld, r, "%s.%s: %s", at, key, why);
+    }
+    ld->texture_paths[sc->texture_count++] = path;
+    m->texture = t;
+    return MOTE_OK;
+}
+
+/* Loads (once per resolved path) the texture a material names: a file in
+ * the scene's folder, or an image embedded as a base64 data: URL, in
+ * "base64String" (Babylon.js's SceneSerializer; "name" is then no file) or
+ * in "name" itself. */
 static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
                                 mote_material *m, signed char *invert_y)
 {
     MOTE__TRY(mote__obj_at(ld, tex, at));
-    const char *name;
+    const char *name, *embedded;
     MOTE__TRY(mote__str(ld, tex, "name", at, &name));
-    if (!name)
+    MOTE__TRY(mote__str(ld, tex, "base64String", at, &embedded));
+    const char *key = embedded ? "base64String" : "name";
+    if (!embedded && name && mote__io_is_data_url(name))
+        embedded = name;
+    if (!name && !embedded)
         return mote__fail(ld, MOTE_ERR_PARSE, "%s.name: expected a string (the image file)",
                           at);
     m->u_scale = 1.0f;
@@ -532,6 +571,10 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
         else
             m->wrap_v = mode;
     }
+    if (!ld->base_dir)
+        return MOTE_OK; /* colours only (embedded images too, as documented) */
+    if (embedded)
+        return mote__texture_found(ld, at, key, embedded, true, m);
     mote__q qn = mote__quote(name);
     if (!ld->lim.allow_any_texture_path) {
         const char *why = "";
@@ -541,8 +584,6 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
                               "folder; see limits.allow_any_texture_path)",
                               at, qn.s, why);
     }
-    if (!ld->base_dir)
-        return MOTE_OK; /* colours only */
     bool absolute = name[0] == '/' || name[0] == '\\';
     size_t blen = strlen(ld->base_dir), nlen = strlen(name);
     char *path = mote__store_alloc(&ld->tmp, blen + nlen + 2, 1);
@@ -560,29 +601,7 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
         if (*c == '\\')
             *c = '/'; /* exporters on Windows write folder\\image.png */
 #endif
-    mote_scene *sc = ld->scene;
-    for (int i = 0; i < sc->texture_count; i++)
-        if (strcmp(ld->texture_paths[i], path) == 0) {
-            m->texture = &sc->textures[i];
-            return MOTE_OK;
-        }
-    if (sc->texture_count >= ld->texture_cap)
-        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: too many textures", at);
-    char why[256];
-    mote_texture *t = &sc->textures[sc->texture_count];
-    R r = mote_texture_load(path, &ld->lim, t, why, sizeof why);
-    if (r == MOTE_ERR_OUT_OF_MEMORY)
-        return mote__fail(ld, r, "%s.name: %s", at, why);
-    if (r != MOTE_OK) {
-        if (ld->lim.missing_texture_is_warning) {
-            mote__warn(ld, "%s: %s (drawn untextured)", at, why);
-            return MOTE_OK;
-        }
-        return mote__fail(ld, r, "%s.name: %s", at, why);
-    }
-    ld->texture_paths[sc->texture_count++] = path;
-    m->texture = t;
-    return MOTE_OK;
+    return mote__texture_found(ld, at, key, path, false, m);
 }
 
 /* ---- materials --------------------------------------------------------- */
