@@ -71,6 +71,22 @@ static void load_json(const char *json, const char *name, mote_scene *s)
                                                               msg, sizeof msg), msg);
 }
 
+/* A size x size RGBA device without depth, its frame begun, the camera at
+ * z = -3 looking at the origin. */
+static void begin_small_frame(mote_device *dev, uint8_t *color, int size)
+{
+    mote_device_desc dd;
+    memset(&dd, 0, sizeof dd);
+    dd.width = dd.height = size;
+    dd.color = color;
+    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(dev, &dd));
+    mote_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.camera.position[2] = -3.0f;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(dev, &f));
+}
+
 /* one triangle's geometry, for scenes written inline */
 #define TRI "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]"
 
@@ -339,16 +355,7 @@ void loader_should_hide_invisible_and_disabled_meshes(void)
     /* mote_draw skips a hidden mesh */
     static uint8_t color[8 * 8 * 4];
     mote_device dev;
-    mote_device_desc dd;
-    memset(&dd, 0, sizeof dd);
-    dd.width = dd.height = 8;
-    dd.color = color;
-    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &dd));
-    mote_frame_desc f;
-    memset(&f, 0, sizeof f);
-    f.camera.position[2] = -3.0f;
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    begin_small_frame(&dev, color, 8);
     TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[2], NULL));
     TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
     TEST_ASSERT_EQUAL_UINT32(0, mote_device_stats(&dev)->draws);
@@ -513,6 +520,47 @@ void loader_should_decode_textures_embedded_as_base64_data_urls(void)
     TEST_ASSERT_EQUAL_UINT8_ARRAY(want, t->pixels, 16);
     mote_scene_free(&s);
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* backFaceCulling false: both sides drawn. The flag is per mesh (sub-meshes
+ * of a multi-material each get their slot's), applied by
+ * mote_scene_draw_desc; the same triangle is drawn facing and turned away,
+ * so exactly one of each pair is a back face. */
+void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"two\",\"backFaceCulling\":false},"
+                    "{\"id\":\"one\",\"backFaceCulling\":true}],"
+                    "\"multiMaterials\":[{\"id\":\"mm\",\"materials\":[\"one\",\"two\"]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"two\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"two\",\"rotation\":[0,3.14159265,0]," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"one\"," TRI "},"
+                    "{\"id\":\"d\",\"materialId\":\"one\",\"rotation\":[0,3.14159265,0]," TRI "},"
+                    "{\"id\":\"e\",\"materialId\":\"mm\"," TRI ","
+                    "\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3},"
+                    "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]}]}";
+    mote_scene s;
+    load_json(j, "b", &s);
+    TEST_ASSERT_EQUAL(6, s.mesh_count);
+    static const bool want[6] = {true, true, false, false, false, true};
+    for (int k = 0; k < 6; k++)
+        TEST_ASSERT_EQUAL(want[k], s.two_sided[k]);
+    mote_draw_desc base = {0}, d;
+    base.mode = MOTE_MODE_FLAT;
+    mote_scene_draw_desc(&s, 0, &base, &d);
+    TEST_ASSERT_EQUAL(MOTE_CULL_NONE, d.cull);
+    TEST_ASSERT_EQUAL(MOTE_MODE_FLAT, d.mode);
+    mote_scene_draw_desc(&s, 2, &base, &d);
+    TEST_ASSERT_EQUAL(MOTE_CULL_DEFAULT, d.cull);
+    static uint8_t color[16 * 16 * 4];
+    mote_device dev;
+    begin_small_frame(&dev, color, 16);
+    for (int k = 0; k < 4; k++) {
+        mote_scene_draw_desc(&s, k, NULL, &d);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[k], &d));
+    }
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_EQUAL_UINT32(1, mote_device_stats(&dev)->triangles_backface);
+    mote_scene_free(&s);
 }
 
 void loader_should_use_the_first_camera_without_an_active_one(void)
@@ -808,6 +856,7 @@ int main(void)
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
+    RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

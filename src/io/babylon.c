@@ -82,6 +82,7 @@ typedef struct mote__mat {
     const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
     mote_material material;
     signed char invert_y;         /* the texture's invertY: 0, 1, or -1 (not said) */
+    bool two_sided;               /* backFaceCulling false */
 } mote__mat;
 
 typedef struct mote__multi {
@@ -666,6 +667,9 @@ static R mote__materials(mote__ld *ld)
          * uniqueId: never used, so its texture is not loaded */
         if (mote__idmap_find_last(ld->mat_map, mm->id) != i && !mm->unique_id)
             continue;
+        bool cull_back = true;
+        MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
+        mm->two_sided = !cull_back;
         static const char *const color_keys[4] = {"diffuse", "diffuseColor", "albedo",
                                                   "albedoColor"};
         for (int k = 0; k < 4; k++) {
@@ -1355,6 +1359,11 @@ static R mote__build_meshes(mote__ld *ld)
     if (!sc->meshes)
         return mote__oom(ld, "meshes");
     sc->mesh_count = (int)total;
+    /* a byte per mesh, so that mote_scene_draw_desc needs no search */
+    bool *two_sided = mote__store_alloc(ld->keep, total, sizeof *two_sided);
+    if (!two_sided)
+        return mote__oom(ld, "meshes");
+    sc->two_sided = two_sided;
     for (int i = 0; i < ld->node_count; i++) {
         const mote__node *nd = &ld->nodes[i];
         for (int s = 0; s < nd->mesh_count; s++) {
@@ -1377,8 +1386,10 @@ static R mote__build_meshes(mote__ld *ld)
             memcpy(m->scaling, nd->scaling, sizeof m->scaling);
             m->parent = nd->parent >= 0 ? &sc->meshes[ld->nodes[nd->parent].first_mesh] : NULL;
             const mote__mat *mat = mote__resolve_material(ld, nd, material_index);
-            if (mat)
+            if (mat) {
                 m->material = mat->material;
+                two_sided[nd->first_mesh + s] = mat->two_sided;
+            }
             /* v = 0: the bottom row when the texture says invertY (what
              * Babylon.js does by default, and current exporters rely on),
              * the top row when it says not; unsaid, legacy files (the
@@ -1741,6 +1752,22 @@ mote_result mote_scene_load(const char *path, const mote_limits *limits, mote_sc
 }
 
 /* ---- framing ----------------------------------------------------------- */
+
+void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_desc *base,
+                          mote_draw_desc *out)
+{
+    if (!out)
+        return;
+    if (base)
+        *out = *base;
+    else
+        memset(out, 0, sizeof *out);
+    /* Babylon.js draws both sides of a mesh whose material says
+     * backFaceCulling false: no culling, whatever the caller asked */
+    if (scene && scene->two_sided && mesh >= 0 && mesh < scene->mesh_count &&
+        scene->two_sided[mesh])
+        out->cull = MOTE_CULL_NONE;
+}
 
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame)
 {
