@@ -563,6 +563,36 @@ void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
     mote_scene_free(&s);
 }
 
+/* A texture with coordinatesIndex 1 samples uvs2: the meshes drawn with it
+ * get vertices whose uv is uvs2 (current layout, legacy uvCount 2, shared
+ * by an instance); a mesh with another material keeps its own uvs; a mesh
+ * without uvs2 keeps uvs, with a warning. */
+void loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK,
+                              mote_scene_load(MOTE_SOURCE_DIR "/tests/data/bad/texture_uv2.babylon",
+                                              NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_NOT_NULL(strstr(s.warning, "meshes[3]: its texture samples uvs2"));
+    TEST_ASSERT_EQUAL(5, s.mesh_count); /* cur, leg, other, none, cur's instance */
+    static const float cur[6] = {0, 0, 1, 0, 0, 1}, leg[6] = {0.25f, 0.75f, 0.5f, 0.5f,
+                                                              0.75f, 0.25f};
+    for (int v = 0; v < 3; v++) {
+        TEST_ASSERT_EQUAL_FLOAT(cur[2 * v], s.meshes[0].vertices[v].uv[0]);
+        TEST_ASSERT_EQUAL_FLOAT(cur[2 * v + 1], s.meshes[0].vertices[v].uv[1]);
+        TEST_ASSERT_EQUAL_FLOAT(leg[2 * v], s.meshes[1].vertices[v].uv[0]);
+        TEST_ASSERT_EQUAL_FLOAT(leg[2 * v + 1], s.meshes[1].vertices[v].uv[1]);
+        TEST_ASSERT_EQUAL_FLOAT(0.9f, s.meshes[2].vertices[v].uv[0]);
+        TEST_ASSERT_EQUAL_FLOAT(0.5f, s.meshes[3].vertices[v].uv[0]);
+    }
+    /* positions and normals come along; the instance shares the copy */
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.meshes[0].vertices[1].position[0]);
+    TEST_ASSERT_EQUAL_FLOAT(-1.0f, s.meshes[1].vertices[2].normal[2]);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[4].vertices);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 void loader_should_use_the_first_camera_without_an_active_one(void)
 {
     const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
@@ -857,6 +887,7 @@ int main(void)
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
+    RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

@@ -83,6 +83,7 @@ typedef struct mote__mat {
     mote_material material;
     signed char invert_y;         /* the texture's invertY: 0, 1, or -1 (not said) */
     bool two_sided;               /* backFaceCulling false */
+    bool uv2;                     /* the texture's coordinatesIndex is 1: it samples uvs2 */
 } mote__mat;
 
 typedef struct mote__multi {
@@ -114,6 +115,15 @@ typedef struct mote__node {
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     mote_vertex *verts;
     uint32_t nv;
+    /* uvs2, 2 floats per vertex, in the temporary store; read only when a
+     * material of the file samples them (mote__ld.any_uv2) */
+    float *uv2;
+    /* verts with uv2 in place of uv, made (once, kept) for the first
+     * (sub-)mesh drawn with a material that samples uvs2: the core has one
+     * uv per vertex, so such meshes need their own copy; meshes without
+     * such a material pay nothing */
+    mote_vertex *verts2;
+    struct mote__node *arrays;    /* the node whose arrays this one shares, or NULL */
     mote_rgba *colors;            /* one per vertex, or NULL */
     uint32_t *idx;
     uint32_t ni;
@@ -158,6 +168,7 @@ typedef struct mote__ld {
     mote__node *nodes;
     int node_count;
     mote__idmap *node_map;
+    bool any_uv2;                 /* a material samples uvs2: keep them while loading */
     int texture_cap;
     const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
 } mote__ld;
@@ -333,6 +344,18 @@ static R mote__flag(mote__ld *ld, const cJSON *obj, const char *key, const char 
     MOTE__TRY(mote__to_float(ld, v, at, &f));
     *out = f != 0.0f;
     return MOTE_OK;
+}
+
+/* key -> a whole number in [0, hi]; absent keeps *out. */
+static R mote__uint_member(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                           uint32_t hi, uint32_t *out)
+{
+    const cJSON *v = mote__get(obj, key);
+    if (!v)
+        return MOTE_OK;
+    char at[160];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    return mote__to_uint(ld, v, at, 0, hi, out);
 }
 
 /* key -> string or NULL; anything else is an error. */
@@ -531,8 +554,9 @@ static R mote__texture_found(mote__ld *ld, const char *at, const char *key, cons
  * "base64String" (Babylon.js's SceneSerializer; "name" is then no file) or
  * in "name" itself. */
 static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
-                                mote_material *m, signed char *invert_y)
+                                mote__mat *mm)
 {
+    mote_material *m = &mm->material;
     MOTE__TRY(mote__obj_at(ld, tex, at));
     const char *name, *embedded;
     MOTE__TRY(mote__str(ld, tex, "name", at, &name));
@@ -552,7 +576,18 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
     if (mote__get(tex, "invertY")) {
         bool inv = true;
         MOTE__TRY(mote__flag(ld, tex, "invertY", at, &inv));
-        *invert_y = inv;
+        mm->invert_y = inv;
+    }
+    /* which uv set the texture samples: uvs (0) or uvs2 (1); Babylon.js
+     * has more (uvs3...), which mote does not read */
+    uint32_t ci = 0;
+    MOTE__TRY(mote__uint_member(ld, tex, "coordinatesIndex", at, 5, &ci));
+    if (ci) {
+        if (ci > 1)
+            mote__warn(ld, "%s.coordinatesIndex: %u: only uvs and uvs2 are read; uvs are used",
+                       at, (unsigned)ci);
+        mm->uv2 = ci == 1;
+        ld->any_uv2 = ld->any_uv2 || mm->uv2;
     }
     static const char *const wrap_keys[2] = {"wrapU", "wrapV"};
     for (int k = 0; k < 2; k++) {
@@ -691,7 +726,7 @@ static R mote__materials(mote__ld *ld)
                 continue;
             char at2[96];
             snprintf(at2, sizeof at2, "%s.%s", at, tex_keys[k]);
-            MOTE__TRY(mote__material_texture(ld, t, at2, &mm->material, &mm->invert_y));
+            MOTE__TRY(mote__material_texture(ld, t, at2, mm));
             break;
         }
     }
@@ -760,7 +795,7 @@ static R mote__multi_materials(mote__ld *ld)
 
 /* ---- geometry ---------------------------------------------------------- */
 
-enum { MOTE__POS, MOTE__NRM, MOTE__UV, MOTE__LEGACY };
+enum { MOTE__POS, MOTE__NRM, MOTE__UV, MOTE__UV2, MOTE__LEGACY };
 
 /* Element k of the array at `at` as a float; the place is spelled out only
  * for an error, as vertex arrays are long. */
@@ -776,9 +811,11 @@ static R mote__element_float(mote__ld *ld, const cJSON *e, const char *at, size_
     return MOTE_OK;
 }
 
-static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex *v,
+/* Fills nd->verts (and nd->uv2 when it is there) from arr. */
+static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote__node *nd,
                     int what, size_t stride)
 {
+    mote_vertex *v = nd->verts;
     size_t k = 0;
     for (const cJSON *e = arr->child; e; e = e->next, k++) {
         float f;
@@ -789,6 +826,7 @@ static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex 
         case MOTE__POS: vx->position[c] = f; break;
         case MOTE__NRM: vx->normal[c] = f; break;
         case MOTE__UV: vx->uv[c] = f; break;
+        case MOTE__UV2: nd->uv2[k] = f; break;
         default:
             if (c < 3)
                 vx->position[c] = f;
@@ -796,7 +834,9 @@ static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex 
                 vx->normal[c - 3] = f;
             else if (c < 8)
                 vx->uv[c - 6] = f;
-            break; /* uv2 is checked, not kept */
+            else if (nd->uv2)
+                nd->uv2[k / stride * 2 + c - 8] = f;
+            break; /* uv2 is checked, and kept only when a material needs it */
         }
     }
     return MOTE_OK;
@@ -905,12 +945,9 @@ static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *ver
         MOTE__TRY(mote__indices(ld, ind, iat, nd, &max_index));
     size_t len = mote__array_len(verts);
     size_t stride = 0;
-    const cJSON *uvc = mote__get(mesh, "uvCount");
-    if (uvc) {
-        char uat[96];
-        snprintf(uat, sizeof uat, "%s.uvCount", where);
-        uint32_t u;
-        MOTE__TRY(mote__to_uint(ld, uvc, uat, 0, 2, &u));
+    uint32_t u = 0;
+    if (mote__get(mesh, "uvCount")) {
+        MOTE__TRY(mote__uint_member(ld, mesh, "uvCount", where, 2, &u));
         stride = 6 + 2 * (size_t)u;
         if (len % stride)
             return mote__fail(ld, MOTE_ERR_RANGE,
@@ -933,7 +970,12 @@ static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *ver
                               len, fits ? "more than one" : "no");
     }
     MOTE__TRY(mote__alloc_vertices(ld, at, len / stride, nd));
-    MOTE__TRY(mote__fill(ld, verts, at, nd->verts, MOTE__LEGACY, stride));
+    if (stride == 10 && ld->any_uv2) {
+        nd->uv2 = mote__store_alloc(&ld->tmp, nd->nv, 2 * sizeof *nd->uv2);
+        if (!nd->uv2)
+            return mote__oom(ld, at);
+    }
+    MOTE__TRY(mote__fill(ld, verts, at, nd, MOTE__LEGACY, stride));
     nd->legacy = true;
     return mote__check_indices(ld, iat, nd);
 }
@@ -967,8 +1009,10 @@ static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node
 /* The current layout, from the mesh itself or from a geometries.vertexData
  * entry (src, named src_where in messages). */
 /* Gives to the vertex and index arrays of from: shared, not copied. */
-static void mote__share_arrays(mote__node *to, const mote__node *from)
+static void mote__share_arrays(mote__node *to, mote__node *from)
 {
+    to->arrays = from->arrays ? from->arrays : from;
+    to->uv2 = from->uv2;
     to->verts = from->verts;
     to->nv = from->nv;
     to->colors = from->colors;
@@ -976,13 +1020,36 @@ static void mote__share_arrays(mote__node *to, const mote__node *from)
     to->ni = from->ni;
 }
 
+/* arr (where.key): `per` floats for each of nd's vertices, into the part
+ * `what` says (uvs2 get their temporary array here). */
+static R mote__per_vertex(mote__ld *ld, const cJSON *arr, const char *where, const char *key,
+                          size_t per, int what, mote__node *nd)
+{
+    char at[96];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    size_t n = mote__array_len(arr), nv = nd->nv;
+    if (n != nv * per)
+        return mote__fail(ld, MOTE_ERR_RANGE,
+                          "%s: %zu floats, expected %zu per vertex (%zu vertices)", at, n, per,
+                          nv);
+    if (what == MOTE__UV2) {
+        nd->uv2 = mote__store_alloc(&ld->tmp, nv, 2 * sizeof *nd->uv2);
+        if (!nd->uv2)
+            return mote__oom(ld, at);
+        per = 1;                  /* a flat array */
+    }
+    return mote__fill(ld, arr, at, nd, what, per);
+}
+
 static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *where,
                                 mote__node *nd)
 {
-    const cJSON *pos, *nrm, *uvs, *colors, *ind;
+    const cJSON *pos, *nrm, *uvs, *uvs2 = NULL, *colors, *ind;
     MOTE__TRY(mote__arr(ld, src, "positions", where, &pos));
     MOTE__TRY(mote__arr(ld, src, "normals", where, &nrm));
     MOTE__TRY(mote__arr(ld, src, "uvs", where, &uvs));
+    if (ld->any_uv2)
+        MOTE__TRY(mote__arr(ld, src, "uvs2", where, &uvs2));
     MOTE__TRY(mote__arr(ld, src, "colors", where, &colors));
     MOTE__TRY(mote__arr(ld, src, "indices", where, &ind));
     char at[96], iat[96];
@@ -998,25 +1065,13 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
     size_t nv = len / 3;
     MOTE__TRY(mote__alloc_vertices(ld, at, nv, nd));
     if (pos)
-        MOTE__TRY(mote__fill(ld, pos, at, nd->verts, MOTE__POS, 3));
-    if (nrm) {
-        snprintf(at, sizeof at, "%s.normals", where);
-        size_t n = mote__array_len(nrm);
-        if (n != nv * 3)
-            return mote__fail(ld, MOTE_ERR_RANGE,
-                              "%s: %zu floats, expected 3 per vertex (%zu vertices)", at, n,
-                              nv);
-        MOTE__TRY(mote__fill(ld, nrm, at, nd->verts, MOTE__NRM, 3));
-    }
-    if (uvs) {
-        snprintf(at, sizeof at, "%s.uvs", where);
-        size_t n = mote__array_len(uvs);
-        if (n != nv * 2)
-            return mote__fail(ld, MOTE_ERR_RANGE,
-                              "%s: %zu floats, expected 2 per vertex (%zu vertices)", at, n,
-                              nv);
-        MOTE__TRY(mote__fill(ld, uvs, at, nd->verts, MOTE__UV, 2));
-    }
+        MOTE__TRY(mote__fill(ld, pos, at, nd, MOTE__POS, 3));
+    if (nrm)
+        MOTE__TRY(mote__per_vertex(ld, nrm, where, "normals", 3, MOTE__NRM, nd));
+    if (uvs)
+        MOTE__TRY(mote__per_vertex(ld, uvs, where, "uvs", 2, MOTE__UV, nd));
+    if (uvs2)
+        MOTE__TRY(mote__per_vertex(ld, uvs2, where, "uvs2", 2, MOTE__UV2, nd));
     if (colors) {
         snprintf(at, sizeof at, "%s.colors", where);
         MOTE__TRY(mote__colors(ld, colors, at, nd));
@@ -1341,6 +1396,31 @@ static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
     return false;
 }
 
+/* Points m (of node nd) at vertices whose uv is uvs2, made once per
+ * shared vertex array; without uvs2, m keeps uvs (warned). */
+static R mote__uv2_vertices(mote__ld *ld, mote__node *nd, mote_mesh *m)
+{
+    mote__node *owner = nd->arrays ? nd->arrays : nd;
+    if (!owner->uv2) {
+        if (owner->nv)
+            mote__warn(ld, "%s: its texture samples uvs2 (coordinatesIndex 1), which the "
+                       "mesh lacks; uvs are used", nd->where);
+        return MOTE_OK;
+    }
+    if (!owner->verts2) {
+        owner->verts2 = mote__store_alloc(ld->keep, owner->nv, sizeof *owner->verts2);
+        if (!owner->verts2)
+            return mote__oom(ld, nd->where);
+        for (uint32_t i = 0; i < owner->nv; i++) {
+            owner->verts2[i] = owner->verts[i];
+            owner->verts2[i].uv[0] = owner->uv2[2 * i];
+            owner->verts2[i].uv[1] = owner->uv2[2 * i + 1];
+        }
+    }
+    m->vertices = owner->verts2;
+    return MOTE_OK;
+}
+
 static R mote__build_meshes(mote__ld *ld)
 {
     size_t total = 0;
@@ -1365,7 +1445,7 @@ static R mote__build_meshes(mote__ld *ld)
         return mote__oom(ld, "meshes");
     sc->two_sided = two_sided;
     for (int i = 0; i < ld->node_count; i++) {
-        const mote__node *nd = &ld->nodes[i];
+        mote__node *nd = &ld->nodes[i];
         for (int s = 0; s < nd->mesh_count; s++) {
             mote_mesh *m = &sc->meshes[nd->first_mesh + s];
             m->vertices = nd->verts;
@@ -1389,6 +1469,8 @@ static R mote__build_meshes(mote__ld *ld)
             if (mat) {
                 m->material = mat->material;
                 two_sided[nd->first_mesh + s] = mat->two_sided;
+                if (mat->uv2)
+                    MOTE__TRY(mote__uv2_vertices(ld, nd, m));
             }
             /* v = 0: the bottom row when the texture says invertY (what
              * Babylon.js does by default, and current exporters rely on),
