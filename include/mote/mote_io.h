@@ -81,7 +81,11 @@ typedef struct mote_scene {
  * (current Babylon.js); a texture's invertY says whether v = 0 is its
  * bottom row (unsaid: the bottom row, but the top one in legacy files).
  * A mesh's instances become meshes of their own after the file's meshes
- * and transform nodes, sharing its arrays and material. */
+ * and transform nodes, sharing its arrays and material. Materials resolve
+ * by materialUniqueId, then materialId (the last of equal ids); a texture
+ * with coordinatesIndex 1 samples uvs2; backFaceCulling false fills
+ * two_sided; images may be embedded as base64 data: URLs (base64String,
+ * or name). */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures

@@ -6,6 +6,11 @@
  * Babylon.js serialises no switch for vertex colours (`useVertexColors` is
  * a run-time property of its meshes, not written to files), so `colors` are
  * always used; `hasVertexAlpha` is not read, as mote ignores alpha.
+ * Materials: diffuse/albedo colour and texture, backFaceCulling (kept per
+ * mesh in mote_scene.two_sided: the core's culling is a draw option), and
+ * the texture's coordinatesIndex (1: uvs2, read only when a material asks
+ * for it). Textures are files in the scene's folder, or base64 data: URLs
+ * (base64String, or name) decoded in texture.c.
  *
  * Every value is checked before it is used: types, finite floats, index
  * ranges, counts against the limits before anything is allocated. Errors
@@ -25,6 +30,10 @@
  * - Materials and multi-materials count against limits.max_meshes too, and
  *   so do transform nodes and instances.
  * - Meshes naming one geometryId, and a mesh's instances, share its arrays.
+ * - A mesh drawn with a coordinatesIndex 1 texture but without uvs2 keeps
+ *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
+ * - With no base_dir (mote_scene_load_memory), embedded images are not
+ *   loaded either: no textures at all, as documented.
  */
 #include "io_internal.h"
 
