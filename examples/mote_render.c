@@ -294,13 +294,18 @@ static void pose_meshes(const mote_scene *scene, mote_mesh *out, const float rot
     }
 }
 
+/* meshes: the scene's, posed (same order, so the scene's per-mesh draw
+ * options still apply) */
 static mote_result render_frame(mote_device *dev, const mote_frame_desc *frame,
-                                const mote_mesh *meshes, int count,
+                                const mote_scene *scene, const mote_mesh *meshes,
                                 const mote_draw_desc *draw)
 {
     mote_result r = mote_begin(dev, frame);
-    for (int i = 0; i < count && r == MOTE_OK; i++)
-        r = mote_draw(dev, &meshes[i], draw);
+    for (int i = 0; i < scene->mesh_count && r == MOTE_OK; i++) {
+        mote_draw_desc d;
+        mote_scene_draw_desc(scene, i, draw, &d);
+        r = mote_draw(dev, &meshes[i], &d);
+    }
     mote_result e = mote_end(dev);
     return r != MOTE_OK ? r : e;
 }
@@ -397,7 +402,7 @@ int main(int argc, char **argv)
             /* frame 0 warms caches and pages the arena in; it is not timed */
             pose_meshes(&scene, posed, o.rotate, spin * (float)f);
             double t0 = now_ms();
-            r = render_frame(&dev, &frame, posed, scene.mesh_count, &o.draw);
+            r = render_frame(&dev, &frame, &scene, posed, &o.draw);
             times[f] = now_ms() - t0;
         }
         if (r == MOTE_OK) {
@@ -410,7 +415,7 @@ int main(int argc, char **argv)
     }
     if (r == MOTE_OK) {
         pose_meshes(&scene, posed, o.rotate, 0.0f);
-        r = render_frame(&dev, &frame, posed, scene.mesh_count, &o.draw);
+        r = render_frame(&dev, &frame, &scene, posed, &o.draw);
     }
     if (r != MOTE_OK) {
         fprintf(stderr, "mote-render: rendering failed: %s\n", mote_result_string(r));

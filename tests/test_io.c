@@ -71,6 +71,22 @@ static void load_json(const char *json, const char *name, mote_scene *s)
                                                               msg, sizeof msg), msg);
 }
 
+/* A size x size RGBA device without depth, its frame begun, the camera at
+ * z = -3 looking at the origin. */
+static void begin_small_frame(mote_device *dev, uint8_t *color, int size)
+{
+    mote_device_desc dd;
+    memset(&dd, 0, sizeof dd);
+    dd.width = dd.height = size;
+    dd.color = color;
+    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(dev, &dd));
+    mote_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.camera.position[2] = -3.0f;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(dev, &f));
+}
+
 /* one triangle's geometry, for scenes written inline */
 #define TRI "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]"
 
@@ -339,16 +355,7 @@ void loader_should_hide_invisible_and_disabled_meshes(void)
     /* mote_draw skips a hidden mesh */
     static uint8_t color[8 * 8 * 4];
     mote_device dev;
-    mote_device_desc dd;
-    memset(&dd, 0, sizeof dd);
-    dd.width = dd.height = 8;
-    dd.color = color;
-    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &dd));
-    mote_frame_desc f;
-    memset(&f, 0, sizeof f);
-    f.camera.position[2] = -3.0f;
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    begin_small_frame(&dev, color, 8);
     TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[2], NULL));
     TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
     TEST_ASSERT_EQUAL_UINT32(0, mote_device_stats(&dev)->draws);
@@ -482,6 +489,127 @@ void loader_should_attach_a_child_to_the_instance_its_parent_index_names(void)
     TEST_ASSERT_EQUAL_PTR(&s.meshes[4], s.meshes[1].parent);
     TEST_ASSERT_EQUAL_PTR(&s.meshes[0], s.meshes[2].parent);
     mote_scene_free(&s);
+}
+
+/* materialUniqueId picks among materials sharing an id (glTF re-exports);
+ * when it matches nothing, materialId (last holder) is used; a multi-
+ * material is found by its uniqueId too. */
+void loader_should_resolve_material_unique_id_before_material_id(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"m\",\"uniqueId\":5,\"diffuse\":[1,0,0]},"
+                    "{\"id\":\"m\",\"uniqueId\":6,\"diffuse\":[0,1,0]},"
+                    "{\"id\":\"m\",\"uniqueId\":7,\"diffuse\":[0,0,1]}],"
+                    "\"multiMaterials\":[{\"id\":\"mm\",\"uniqueId\":9,\"materials\":[\"m\"]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m\",\"materialUniqueId\":5," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"m\",\"materialUniqueId\":6," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"m\",\"materialUniqueId\":42," TRI "},"
+                    "{\"id\":\"d\",\"materialUniqueId\":9," TRI "}]}";
+    mote_scene s;
+    load_json(j, "u", &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
+    static const uint8_t rgb[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {0, 0, 255}};
+    for (int k = 0; k < 4; k++) {
+        TEST_ASSERT_EQUAL_UINT8(rgb[k][0], s.meshes[k].material.color.r);
+        TEST_ASSERT_EQUAL_UINT8(rgb[k][1], s.meshes[k].material.color.g);
+        TEST_ASSERT_EQUAL_UINT8(rgb[k][2], s.meshes[k].material.color.b);
+    }
+    mote_scene_free(&s);
+}
+
+/* An image embedded as a base64 data: URL, in base64String (SceneSerializer,
+ * whose "name" is no file) or in name itself: decoded, loaded once for the
+ * two materials carrying the same text, rows as in the PNG. */
+void loader_should_decode_textures_embedded_as_base64_data_urls(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK,
+                              mote_scene_load(MOTE_SOURCE_DIR "/tests/data/bad/texture_embedded.babylon",
+                                              NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[0].material.texture);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[1].material.texture);
+    const mote_texture *t = &s.textures[0];
+    TEST_ASSERT_EQUAL(2, t->width);
+    TEST_ASSERT_EQUAL(2, t->height);
+    /* red, green / blue, white */
+    static const uint8_t want[16] = {255, 0, 0, 255, 0, 255, 0, 255,
+                                     0, 0, 255, 255, 255, 255, 255, 255};
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(want, t->pixels, 16);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* backFaceCulling false: both sides drawn. The flag is per mesh (sub-meshes
+ * of a multi-material each get their slot's), applied by
+ * mote_scene_draw_desc; the same triangle is drawn facing and turned away,
+ * so exactly one of each pair is a back face. */
+void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"two\",\"backFaceCulling\":false},"
+                    "{\"id\":\"one\",\"backFaceCulling\":true}],"
+                    "\"multiMaterials\":[{\"id\":\"mm\",\"materials\":[\"one\",\"two\"]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"two\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"two\",\"rotation\":[0,3.14159265,0]," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"one\"," TRI "},"
+                    "{\"id\":\"d\",\"materialId\":\"one\",\"rotation\":[0,3.14159265,0]," TRI "},"
+                    "{\"id\":\"e\",\"materialId\":\"mm\"," TRI ","
+                    "\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3},"
+                    "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]}]}";
+    mote_scene s;
+    load_json(j, "b", &s);
+    TEST_ASSERT_EQUAL(6, s.mesh_count);
+    static const bool want[6] = {true, true, false, false, false, true};
+    for (int k = 0; k < 6; k++)
+        TEST_ASSERT_EQUAL(want[k], s.two_sided[k]);
+    mote_draw_desc base = {0}, d;
+    base.mode = MOTE_MODE_FLAT;
+    mote_scene_draw_desc(&s, 0, &base, &d);
+    TEST_ASSERT_EQUAL(MOTE_CULL_NONE, d.cull);
+    TEST_ASSERT_EQUAL(MOTE_MODE_FLAT, d.mode);
+    mote_scene_draw_desc(&s, 2, &base, &d);
+    TEST_ASSERT_EQUAL(MOTE_CULL_DEFAULT, d.cull);
+    static uint8_t color[16 * 16 * 4];
+    mote_device dev;
+    begin_small_frame(&dev, color, 16);
+    for (int k = 0; k < 4; k++) {
+        mote_scene_draw_desc(&s, k, NULL, &d);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[k], &d));
+    }
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_EQUAL_UINT32(1, mote_device_stats(&dev)->triangles_backface);
+    mote_scene_free(&s);
+}
+
+/* A texture with coordinatesIndex 1 samples uvs2: the meshes drawn with it
+ * get vertices whose uv is uvs2 (current layout, legacy uvCount 2, shared
+ * by an instance); a mesh with another material keeps its own uvs; a mesh
+ * without uvs2 keeps uvs, with a warning. */
+void loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK,
+                              mote_scene_load(MOTE_SOURCE_DIR "/tests/data/bad/texture_uv2.babylon",
+                                              NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_NOT_NULL(strstr(s.warning, "meshes[3]: its texture samples uvs2"));
+    TEST_ASSERT_EQUAL(5, s.mesh_count); /* cur, leg, other, none, cur's instance */
+    static const float cur[6] = {0, 0, 1, 0, 0, 1}, leg[6] = {0.25f, 0.75f, 0.5f, 0.5f,
+                                                              0.75f, 0.25f};
+    for (int v = 0; v < 3; v++) {
+        TEST_ASSERT_EQUAL_FLOAT(cur[2 * v], s.meshes[0].vertices[v].uv[0]);
+        TEST_ASSERT_EQUAL_FLOAT(cur[2 * v + 1], s.meshes[0].vertices[v].uv[1]);
+        TEST_ASSERT_EQUAL_FLOAT(leg[2 * v], s.meshes[1].vertices[v].uv[0]);
+        TEST_ASSERT_EQUAL_FLOAT(leg[2 * v + 1], s.meshes[1].vertices[v].uv[1]);
+        TEST_ASSERT_EQUAL_FLOAT(0.9f, s.meshes[2].vertices[v].uv[0]);
+        TEST_ASSERT_EQUAL_FLOAT(0.5f, s.meshes[3].vertices[v].uv[0]);
+    }
+    /* positions and normals come along; the instance shares the copy */
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.meshes[0].vertices[1].position[0]);
+    TEST_ASSERT_EQUAL_FLOAT(-1.0f, s.meshes[1].vertices[2].normal[2]);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[4].vertices);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
 void loader_should_use_the_first_camera_without_an_active_one(void)
@@ -776,6 +904,10 @@ int main(void)
     RUN_TEST(write_image_should_refuse_unknown_extensions_and_band_devices);
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
+    RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
+    RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
+    RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
+    RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

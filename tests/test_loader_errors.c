@@ -205,14 +205,16 @@ void loader_should_free_everything_when_any_allocation_fails(void)
     TEST_ASSERT_TRUE(total > case_count);
 }
 
-void loader_should_keep_the_first_of_duplicate_material_ids(void)
+/* Babylon.js resolves materialId with getLastMaterialById: the second
+ * "t" (green) is the one drawn. */
+void loader_should_keep_the_last_of_duplicate_material_ids(void)
 {
     mote_scene s;
     TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(BAD_DIR "/material_duplicate_id.babylon",
                                                        NULL, &s, msg, sizeof msg), msg);
     TEST_ASSERT_EQUAL(1, s.mesh_count);
-    TEST_ASSERT_EQUAL_UINT8(255, s.meshes[0].material.color.r);
-    TEST_ASSERT_EQUAL_UINT8(0, s.meshes[0].material.color.g);
+    TEST_ASSERT_EQUAL_UINT8(0, s.meshes[0].material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(255, s.meshes[0].material.color.g);
     mote_scene_free(&s);
 }
 
@@ -356,7 +358,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(loader_should_reject_each_bad_file_with_its_code_and_message);
     RUN_TEST(loader_should_free_everything_when_any_allocation_fails);
-    RUN_TEST(loader_should_keep_the_first_of_duplicate_material_ids);
+    RUN_TEST(loader_should_keep_the_last_of_duplicate_material_ids);
     RUN_TEST(loader_should_bind_ids_with_invalid_utf8_bytes_exactly);
     RUN_TEST(loader_should_infer_uvcount_when_only_one_stride_fits);
     RUN_TEST(loader_should_give_empty_meshes_zero_triangles);

@@ -64,6 +64,11 @@ typedef struct mote_scene {
     mote_rgba clear_color;
     float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
     char warning[256];            /* non-fatal notes (downgraded textures, ...) */
+    /* One flag per mesh (mesh_count): its material says backFaceCulling
+     * false, so Babylon.js draws both of its sides. The core's culling is a
+     * per-draw option (mote_draw_desc.cull), not a material property:
+     * mote_scene_draw_desc applies these. */
+    const bool *two_sided;
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
@@ -76,7 +81,11 @@ typedef struct mote_scene {
  * (current Babylon.js); a texture's invertY says whether v = 0 is its
  * bottom row (unsaid: the bottom row, but the top one in legacy files).
  * A mesh's instances become meshes of their own after the file's meshes
- * and transform nodes, sharing its arrays and material. */
+ * and transform nodes, sharing its arrays and material. Materials resolve
+ * by materialUniqueId, then materialId (the last of equal ids); a texture
+ * with coordinatesIndex 1 samples uvs2; backFaceCulling false fills
+ * two_sided; images may be embedded as base64 data: URLs (base64String,
+ * or name). */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures
@@ -90,6 +99,11 @@ void mote_scene_free(mote_scene *scene);
  * it has one, else a camera that frames the bounding box from the front-top
  * right; with no lights, a point light above the camera. */
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
+
+/* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with
+ * cull MOTE_CULL_NONE where the mesh's material has backFaceCulling false. */
+void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_desc *base,
+                          mote_draw_desc *out);
 
 /* ---- images ------------------------------------------------------------ */
 

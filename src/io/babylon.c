@@ -6,6 +6,11 @@
  * Babylon.js serialises no switch for vertex colours (`useVertexColors` is
  * a run-time property of its meshes, not written to files), so `colors` are
  * always used; `hasVertexAlpha` is not read, as mote ignores alpha.
+ * Materials: diffuse/albedo colour and texture, backFaceCulling (kept per
+ * mesh in mote_scene.two_sided: the core's culling is a draw option), and
+ * the texture's coordinatesIndex (1: uvs2, read only when a material asks
+ * for it). Textures are files in the scene's folder, or base64 data: URLs
+ * (base64String, or name) decoded in texture.c.
  *
  * Every value is checked before it is used: types, finite floats, index
  * ranges, counts against the limits before anything is allocated. Errors
@@ -16,7 +21,10 @@
  * Decisions (tested in tests/test_loader_errors.c):
  * - A mesh with no vertex data loads as a 0-vertex mesh (it may be a
  *   parent); empty arrays are fine and give 0 triangles.
- * - Duplicate material ids: the first wins, with a warning.
+ * - Duplicate material (and multi-material) ids: the last wins, with a
+ *   warning, as Babylon.js resolves materialId with getLastMaterialById.
+ *   A mesh's materialUniqueId, when it matches a (multi-)material's
+ *   uniqueId, is used before its materialId (current Babylon.js files).
  * - A materialId (or multi-material slot) naming nothing: default white
  *   material, with a warning. A parentId naming nothing is an error, and
  *   so is a parentInstanceIndex past the parent's instances.
@@ -25,6 +33,10 @@
  * - Materials and multi-materials count against limits.max_meshes too, and
  *   so do transform nodes and instances.
  * - Meshes naming one geometryId, and a mesh's instances, share its arrays.
+ * - A mesh drawn with a coordinatesIndex 1 texture but without uvs2 keeps
+ *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
+ * - With no base_dir (mote_scene_load_memory), embedded images are not
+ *   loaded either: no textures at all, as documented.
  */
 #include "io_internal.h"
 
@@ -79,12 +91,16 @@ static void *mote__store_alloc(mote__store *s, size_t count, size_t size)
 
 typedef struct mote__mat {
     const char *id;
+    const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
     mote_material material;
     signed char invert_y;         /* the texture's invertY: 0, 1, or -1 (not said) */
+    bool two_sided;               /* backFaceCulling false */
+    bool uv2;                     /* the texture's coordinatesIndex is 1: it samples uvs2 */
 } mote__mat;
 
 typedef struct mote__multi {
     const char *id;
+    const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
     int *slots;                   /* material index per slot, -1: default */
     int slot_count;
 } mote__multi;
@@ -102,6 +118,7 @@ typedef struct mote__node {
     int parent_instance;          /* parentInstanceIndex: the parent's instance, -1: the parent itself */
     int first_instance, instance_count;   /* a mesh's instances among the nodes */
     const char *material_id;
+    const char *material_unique_id; /* materialUniqueId as text, or NULL */
     char where[48];               /* "meshes[3]" or "transformNodes[0]" */
     int parent;                   /* node index, -1: none */
     int state;                    /* cycle search: 0 new, 1 on the path, 2 done */
@@ -112,6 +129,15 @@ typedef struct mote__node {
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     mote_vertex *verts;
     uint32_t nv;
+    /* uvs2, 2 floats per vertex, in the temporary store; read only when a
+     * material of the file samples them (mote__ld.any_uv2) */
+    float *uv2;
+    /* verts with uv2 in place of uv, made (once, kept) for the first
+     * (sub-)mesh drawn with a material that samples uvs2: the core has one
+     * uv per vertex, so such meshes need their own copy; meshes without
+     * such a material pay nothing */
+    mote_vertex *verts2;
+    struct mote__node *arrays;    /* the node whose arrays this one shares, or NULL */
     mote_rgba *colors;            /* one per vertex, or NULL */
     uint32_t *idx;
     uint32_t ni;
@@ -128,7 +154,7 @@ typedef struct mote__geometry {
 } mote__geometry;
 
 /* An id -> index map: a count, then sorted (id, index) pairs; the first of
- * equal ids wins. */
+ * equal ids wins, or the last for mote__idmap_find_last. */
 typedef struct mote__idmap {
     const char *id;
     int index;
@@ -146,18 +172,19 @@ typedef struct mote__ld {
     const cJSON *root;
     mote__mat *mats;
     int mat_count;
-    mote__idmap *mat_map;
+    mote__idmap *mat_map, *mat_unique_map;
     mote__multi *multis;
     int multi_count;
-    mote__idmap *multi_map;
+    mote__idmap *multi_map, *multi_unique_map;
     mote__geometry *geometries;   /* geometries.vertexData */
     int geometry_count;
     mote__idmap *geometry_map;
     mote__node *nodes;
     int node_count;
     mote__idmap *node_map;
+    bool any_uv2;                 /* a material samples uvs2: keep them while loading */
     int texture_cap;
-    char **texture_paths;         /* resolved path of scene->textures[i] */
+    const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
 } mote__ld;
 
 typedef mote_result R;
@@ -333,6 +360,18 @@ static R mote__flag(mote__ld *ld, const cJSON *obj, const char *key, const char 
     return MOTE_OK;
 }
 
+/* key -> a whole number in [0, hi]; absent keeps *out. */
+static R mote__uint_member(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                           uint32_t hi, uint32_t *out)
+{
+    const cJSON *v = mote__get(obj, key);
+    if (!v)
+        return MOTE_OK;
+    char at[160];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    return mote__to_uint(ld, v, at, 0, hi, out);
+}
+
 /* key -> string or NULL; anything else is an error. */
 static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
                    const char **out)
@@ -433,20 +472,36 @@ static mote__idmap *mote__idmap_build(mote__ld *ld, const char *const *ids, size
     return head;
 }
 
-static int mote__idmap_find(const mote__idmap *m, const char *id)
+/* The first (last: false) or last holder of id, or -1. */
+static int mote__idmap_lookup(const mote__idmap *m, const char *id, bool last)
 {
     if (!m || !id)
         return -1;
-    int lo = 0, hi = m[0].index; /* m[0] holds the count */
+    int n = m[0].index, lo = 0, hi = n; /* m[0] holds the count */
     m++;
-    while (lo < hi) { /* first entry >= id */
+    while (lo < hi) { /* first entry > id (last) or >= id */
         int mid = lo + (hi - lo) / 2;
-        if (strcmp(m[mid].id, id) < 0)
+        int c = strcmp(m[mid].id, id);
+        if (c < 0 || (last && c == 0))
             lo = mid + 1;
         else
             hi = mid;
     }
-    return (lo < m[-1].index && strcmp(m[lo].id, id) == 0) ? m[lo].index : -1;
+    if (last)
+        lo--;
+    return (lo >= 0 && lo < n && strcmp(m[lo].id, id) == 0) ? m[lo].index : -1;
+}
+
+static int mote__idmap_find(const mote__idmap *m, const char *id)
+{
+    return mote__idmap_lookup(m, id, false);
+}
+
+/* Materials resolve as Babylon.js's scene.getLastMaterialById does: the
+ * last of equal ids. */
+static int mote__idmap_find_last(const mote__idmap *m, const char *id)
+{
+    return mote__idmap_lookup(m, id, true);
 }
 
 /* ---- textures ---------------------------------------------------------- */
@@ -476,14 +531,54 @@ static bool mote__path_escapes(const char *name, const char **why)
     return false;
 }
 
-/* Loads (once per resolved path) the texture a material names. */
-static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
-                                mote_material *m, signed char *invert_y)
+/* The texture at path (a file, or with embedded a data: URL), loaded once
+ * however many materials name it; key names the JSON member in messages. */
+static R mote__texture_found(mote__ld *ld, const char *at, const char *key, const char *path,
+                             bool embedded, mote_material *m)
 {
+    mote_scene *sc = ld->scene;
+    for (int i = 0; i < sc->texture_count; i++)
+        if (strcmp(ld->texture_paths[i], path) == 0) {
+            m->texture = &sc->textures[i];
+            return MOTE_OK;
+        }
+    if (sc->texture_count >= ld->texture_cap)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: too many textures", at);
+    char why[256];
+    mote_texture *t = &sc->textures[sc->texture_count];
+    R r = embedded
+              ? mote__io_texture_load_data_url(path, &ld->lim, t, why, sizeof why)
+              : mote_texture_load(path, &ld->lim, t, why, sizeof why);
+    if (r == MOTE_ERR_OUT_OF_MEMORY)
+        return mote__fail(ld, r, "%s.%s: %s", at, key, why);
+    if (r != MOTE_OK) {
+        if (ld->lim.missing_texture_is_warning) {
+            mote__warn(ld, "%s: %s (drawn untextured)", at, why);
+            return MOTE_OK;
+        }
+        return mote__fail(ld, r, "%s.%s: %s", at, key, why);
+    }
+    ld->texture_paths[sc->texture_count++] = path;
+    m->texture = t;
+    return MOTE_OK;
+}
+
+/* Loads (once per resolved path) the texture a material names: a file in
+ * the scene's folder, or an image embedded as a base64 data: URL, in
+ * "base64String" (Babylon.js's SceneSerializer; "name" is then no file) or
+ * in "name" itself. */
+static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
+                                mote__mat *mm)
+{
+    mote_material *m = &mm->material;
     MOTE__TRY(mote__obj_at(ld, tex, at));
-    const char *name;
+    const char *name, *embedded;
     MOTE__TRY(mote__str(ld, tex, "name", at, &name));
-    if (!name)
+    MOTE__TRY(mote__str(ld, tex, "base64String", at, &embedded));
+    const char *key = embedded ? "base64String" : "name";
+    if (!embedded && name && mote__io_is_data_url(name))
+        embedded = name;
+    if (!name && !embedded)
         return mote__fail(ld, MOTE_ERR_PARSE, "%s.name: expected a string (the image file)",
                           at);
     m->u_scale = 1.0f;
@@ -495,7 +590,18 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
     if (mote__get(tex, "invertY")) {
         bool inv = true;
         MOTE__TRY(mote__flag(ld, tex, "invertY", at, &inv));
-        *invert_y = inv;
+        mm->invert_y = inv;
+    }
+    /* which uv set the texture samples: uvs (0) or uvs2 (1); Babylon.js
+     * has more (uvs3...), which mote does not read */
+    uint32_t ci = 0;
+    MOTE__TRY(mote__uint_member(ld, tex, "coordinatesIndex", at, 5, &ci));
+    if (ci) {
+        if (ci > 1)
+            mote__warn(ld, "%s.coordinatesIndex: %u: only uvs and uvs2 are read; uvs are used",
+                       at, (unsigned)ci);
+        mm->uv2 = ci == 1;
+        ld->any_uv2 = ld->any_uv2 || mm->uv2;
     }
     static const char *const wrap_keys[2] = {"wrapU", "wrapV"};
     for (int k = 0; k < 2; k++) {
@@ -515,6 +621,10 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
         else
             m->wrap_v = mode;
     }
+    if (!ld->base_dir)
+        return MOTE_OK; /* colours only (embedded images too, as documented) */
+    if (embedded)
+        return mote__texture_found(ld, at, key, embedded, true, m);
     mote__q qn = mote__quote(name);
     if (!ld->lim.allow_any_texture_path) {
         const char *why = "";
@@ -524,8 +634,6 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
                               "folder; see limits.allow_any_texture_path)",
                               at, qn.s, why);
     }
-    if (!ld->base_dir)
-        return MOTE_OK; /* colours only */
     bool absolute = name[0] == '/' || name[0] == '\\';
     size_t blen = strlen(ld->base_dir), nlen = strlen(name);
     char *path = mote__store_alloc(&ld->tmp, blen + nlen + 2, 1);
@@ -543,29 +651,7 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
         if (*c == '\\')
             *c = '/'; /* exporters on Windows write folder\\image.png */
 #endif
-    mote_scene *sc = ld->scene;
-    for (int i = 0; i < sc->texture_count; i++)
-        if (strcmp(ld->texture_paths[i], path) == 0) {
-            m->texture = &sc->textures[i];
-            return MOTE_OK;
-        }
-    if (sc->texture_count >= ld->texture_cap)
-        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: too many textures", at);
-    char why[256];
-    mote_texture *t = &sc->textures[sc->texture_count];
-    R r = mote_texture_load(path, &ld->lim, t, why, sizeof why);
-    if (r == MOTE_ERR_OUT_OF_MEMORY)
-        return mote__fail(ld, r, "%s.name: %s", at, why);
-    if (r != MOTE_OK) {
-        if (ld->lim.missing_texture_is_warning) {
-            mote__warn(ld, "%s: %s (drawn untextured)", at, why);
-            return MOTE_OK;
-        }
-        return mote__fail(ld, r, "%s.name: %s", at, why);
-    }
-    ld->texture_paths[sc->texture_count++] = path;
-    m->texture = t;
-    return MOTE_OK;
+    return mote__texture_found(ld, at, key, path, false, m);
 }
 
 /* ---- materials --------------------------------------------------------- */
@@ -609,22 +695,30 @@ static R mote__materials(mote__ld *ld)
             MOTE__TRY(mote__str(ld, m, "name", at, &mm->id));
         if (!mm->id)
             return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        MOTE__TRY(mote__number_text(ld, m, "uniqueId", at, &mm->unique_id));
         ld->mat_count = i + 1;
     }
-    int dup;
+    int dup, unused;
     ld->mat_map = mote__idmap_build(ld, &ld->mats[0].id, sizeof *ld->mats, ld->mat_count, &dup);
-    if (!ld->mat_map)
+    ld->mat_unique_map = mote__idmap_build(ld, &ld->mats[0].unique_id, sizeof *ld->mats,
+                                           ld->mat_count, &unused);
+    if (!ld->mat_map || !ld->mat_unique_map)
         return mote__oom(ld, "materials");
     if (dup >= 0)
-        mote__warn(ld, "materials[%d]: id \"%s\" is used before; the first one is kept", dup,
+        mote__warn(ld, "materials[%d]: id \"%s\" is used before; the last one is kept", dup,
                    mote__quote(ld->mats[dup].id).s);
     i = 0;
     for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
         char at[64];
         snprintf(at, sizeof at, "materials[%d]", i);
         mote__mat *mm = &ld->mats[i];
-        if (mote__idmap_find(ld->mat_map, mm->id) != i)
-            continue; /* a duplicate: never used, do not load its texture */
+        /* shadowed by a later one of the same id, and not reachable by a
+         * uniqueId: never used, so its texture is not loaded */
+        if (mote__idmap_find_last(ld->mat_map, mm->id) != i && !mm->unique_id)
+            continue;
+        bool cull_back = true;
+        MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
+        mm->two_sided = !cull_back;
         static const char *const color_keys[4] = {"diffuse", "diffuseColor", "albedo",
                                                   "albedoColor"};
         for (int k = 0; k < 4; k++) {
@@ -646,7 +740,7 @@ static R mote__materials(mote__ld *ld)
                 continue;
             char at2[96];
             snprintf(at2, sizeof at2, "%s.%s", at, tex_keys[k]);
-            MOTE__TRY(mote__material_texture(ld, t, at2, &mm->material, &mm->invert_y));
+            MOTE__TRY(mote__material_texture(ld, t, at2, mm));
             break;
         }
     }
@@ -673,6 +767,7 @@ static R mote__multi_materials(mote__ld *ld)
         MOTE__TRY(mote__str(ld, m, "id", at, &mm->id));
         if (!mm->id)
             return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        MOTE__TRY(mote__number_text(ld, m, "uniqueId", at, &mm->unique_id));
         const cJSON *slots;
         MOTE__TRY(mote__arr(ld, m, "materials", at, &slots));
         size_t count = mote__array_len(slots);
@@ -692,27 +787,29 @@ static R mote__multi_materials(mote__ld *ld)
                 return mote__fail(ld, MOTE_ERR_PARSE,
                                   "%s.materials[%d]: expected a material id, found %s", at,
                                   k, mote__type_name(s));
-            mm->slots[k] = mote__idmap_find(ld->mat_map, s->valuestring);
+            mm->slots[k] = mote__idmap_find_last(ld->mat_map, s->valuestring);
             if (mm->slots[k] < 0)
                 mote__warn(ld, "%s.materials[%d]: \"%s\" names no material", at, k,
                            mote__quote(s->valuestring).s);
         }
         ld->multi_count = i + 1;
     }
-    int dup;
+    int dup, unused;
     ld->multi_map = mote__idmap_build(ld, &ld->multis[0].id, sizeof *ld->multis,
                                       ld->multi_count, &dup);
-    if (!ld->multi_map)
+    ld->multi_unique_map = mote__idmap_build(ld, &ld->multis[0].unique_id, sizeof *ld->multis,
+                                             ld->multi_count, &unused);
+    if (!ld->multi_map || !ld->multi_unique_map)
         return mote__oom(ld, "multiMaterials");
     if (dup >= 0)
-        mote__warn(ld, "multiMaterials[%d]: id \"%s\" is used before; the first one is kept",
+        mote__warn(ld, "multiMaterials[%d]: id \"%s\" is used before; the last one is kept",
                    dup, mote__quote(ld->multis[dup].id).s);
     return MOTE_OK;
 }
 
 /* ---- geometry ---------------------------------------------------------- */
 
-enum { MOTE__POS, MOTE__NRM, MOTE__UV, MOTE__LEGACY };
+enum { MOTE__POS, MOTE__NRM, MOTE__UV, MOTE__UV2, MOTE__LEGACY };
 
 /* Element k of the array at `at` as a float; the place is spelled out only
  * for an error, as vertex arrays are long. */
@@ -728,9 +825,11 @@ static R mote__element_float(mote__ld *ld, const cJSON *e, const char *at, size_
     return MOTE_OK;
 }
 
-static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex *v,
+/* Fills nd->verts (and nd->uv2 when it is there) from arr. */
+static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote__node *nd,
                     int what, size_t stride)
 {
+    mote_vertex *v = nd->verts;
     size_t k = 0;
     for (const cJSON *e = arr->child; e; e = e->next, k++) {
         float f;
@@ -741,6 +840,7 @@ static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex 
         case MOTE__POS: vx->position[c] = f; break;
         case MOTE__NRM: vx->normal[c] = f; break;
         case MOTE__UV: vx->uv[c] = f; break;
+        case MOTE__UV2: nd->uv2[k] = f; break;
         default:
             if (c < 3)
                 vx->position[c] = f;
@@ -748,7 +848,9 @@ static R mote__fill(mote__ld *ld, const cJSON *arr, const char *at, mote_vertex 
                 vx->normal[c - 3] = f;
             else if (c < 8)
                 vx->uv[c - 6] = f;
-            break; /* uv2 is checked, not kept */
+            else if (nd->uv2)
+                nd->uv2[k / stride * 2 + c - 8] = f;
+            break; /* uv2 is checked, and kept only when a material needs it */
         }
     }
     return MOTE_OK;
@@ -857,12 +959,9 @@ static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *ver
         MOTE__TRY(mote__indices(ld, ind, iat, nd, &max_index));
     size_t len = mote__array_len(verts);
     size_t stride = 0;
-    const cJSON *uvc = mote__get(mesh, "uvCount");
-    if (uvc) {
-        char uat[96];
-        snprintf(uat, sizeof uat, "%s.uvCount", where);
-        uint32_t u;
-        MOTE__TRY(mote__to_uint(ld, uvc, uat, 0, 2, &u));
+    uint32_t u = 0;
+    if (mote__get(mesh, "uvCount")) {
+        MOTE__TRY(mote__uint_member(ld, mesh, "uvCount", where, 2, &u));
         stride = 6 + 2 * (size_t)u;
         if (len % stride)
             return mote__fail(ld, MOTE_ERR_RANGE,
@@ -885,7 +984,12 @@ static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *ver
                               len, fits ? "more than one" : "no");
     }
     MOTE__TRY(mote__alloc_vertices(ld, at, len / stride, nd));
-    MOTE__TRY(mote__fill(ld, verts, at, nd->verts, MOTE__LEGACY, stride));
+    if (stride == 10 && ld->any_uv2) {
+        nd->uv2 = mote__store_alloc(&ld->tmp, nd->nv, 2 * sizeof *nd->uv2);
+        if (!nd->uv2)
+            return mote__oom(ld, at);
+    }
+    MOTE__TRY(mote__fill(ld, verts, at, nd, MOTE__LEGACY, stride));
     nd->legacy = true;
     return mote__check_indices(ld, iat, nd);
 }
@@ -919,8 +1023,10 @@ static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node
 /* The current layout, from the mesh itself or from a geometries.vertexData
  * entry (src, named src_where in messages). */
 /* Gives to the vertex and index arrays of from: shared, not copied. */
-static void mote__share_arrays(mote__node *to, const mote__node *from)
+static void mote__share_arrays(mote__node *to, mote__node *from)
 {
+    to->arrays = from->arrays ? from->arrays : from;
+    to->uv2 = from->uv2;
     to->verts = from->verts;
     to->nv = from->nv;
     to->colors = from->colors;
@@ -928,13 +1034,36 @@ static void mote__share_arrays(mote__node *to, const mote__node *from)
     to->ni = from->ni;
 }
 
+/* arr (where.key): `per` floats for each of nd's vertices, into the part
+ * `what` says (uvs2 get their temporary array here). */
+static R mote__per_vertex(mote__ld *ld, const cJSON *arr, const char *where, const char *key,
+                          size_t per, int what, mote__node *nd)
+{
+    char at[96];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    size_t n = mote__array_len(arr), nv = nd->nv;
+    if (n != nv * per)
+        return mote__fail(ld, MOTE_ERR_RANGE,
+                          "%s: %zu floats, expected %zu per vertex (%zu vertices)", at, n, per,
+                          nv);
+    if (what == MOTE__UV2) {
+        nd->uv2 = mote__store_alloc(&ld->tmp, nv, 2 * sizeof *nd->uv2);
+        if (!nd->uv2)
+            return mote__oom(ld, at);
+        per = 1;                  /* a flat array */
+    }
+    return mote__fill(ld, arr, at, nd, what, per);
+}
+
 static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *where,
                                 mote__node *nd)
 {
-    const cJSON *pos, *nrm, *uvs, *colors, *ind;
+    const cJSON *pos, *nrm, *uvs, *uvs2 = NULL, *colors, *ind;
     MOTE__TRY(mote__arr(ld, src, "positions", where, &pos));
     MOTE__TRY(mote__arr(ld, src, "normals", where, &nrm));
     MOTE__TRY(mote__arr(ld, src, "uvs", where, &uvs));
+    if (ld->any_uv2)
+        MOTE__TRY(mote__arr(ld, src, "uvs2", where, &uvs2));
     MOTE__TRY(mote__arr(ld, src, "colors", where, &colors));
     MOTE__TRY(mote__arr(ld, src, "indices", where, &ind));
     char at[96], iat[96];
@@ -950,25 +1079,13 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
     size_t nv = len / 3;
     MOTE__TRY(mote__alloc_vertices(ld, at, nv, nd));
     if (pos)
-        MOTE__TRY(mote__fill(ld, pos, at, nd->verts, MOTE__POS, 3));
-    if (nrm) {
-        snprintf(at, sizeof at, "%s.normals", where);
-        size_t n = mote__array_len(nrm);
-        if (n != nv * 3)
-            return mote__fail(ld, MOTE_ERR_RANGE,
-                              "%s: %zu floats, expected 3 per vertex (%zu vertices)", at, n,
-                              nv);
-        MOTE__TRY(mote__fill(ld, nrm, at, nd->verts, MOTE__NRM, 3));
-    }
-    if (uvs) {
-        snprintf(at, sizeof at, "%s.uvs", where);
-        size_t n = mote__array_len(uvs);
-        if (n != nv * 2)
-            return mote__fail(ld, MOTE_ERR_RANGE,
-                              "%s: %zu floats, expected 2 per vertex (%zu vertices)", at, n,
-                              nv);
-        MOTE__TRY(mote__fill(ld, uvs, at, nd->verts, MOTE__UV, 2));
-    }
+        MOTE__TRY(mote__fill(ld, pos, at, nd, MOTE__POS, 3));
+    if (nrm)
+        MOTE__TRY(mote__per_vertex(ld, nrm, where, "normals", 3, MOTE__NRM, nd));
+    if (uvs)
+        MOTE__TRY(mote__per_vertex(ld, uvs, where, "uvs", 2, MOTE__UV, nd));
+    if (uvs2)
+        MOTE__TRY(mote__per_vertex(ld, uvs2, where, "uvs2", 2, MOTE__UV2, nd));
     if (colors) {
         snprintf(at, sizeof at, "%s.colors", where);
         MOTE__TRY(mote__colors(ld, colors, at, nd));
@@ -1080,6 +1197,7 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
 {
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
     MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
+    MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     const cJSON *verts, *pos;
     MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
@@ -1189,6 +1307,7 @@ static R mote__nodes(mote__ld *ld)
             snprintf(in->where, sizeof in->where, "meshes[%d].instances[%d]", i, k);
             MOTE__TRY(mote__node_common(ld, e, in->where, in));
             in->material_id = nd->material_id;
+            in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
             mote__share_arrays(in, nd);
             in->subs = nd->subs;
@@ -1270,21 +1389,34 @@ static R mote__parents(mote__ld *ld)
     return MOTE_OK;
 }
 
-/* The material of one sub-mesh: a material, a multi-material slot, or the
- * default (white) with a warning when the id names nothing. */
-/* The material of a (sub-)mesh, or NULL for the default one. */
+/* The material of a (sub-)mesh: a material, a multi-material slot, or NULL
+ * for the default (white) one, with a warning when nothing is named.
+ * materialUniqueId comes first, as in Babylon.js (materials re-exported from
+ * glTF often share an id); when it matches nothing, materialId is tried.
+ * Either resolves to the last holder, as getLastMaterialById does. */
 static const mote__mat *mote__resolve_material(mote__ld *ld, const mote__node *nd,
                                                uint32_t material_index)
 {
-    if (!nd->material_id)
-        return NULL;
-    int m = mote__idmap_find(ld->mat_map, nd->material_id);
+    int m = -1, mm = -1;
+    if (nd->material_unique_id) {
+        m = mote__idmap_find_last(ld->mat_unique_map, nd->material_unique_id);
+        if (m < 0)
+            mm = mote__idmap_find_last(ld->multi_unique_map, nd->material_unique_id);
+    }
+    if (m < 0 && mm < 0 && nd->material_id) {
+        m = mote__idmap_find_last(ld->mat_map, nd->material_id);
+        if (m < 0)
+            mm = mote__idmap_find_last(ld->multi_map, nd->material_id);
+    }
     if (m >= 0)
         return &ld->mats[m];
-    int mm = mote__idmap_find(ld->multi_map, nd->material_id);
     if (mm < 0) {
-        mote__warn(ld, "%s.materialId: \"%s\" names no material", nd->where,
-                   mote__quote(nd->material_id).s);
+        if (nd->material_id)
+            mote__warn(ld, "%s.materialId: \"%s\" names no material", nd->where,
+                       mote__quote(nd->material_id).s);
+        else if (nd->material_unique_id)
+            mote__warn(ld, "%s.materialUniqueId: %s is the uniqueId of no material",
+                       nd->where, nd->material_unique_id);
         return NULL;
     }
     const mote__multi *multi = &ld->multis[mm];
@@ -1309,6 +1441,31 @@ static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
     return false;
 }
 
+/* Points m (of node nd) at vertices whose uv is uvs2, made once per
+ * shared vertex array; without uvs2, m keeps uvs (warned). */
+static R mote__uv2_vertices(mote__ld *ld, mote__node *nd, mote_mesh *m)
+{
+    mote__node *owner = nd->arrays ? nd->arrays : nd;
+    if (!owner->uv2) {
+        if (owner->nv)
+            mote__warn(ld, "%s: its texture samples uvs2 (coordinatesIndex 1), which the "
+                       "mesh lacks; uvs are used", nd->where);
+        return MOTE_OK;
+    }
+    if (!owner->verts2) {
+        owner->verts2 = mote__store_alloc(ld->keep, owner->nv, sizeof *owner->verts2);
+        if (!owner->verts2)
+            return mote__oom(ld, nd->where);
+        for (uint32_t i = 0; i < owner->nv; i++) {
+            owner->verts2[i] = owner->verts[i];
+            owner->verts2[i].uv[0] = owner->uv2[2 * i];
+            owner->verts2[i].uv[1] = owner->uv2[2 * i + 1];
+        }
+    }
+    m->vertices = owner->verts2;
+    return MOTE_OK;
+}
+
 static R mote__build_meshes(mote__ld *ld)
 {
     size_t total = 0;
@@ -1327,8 +1484,13 @@ static R mote__build_meshes(mote__ld *ld)
     if (!sc->meshes)
         return mote__oom(ld, "meshes");
     sc->mesh_count = (int)total;
+    /* a byte per mesh, so that mote_scene_draw_desc needs no search */
+    bool *two_sided = mote__store_alloc(ld->keep, total, sizeof *two_sided);
+    if (!two_sided)
+        return mote__oom(ld, "meshes");
+    sc->two_sided = two_sided;
     for (int i = 0; i < ld->node_count; i++) {
-        const mote__node *nd = &ld->nodes[i];
+        mote__node *nd = &ld->nodes[i];
         for (int s = 0; s < nd->mesh_count; s++) {
             mote_mesh *m = &sc->meshes[nd->first_mesh + s];
             m->vertices = nd->verts;
@@ -1349,8 +1511,12 @@ static R mote__build_meshes(mote__ld *ld)
             memcpy(m->scaling, nd->scaling, sizeof m->scaling);
             m->parent = nd->parent >= 0 ? &sc->meshes[ld->nodes[nd->parent].first_mesh] : NULL;
             const mote__mat *mat = mote__resolve_material(ld, nd, material_index);
-            if (mat)
+            if (mat) {
                 m->material = mat->material;
+                two_sided[nd->first_mesh + s] = mat->two_sided;
+                if (mat->uv2)
+                    MOTE__TRY(mote__uv2_vertices(ld, nd, m));
+            }
             /* v = 0: the bottom row when the texture says invertY (what
              * Babylon.js does by default, and current exporters rely on),
              * the top row when it says not; unsaid, legacy files (the
@@ -1713,6 +1879,22 @@ mote_result mote_scene_load(const char *path, const mote_limits *limits, mote_sc
 }
 
 /* ---- framing ----------------------------------------------------------- */
+
+void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_desc *base,
+                          mote_draw_desc *out)
+{
+    if (!out)
+        return;
+    if (base)
+        *out = *base;
+    else
+        memset(out, 0, sizeof *out);
+    /* Babylon.js draws both sides of a mesh whose material says
+     * backFaceCulling false: no culling, whatever the caller asked */
+    if (scene && scene->two_sided && mesh >= 0 && mesh < scene->mesh_count &&
+        scene->two_sided[mesh])
+        out->cull = MOTE_CULL_NONE;
+}
 
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame)
 {

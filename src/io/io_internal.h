@@ -53,4 +53,13 @@ mote_result mote__io_read_file(const char *path, size_t max_bytes, char **data,
  * messages and must not carry terminal escapes. */
 void mote__io_clean_name(char *dst, size_t n, const char *s);
 
+/* Whether s starts with "data:" (any case): an embedded image, not a file. */
+bool mote__io_is_data_url(const char *s);
+/* Decodes a base64 data: URL ("data:image/png;base64,...") with strict
+ * validation (decoded size within limits->max_file_bytes) and loads the
+ * image as mote_texture_load_memory does. */
+mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *limits,
+                                           mote_texture *out, char *message,
+                                           size_t message_size);
+
 #endif

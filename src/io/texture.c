@@ -2,7 +2,9 @@
  * texture.c - images to RGBA8888 textures through stb_image (the
  * implementation comes from Debian's libstb). The header is read first with
  * stbi_info_from_memory so that a file claiming 100000 x 100000 pixels is
- * refused before anything is decoded.
+ * refused before anything is decoded. Images embedded in scene files as
+ * base64 data: URLs (Babylon.js's SceneSerializer) are decoded here too and
+ * go through the same checks.
  */
 #include "io_internal.h"
 
@@ -96,6 +98,12 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
     return MOTE_OK;
 }
 
+/* "texture: why" -> "why": callers put their own place in front. */
+static const char *mote__why(const char *inner)
+{
+    return strncmp(inner, "texture: ", 9) == 0 ? inner + 9 : inner;
+}
+
 mote_result mote_texture_load(const char *path, const mote_limits *limits,
                               mote_texture *out, char *message, size_t message_size)
 {
@@ -116,10 +124,119 @@ mote_result mote_texture_load(const char *path, const mote_limits *limits,
     if (r != MOTE_OK) {
         char name[160];
         mote__io_clean_name(name, sizeof name, path);
-        /* "texture: why" becomes "path: why" */
-        const char *why = strncmp(inner, "texture: ", 9) == 0 ? inner + 9 : inner;
-        mote__io_error(message, message_size, r, "%s: %s", name, why);
+        mote__io_error(message, message_size, r, "%s: %s", name, mote__why(inner));
     }
+    return r;
+}
+
+/* ---- embedded images (data: URLs) ------------------------------------ */
+
+/* The value of one base64 character, or -1. */
+static int mote__b64_value(unsigned char c)
+{
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+') return 62;
+    if (c == '/') return 63;
+    return -1;
+}
+
+/* Strict base64 (RFC 4648, no line breaks or spaces): '=' only as the last
+ * one or two characters of a 4-character group, padding optional (some
+ * writers omit it), no lone final character. Bytes go to out (room for
+ * len / 4 * 3 + 2); *bad: the offending offset on failure. */
+static bool mote__b64_decode(const char *in, size_t len, unsigned char *out, size_t *out_len,
+                             size_t *bad)
+{
+    size_t pad = 0;
+    while (pad < 2 && len > pad && in[len - 1 - pad] == '=')
+        pad++;
+    if (pad && len % 4) {
+        *bad = len - pad;       /* padding that does not end a group */
+        return false;
+    }
+    size_t n = len - pad;
+    if (n % 4 == 1) {
+        *bad = n - 1;           /* 6 bits cannot make a byte */
+        return false;
+    }
+    size_t o = 0;
+    uint32_t acc = 0;
+    for (size_t i = 0; i < n; i++) {
+        int v = mote__b64_value((unsigned char)in[i]);
+        if (v < 0) {
+            *bad = i;
+            return false;
+        }
+        acc = acc << 6 | (uint32_t)v;
+        if (i % 4 == 3) {
+            out[o++] = (unsigned char)(acc >> 16);
+            out[o++] = (unsigned char)(acc >> 8);
+            out[o++] = (unsigned char)acc;
+            acc = 0;
+        }
+    }
+    if (n % 4 == 2) {
+        out[o++] = (unsigned char)(acc >> 4);
+    } else if (n % 4 == 3) {
+        out[o++] = (unsigned char)(acc >> 10);
+        out[o++] = (unsigned char)(acc >> 2);
+    }
+    *out_len = o;
+    return true;
+}
+
+bool mote__io_is_data_url(const char *s)
+{
+    static const char prefix[] = "data:";
+    for (size_t i = 0; i < sizeof prefix - 1; i++)
+        if (!s[i] || (s[i] | 0x20) != prefix[i])
+            return false;
+    return true;
+}
+
+mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *limits,
+                                           mote_texture *out, char *message,
+                                           size_t message_size)
+{
+    memset(out, 0, sizeof *out);
+    mote_limits lim = mote__io_limits(limits);
+    /* data:[<media type>][;base64],<data>: only base64 carries an image */
+    const char *comma = mote__io_is_data_url(url) ? strchr(url, ',') : NULL;
+    if (!comma)
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                              "not a data: URL (expected \"data:image/...;base64,...\")");
+    size_t head = (size_t)(comma - url);
+    if (head < 12 || strncmp(comma - 7, ";base64", 7) != 0)
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                              "a data: URL without \";base64\" (only base64 images are read)");
+    const char *b64 = comma + 1;
+    size_t len = strlen(b64);
+    /* decoded, the image counts against the limit on files, as a texture
+     * file would; checked before anything is allocated */
+    size_t cap = len / 4 * 3 + 2;
+    if (cap - 2 > lim.max_file_bytes)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "an embedded image of about %zu bytes, more than the limit of %zu",
+                              cap - 2, lim.max_file_bytes);
+    unsigned char *data = mote__io_malloc(cap);
+    if (!data)
+        return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
+                              "out of memory decoding an embedded image of %zu characters", len);
+    size_t size = 0, bad = 0;
+    mote_result r;
+    if (!mote__b64_decode(b64, len, data, &size, &bad)) {
+        unsigned char c = bad < len ? (unsigned char)b64[bad] : 0;
+        r = mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                           "invalid base64 at character %zu of %zu (0x%02x)", bad, len, c);
+    } else {
+        char inner[256];
+        r = mote_texture_load_memory(data, size, &lim, out, inner, sizeof inner);
+        if (r != MOTE_OK)
+            mote__io_error(message, message_size, r, "embedded image: %s", mote__why(inner));
+    }
+    mote__io_free(data);
     return r;
 }
 
