@@ -612,6 +612,20 @@ void loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* a parentId that several nodes hold names the last of them, as
+ * Babylon.js's getLastEntryById finds it */
+void loader_should_attach_a_child_to_the_last_node_of_its_parent_id(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"dup\",\"position\":[-2,0,0]},"
+                    "{\"id\":\"child\",\"parentId\":\"dup\"," TRI "},"
+                    "{\"id\":\"dup\",\"position\":[2,0,0]}]}";
+    mote_scene s;
+    load_json(j, "pd", &s);
+    TEST_ASSERT_EQUAL(3, s.mesh_count);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[2], s.meshes[1].parent);
+    mote_scene_free(&s);
+}
+
 void loader_should_use_the_first_camera_without_an_active_one(void)
 {
     const char *j = "{\"cameras\":[{\"id\":\"a\",\"position\":[1,2,3],\"target\":[0,0,0]},"
@@ -890,6 +904,7 @@ int main(void)
     RUN_TEST(loader_should_give_transform_nodes_a_mesh_to_be_parents);
     RUN_TEST(loader_should_resolve_a_numeric_parent_id_by_unique_id);
     RUN_TEST(loader_should_attach_a_child_to_the_instance_its_parent_index_names);
+    RUN_TEST(loader_should_attach_a_child_to_the_last_node_of_its_parent_id);
     RUN_TEST(loader_should_hide_invisible_and_disabled_meshes);
     RUN_TEST(loader_should_take_the_texture_row_of_v0_from_invert_y);
     RUN_TEST(loader_should_keep_explicit_zeros_of_scale_and_light);

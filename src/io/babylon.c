@@ -27,7 +27,9 @@
  *   uniqueId, is used before its materialId (current Babylon.js files).
  * - A materialId (or multi-material slot) naming nothing: default white
  *   material, with a warning. A parentId naming nothing is an error, and
- *   so is a parentInstanceIndex past the parent's instances.
+ *   so is a parentInstanceIndex past the parent's instances. A parentId
+ *   several nodes hold names the last of them (Babylon.js's
+ *   getLastEntryById).
  * - A mesh whose arrays are in another file (incremental or binary
  *   exports) loads without them, with a warning.
  * - Materials and multi-materials count against limits.max_meshes too, and
@@ -1349,7 +1351,7 @@ static R mote__parents(mote__ld *ld)
                                   "mesh or transform node", nd->where, nd->parent_id);
             continue;
         }
-        nd->parent = mote__idmap_find(ld->node_map, nd->parent_id);
+        nd->parent = mote__idmap_find_last(ld->node_map, nd->parent_id);
         if (nd->parent < 0)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
                               "transform node", nd->where, mote__quote(nd->parent_id).s);
