@@ -18,6 +18,7 @@
 
 #define MONKEY MOTE_SOURCE_DIR "/../shared/assets/monkey.babylon"
 #define VERTEX_COLORS MOTE_SOURCE_DIR "/tests/data/vertex_colors.babylon"
+#define DATA(name) MOTE_SOURCE_DIR "/tests/data/" name
 
 static char msg[512];
 static char tmpdir[256];
@@ -473,8 +474,34 @@ void loader_should_use_the_first_camera_without_an_active_one(void)
     load_json(j, "c", &s);
     TEST_ASSERT_TRUE(s.has_camera);
     ASSERT_VEC3(1.0f, 2.0f, 3.0f, s.camera.position, 0.0f);
-    TEST_ASSERT_EQUAL_FLOAT(0.8f, s.camera.fov); /* absent: the default */
+    /* absent: Babylon.js's Camera defaults */
+    TEST_ASSERT_EQUAL_FLOAT(0.8f, s.camera.fov);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(10000.0f, s.camera.zfar);
     TEST_ASSERT_EQUAL(0, s.mesh_count);
+    mote_scene_free(&s);
+}
+
+/* ---- cameras and lights -------------------------------------------------- */
+
+static void load_data(const char *path, mote_scene *s)
+{
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(path, NULL, s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_STRING("", s->warning);
+}
+
+/* minZ <= 0 projects as 0.1, maxZ 0 is no far plane (2^24 times the near
+ * distance), an absent maxZ is Babylon.js's 10000. */
+void loader_should_read_camera_planes_as_babylon_does(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_planes_zero.babylon"), &s);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f * 16777216.0f, s.camera.zfar);
+    mote_scene_free(&s);
+    load_data(DATA("camera_planes_default.babylon"), &s);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(10000.0f, s.camera.zfar);
     mote_scene_free(&s);
 }
 
@@ -748,6 +775,7 @@ int main(void)
     RUN_TEST(loader_should_share_a_geometry_between_the_meshes_naming_it);
     RUN_TEST(loader_should_draw_a_mesh_again_for_each_of_its_instances);
     RUN_TEST(loader_should_use_the_first_camera_without_an_active_one);
+    RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     RUN_TEST(texture_should_round_trip_a_png_exactly);
     RUN_TEST(texture_should_refuse_dimensions_over_the_limit_before_decoding);

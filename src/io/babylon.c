@@ -1399,17 +1399,27 @@ static R mote__camera(mote__ld *ld)
             c->target[k] = c->position[k] + w[8 + k];
     }
     MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
+    /* Babylon.js's Camera defaults */
     c->fov = 0.8f;
-    c->znear = 0.1f;
-    c->zfar = 100.0f;
+    c->znear = 1.0f;
+    c->zfar = 10000.0f;
     MOTE__TRY(mote__num(ld, cam, "fov", at, &c->fov));
     MOTE__TRY(mote__num(ld, cam, "minZ", at, &c->znear));
     MOTE__TRY(mote__num(ld, cam, "maxZ", at, &c->zfar));
     if (!(c->fov > 0.0f && c->fov < 3.14159f))
         return mote__fail(ld, MOTE_ERR_RANGE, "%s.fov: %g is not in (0, pi)", at, c->fov);
-    if (!(c->znear > 0.0f) || !(c->zfar > c->znear))
-        return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need 0 < minZ < maxZ",
-                          at, c->znear, c->zfar);
+    /* Babylon.js projects with minZ <= 0 as 0.1 */
+    if (c->znear <= 0.0f)
+        c->znear = 0.1f;
+    /* maxZ 0: an infinite far plane. 2^24 times the near distance instead:
+     * there far / (far - near), the factor depth differs by from an
+     * infinite projection's, is 1 within half a float epsilon, so depths
+     * match the infinite projection's to float rounding */
+    if (c->zfar == 0.0f)
+        c->zfar = c->znear * 16777216.0f;
+    if (!(c->zfar > c->znear))
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need minZ < maxZ "
+                          "(maxZ 0: no far plane)", at, c->znear, c->zfar);
     ld->scene->has_camera = true;
     return MOTE_OK;
 }
