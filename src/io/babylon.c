@@ -105,6 +105,7 @@ typedef struct mote__node {
     bool use_quat;
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
+    const cJSON *src;             /* the camera or light this stands for, or NULL */
     mote_vertex *verts;
     uint32_t nv;
     mote_rgba *colors;            /* one per vertex, or NULL */
@@ -150,6 +151,7 @@ typedef struct mote__ld {
     mote__idmap *geometry_map;
     mote__node *nodes;
     int node_count;
+    int node_cap;                 /* room for the cameras and lights in the tree */
     mote__idmap *node_map;
     int texture_cap;
     char **texture_paths;         /* resolved path of scene->textures[i] */
@@ -1144,10 +1146,19 @@ static R mote__nodes(mote__ld *ld)
         return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u "
                           "(transform nodes and instances count)", nm + nt + ni,
                           (unsigned)ld->lim.max_meshes);
-    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni, sizeof *ld->nodes);
+    /* cameras and lights may join the tree (mote__xnode); each becomes a
+     * mesh, so no more than the mesh limit leaves room for */
+    const cJSON *cams, *lights;
+    MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
+    MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
+    size_t nx = mote__array_len(cams) + mote__array_len(lights);
+    if (nx > ld->lim.max_meshes - (nm + nt + ni))
+        nx = ld->lim.max_meshes - (nm + nt + ni);
+    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni + nx, sizeof *ld->nodes);
     if (!ld->nodes)
         return mote__oom(ld, "meshes");
     ld->node_count = (int)(nm + nt + ni);
+    ld->node_cap = (int)(nm + nt + ni + nx);
     /* meshes, then transform nodes, then instances: each the source mesh's
      * geometry, material and sub-meshes with a transform and parent of its
      * own (Babylon.js's Mesh.Parse and createInstance) */
@@ -1182,6 +1193,183 @@ static R mote__nodes(mote__ld *ld)
     return MOTE_OK;
 }
 
+/* ---- cameras and lights in the node tree ------------------------------- */
+
+/* lights[k].type: 0 point, 1 directional, 2 spot, 3 hemispheric. */
+static R mote__light_type(mote__ld *ld, const cJSON *l, const char *at, uint32_t *t)
+{
+    char at2[64];
+    snprintf(at2, sizeof at2, "%s.type", at);
+    const cJSON *type = mote__get(l, "type");
+    if (!type)
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
+    return mote__to_uint(ld, type, at2, 0, 3, t);
+}
+
+/* Whether a camera or light entry is the one `key` names: by uniqueId when
+ * the reference was a number, else by id, or by name when it has no id (as
+ * Babylon.js gives a node without an id its name). */
+static bool mote__entry_named(const cJSON *e, const char *key, bool by_unique)
+{
+    if (!cJSON_IsObject(e))
+        return false;
+    if (by_unique) {
+        const cJSON *u = mote__get(e, "uniqueId");
+        char text[32];
+        if (!cJSON_IsNumber(u))
+            return false;
+        snprintf(text, sizeof text, "%.17g", u->valuedouble);
+        return strcmp(text, key) == 0;
+    }
+    const cJSON *id = cJSON_GetObjectItemCaseSensitive(e, "id");
+    if (!cJSON_IsString(id))
+        id = cJSON_GetObjectItemCaseSensitive(e, "name");
+    return cJSON_IsString(id) && strcmp(id->valuestring, key) == 0;
+}
+
+/* The node made for a camera or light entry, or -1. */
+static int mote__xnode_find(const mote__ld *ld, const cJSON *json)
+{
+    for (int i = 0; i < ld->node_count; i++)
+        if (ld->nodes[i].src == json)
+            return i;
+    return -1;
+}
+
+/* The node standing for a camera or light (json, at `where`), made on first
+ * use: in Babylon.js cameras and lights are nodes, so they may be parents
+ * and have parents. It goes at the end of ld->nodes with no id in the node
+ * maps (a mesh or transform node of the same id is found first, as in
+ * scene.getLastEntryById), no geometry, and hidden; its transform is the
+ * world matrix Babylon.js gives the camera or light. */
+static R mote__xnode(mote__ld *ld, const cJSON *json, const char *where, bool is_light,
+                     int *out)
+{
+    *out = mote__xnode_find(ld, json);
+    if (*out >= 0)
+        return MOTE_OK;
+    if (ld->node_count >= ld->node_cap)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than the limit of %u meshes (cameras "
+                          "and lights in the parent tree count)", where,
+                          (unsigned)ld->lim.max_meshes);
+    mote__node *nd = &ld->nodes[ld->node_count];
+    snprintf(nd->where, sizeof nd->where, "%s", where);
+    if (is_light) {
+        uint32_t t;
+        MOTE__TRY(mote__light_type(ld, json, where, &t));
+        if (t == 0 || t == 2)     /* legacy files keep the position in `data` */
+            MOTE__TRY(mote__vec(ld, json, "data", where, 3, 0, nd->position));
+        MOTE__TRY(mote__node_common(ld, json, where, nd));
+        /* a light's world matrix is its position only (ShadowLight); a
+         * hemispheric light's is the identity, parent or not */
+        memset(nd->rotation, 0, sizeof nd->rotation);
+        nd->use_quat = false;
+        if (t == 3) {
+            memset(nd->position, 0, sizeof nd->position);
+            nd->parent_id = NULL;
+        }
+    } else {
+        MOTE__TRY(mote__node_common(ld, json, where, nd));
+        float target[3];
+        if (mote__get(json, "target")) {
+            /* setTarget: yaw and pitch that turn +z toward the target, no roll */
+            MOTE__TRY(mote__vec(ld, json, "target", where, 3, 0, target));
+            float d[3] = {target[0] - nd->position[0], target[1] - nd->position[1],
+                          target[2] - nd->position[2]};
+            nd->rotation[0] = atan2f(-d[1], sqrtf(d[0] * d[0] + d[2] * d[2]));
+            nd->rotation[1] = atan2f(d[0], d[2]);
+            nd->rotation[2] = 0.0f;
+            nd->use_quat = false;
+        }
+    }
+    /* a camera's world matrix is its inverted view, a light's a translation:
+     * neither scales */
+    nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
+    nd->id = nd->unique_id = NULL;
+    nd->invisible = true;
+    nd->src = json;
+    *out = ld->node_count++;
+    return MOTE_OK;
+}
+
+/* A parentId that names no mesh or transform node may name a camera, then
+ * a light (scene.getLastEntryById's order, the last of equal ids winning).
+ * Leaves nd->parent -1 when nothing matches. */
+static R mote__camera_light_parent(mote__ld *ld, mote__node *nd)
+{
+    static const char *const lists[2] = {"cameras", "lights"};
+    for (int l = 0; l < 2; l++) {
+        const cJSON *arr = mote__get(ld->root, lists[l]), *hit = NULL;
+        int k = 0, hit_k = -1;
+        for (const cJSON *e = cJSON_IsArray(arr) ? arr->child : NULL; e; e = e->next, k++)
+            if (mote__entry_named(e, nd->parent_id, nd->parent_by_unique)) {
+                hit = e;
+                hit_k = k;
+            }
+        if (hit) {
+            char where[48];
+            snprintf(where, sizeof where, "%s[%d]", lists[l], hit_k);
+            return mote__xnode(ld, hit, where, l == 1, &nd->parent);
+        }
+    }
+    return MOTE_OK;
+}
+
+/* The active camera: the first whose id (or name) is activeCameraID (older
+ * files: activeCamera), else the first, with a warning. NULL: no cameras. */
+static R mote__active_camera(mote__ld *ld, bool warn, const cJSON **out, int *index)
+{
+    const cJSON *cams;
+    *out = NULL;
+    *index = 0;
+    MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
+    if (!cams || !cams->child)
+        return MOTE_OK;
+    const char *active;
+    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "", &active));
+    if (!active)
+        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "", &active));
+    *out = cams->child;
+    if (!active)
+        return MOTE_OK;
+    int k = 0;
+    for (const cJSON *c = cams->child; c; c = c->next, k++)
+        if (mote__entry_named(c, active, false)) {
+            *out = c;
+            *index = k;
+            return MOTE_OK;
+        }
+    if (warn)
+        mote__warn(ld, "activeCamera \"%s\" names no camera; the first one is used",
+                   mote__quote(active).s);
+    return MOTE_OK;
+}
+
+/* Nodes for the active camera and the lights that have a parent, made
+ * before the parents are resolved so that their chains are checked (cycles,
+ * depth) with the rest. */
+static R mote__camera_light_nodes(mote__ld *ld)
+{
+    const cJSON *cam, *lights;
+    int index, unused;
+    MOTE__TRY(mote__active_camera(ld, false, &cam, &index));
+    if (cam && cJSON_IsObject(cam) && mote__get(cam, "parentId")) {
+        char at[48];
+        snprintf(at, sizeof at, "cameras[%d]", index);
+        MOTE__TRY(mote__xnode(ld, cam, at, false, &unused));
+    }
+    MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
+    int i = 0;
+    for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
+        if (!cJSON_IsObject(l) || !mote__get(l, "parentId"))
+            continue;
+        char at[48];
+        snprintf(at, sizeof at, "lights[%d]", i);
+        MOTE__TRY(mote__xnode(ld, l, at, true, &unused));
+    }
+    return MOTE_OK;
+}
+
 /* parentId -> node index; then every chain must end (no cycle) within the
  * depth the core follows. */
 static R mote__parents(mote__ld *ld)
@@ -1201,11 +1389,15 @@ static R mote__parents(mote__ld *ld)
         if (nd->parent_by_unique) {
             nd->parent = mote__idmap_find(unique_map, nd->parent_id);
             if (nd->parent < 0)
+                MOTE__TRY(mote__camera_light_parent(ld, nd));
+            if (nd->parent < 0)
                 return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: %s is the uniqueId of no "
                                   "mesh or transform node", nd->where, nd->parent_id);
             continue;
         }
         nd->parent = mote__idmap_find(ld->node_map, nd->parent_id);
+        if (nd->parent < 0)
+            MOTE__TRY(mote__camera_light_parent(ld, nd));
         if (nd->parent < 0)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
                               "transform node", nd->where, mote__quote(nd->parent_id).s);
@@ -1351,52 +1543,76 @@ static R mote__build_meshes(mote__ld *ld)
 
 /* ---- camera, lights, scene colours ------------------------------------ */
 
+/* The world matrix of the parent of a camera or light, when it has one
+ * (its node: mote__camera_light_nodes). */
+static bool mote__parent_world(const mote__ld *ld, const cJSON *json, float w[16])
+{
+    int x = mote__xnode_find(ld, json);
+    if (x < 0 || ld->nodes[x].parent < 0)
+        return false;
+    mote_mesh_world_matrix(&ld->scene->meshes[ld->nodes[ld->nodes[x].parent].first_mesh], w);
+    return true;
+}
+
+/* p by the world matrix w: as a point (with w's translation) or not. */
+static void mote__transform(const float w[16], float p[3], bool point)
+{
+    float q[3];
+    for (int k = 0; k < 3; k++)
+        q[k] = w[k] * p[0] + w[4 + k] * p[1] + w[8 + k] * p[2] + (point ? w[12 + k] : 0.0f);
+    memcpy(p, q, sizeof q);
+}
+
+/* A node's or camera's rotation turning +z: the view direction (TargetCamera). */
+static void mote__forward(const float rotation[3], const float quat[4], bool use_quat,
+                          float out[3])
+{
+    mote_mesh turn;
+    memset(&turn, 0, sizeof turn);
+    memcpy(turn.rotation, rotation, sizeof turn.rotation);
+    memcpy(turn.rotation_quaternion, quat, sizeof turn.rotation_quaternion);
+    turn.use_quaternion = use_quat;
+    float w[16];
+    mote_mesh_world_matrix(&turn, w);
+    memcpy(out, &w[8], 3 * sizeof *out);
+}
+
 static R mote__camera(mote__ld *ld)
 {
-    const cJSON *cams;
-    MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
-    if (!cams || !cams->child)
+    const cJSON *cam;
+    int index;
+    MOTE__TRY(mote__active_camera(ld, true, &cam, &index));
+    if (!cam)
         return MOTE_OK;
-    const char *active;
-    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "", &active));
-    if (!active)
-        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "", &active));
-    const cJSON *cam = cams->child;
-    int index = 0;
-    if (active) {
-        int k = 0;
-        const cJSON *c = cams->child;
-        for (; c; c = c->next, k++) {
-            const cJSON *id = cJSON_GetObjectItemCaseSensitive(c, "id");
-            if (cJSON_IsString(id) && strcmp(id->valuestring, active) == 0)
-                break;
-        }
-        if (c) {
-            cam = c;
-            index = k;
-        } else {
-            mote__warn(ld, "activeCamera \"%s\" names no camera; the first one is used",
-                       mote__quote(active).s);
-        }
-    }
     char at[48];
     snprintf(at, sizeof at, "cameras[%d]", index);
     MOTE__TRY(mote__obj_at(ld, cam, at));
     mote_camera *c = &ld->scene->camera;
     memset(c, 0, sizeof *c);
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
-    if (mote__get(cam, "target")) {
+    const char *locked;
+    MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
+    int target_node = mote__idmap_find(ld->node_map, locked);
+    if (locked && target_node < 0)
+        mote__warn(ld, "%s.lockedTargetId: \"%s\" names no mesh or transform node; the "
+                   "camera's own direction is used", at, mote__quote(locked).s);
+    if (target_node >= 0) {
+        /* a target camera (3ds Max) looks at the node's world position */
+        float w[16];
+        mote_mesh_world_matrix(&ld->scene->meshes[ld->nodes[target_node].first_mesh], w);
+        memcpy(c->target, &w[12], sizeof c->target);
+    } else if (mote__get(cam, "target")) {
         MOTE__TRY(mote__vec(ld, cam, "target", at, 3, 0, c->target));
     } else {
-        /* target = position + forward (+z) turned by the yaw-pitch-roll
-         * rotation, the same rotation the core applies to meshes */
-        mote_mesh turn;
-        memset(&turn, 0, sizeof turn);
-        MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, turn.rotation));
-        float w[16];
-        mote_mesh_world_matrix(&turn, w);
+        /* target = position + forward (+z) turned by the rotation (yaw,
+         * pitch, roll; rotationQuaternion overrides it), as meshes turn */
+        float rotation[3] = {0, 0, 0}, quat[4] = {0, 0, 0, 1}, fwd[3];
+        MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, rotation));
+        bool use_quat = mote__get(cam, "rotationQuaternion") != NULL;
+        MOTE__TRY(mote__vec(ld, cam, "rotationQuaternion", at, 4, 0, quat));
+        mote__forward(rotation, quat, use_quat, fwd);
         for (int k = 0; k < 3; k++)
-            c->target[k] = c->position[k] + w[8 + k];
+            c->target[k] = c->position[k] + fwd[k];
     }
     MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
     /* Babylon.js's Camera defaults */
@@ -1420,6 +1636,16 @@ static R mote__camera(mote__ld *ld)
     if (!(c->zfar > c->znear))
         return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need minZ < maxZ "
                           "(maxZ 0: no far plane)", at, c->znear, c->zfar);
+    /* a parent (3ds Max rigs) moves and turns the whole view: the view
+     * matrix is the parent's world matrix after the camera's own */
+    float w[16];
+    if (mote__parent_world(ld, cam, w)) {
+        if (c->up[0] == 0.0f && c->up[1] == 0.0f && c->up[2] == 0.0f)
+            c->up[1] = 1.0f;
+        mote__transform(w, c->position, true);
+        mote__transform(w, c->target, true);
+        mote__transform(w, c->up, false);
+    }
     ld->scene->has_camera = true;
     return MOTE_OK;
 }
@@ -1431,15 +1657,11 @@ static R mote__lights(mote__ld *ld)
     int i = 0;
     mote_scene *sc = ld->scene;
     for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
-        char at[48], at2[64];
+        char at[48];
         snprintf(at, sizeof at, "lights[%d]", i);
         MOTE__TRY(mote__obj_at(ld, l, at));
-        const cJSON *type = mote__get(l, "type");
         uint32_t t = 0;
-        snprintf(at2, sizeof at2, "%s.type", at);
-        if (!type)
-            return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
-        MOTE__TRY(mote__to_uint(ld, type, at2, 0, 3, &t));
+        MOTE__TRY(mote__light_type(ld, l, at, &t));
         mote_light L;
         memset(&L, 0, sizeof L);
         float data[3] = {0, 0, 0};
@@ -1480,6 +1702,16 @@ static R mote__lights(mote__ld *ld)
         if (intensity == 0.0f) {
             L.intensity = 1.0f;
             memset(L.ground_color, 0, sizeof L.ground_color);
+        }
+        /* a parent moves a point or spot light and turns a directional one
+         * (ShadowLight's transformed position and direction); a
+         * hemispheric light keeps its direction (its node has no parent) */
+        float w[16];
+        if (mote__parent_world(ld, l, w)) {
+            if (L.type == MOTE_LIGHT_POINT)
+                mote__transform(w, L.position, true);
+            else
+                mote__transform(w, L.direction, false);
         }
         if (sc->light_count >= MOTE_MAX_LIGHTS) {
             mote__warn(ld, "%s: more than %d lights; this one is ignored", at,
@@ -1577,6 +1809,7 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     R r = mote__materials(ld);
     if (r == MOTE_OK) r = mote__multi_materials(ld);
     if (r == MOTE_OK) r = mote__nodes(ld);
+    if (r == MOTE_OK) r = mote__camera_light_nodes(ld);
     if (r == MOTE_OK) r = mote__parents(ld);
     if (r == MOTE_OK) r = mote__build_meshes(ld);
     if (r == MOTE_OK) r = mote__camera(ld);
