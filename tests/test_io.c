@@ -536,7 +536,8 @@ void loader_should_place_children_of_cameras_and_lights(void)
 
 /* A camera's and a light's parentId: the rig at x 5 turned a quarter to
  * the right carries the camera, the point light and the directional
- * light's direction; the hemispheric light ignores it (as in Babylon.js). */
+ * light's direction; the hemispheric light ignores it (as in Babylon.js);
+ * disabled lights, or lights under a disabled node, are left out. */
 void loader_should_apply_a_parent_to_the_camera_and_lights(void)
 {
     mote_scene s;
@@ -544,6 +545,7 @@ void loader_should_apply_a_parent_to_the_camera_and_lights(void)
     ASSERT_VEC3(-5.0f, 0.0f, 0.0f, s.camera.position, 1e-5f);
     ASSERT_VEC3(-4.0f, 0.0f, 0.0f, s.camera.target, 1e-5f);
     ASSERT_VEC3(0.0f, 1.0f, 0.0f, s.camera.up, 1e-6f);
+    TEST_ASSERT_TRUE(s.has_lights);
     TEST_ASSERT_EQUAL(3, s.light_count);
     TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, s.lights[0].type);
     ASSERT_VEC3(6.0f, 0.0f, 0.0f, s.lights[0].position, 1e-5f);
@@ -595,6 +597,20 @@ void loader_should_read_camera_planes_as_babylon_does(void)
     load_data(DATA("camera_planes_default.babylon"), &s);
     TEST_ASSERT_EQUAL_FLOAT(0.1f, s.camera.znear);
     TEST_ASSERT_EQUAL_FLOAT(10000.0f, s.camera.zfar);
+    mote_scene_free(&s);
+}
+
+/* A file whose only light is disabled is lit by nothing: no light, and no
+ * stand-in light from mote_scene_frame either. */
+void loader_should_leave_out_disabled_lights(void)
+{
+    mote_scene s;
+    load_data(DATA("light_all_disabled.babylon"), &s);
+    TEST_ASSERT_EQUAL(0, s.light_count);
+    TEST_ASSERT_TRUE(s.has_lights);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 1.0f, &f);
+    TEST_ASSERT_EQUAL(0, f.light_count);
     mote_scene_free(&s);
 }
 
@@ -874,6 +890,7 @@ int main(void)
     RUN_TEST(loader_should_turn_a_camera_by_its_quaternion);
     RUN_TEST(loader_should_find_the_active_camera_by_name);
     RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
+    RUN_TEST(loader_should_leave_out_disabled_lights);
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     RUN_TEST(texture_should_round_trip_a_png_exactly);
     RUN_TEST(texture_should_refuse_dimensions_over_the_limit_before_decoding);

@@ -1453,16 +1453,20 @@ static const mote__mat *mote__resolve_material(mote__ld *ld, const mote__node *n
     return slot >= 0 ? &ld->mats[slot] : NULL;
 }
 
-/* Whether a node is drawn: not if it is invisible, or it or a parent is
- * disabled (chains are finite and short: mote__parents). */
-static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
+/* Whether it or a parent is disabled (chains are finite and short:
+ * mote__parents). */
+static bool mote__node_disabled(const mote__ld *ld, const mote__node *nd)
 {
-    if (nd->invisible)
-        return true;
     for (; nd; nd = nd->parent >= 0 ? &ld->nodes[nd->parent] : NULL)
         if (nd->disabled)
             return true;
     return false;
+}
+
+/* Whether a node is not drawn: it is invisible or disabled. */
+static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
+{
+    return nd->invisible || mote__node_disabled(ld, nd);
 }
 
 static R mote__build_meshes(mote__ld *ld)
@@ -1656,6 +1660,7 @@ static R mote__lights(mote__ld *ld)
     MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
     int i = 0;
     mote_scene *sc = ld->scene;
+    sc->has_lights = lights && lights->child;
     for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
         char at[48];
         snprintf(at, sizeof at, "lights[%d]", i);
@@ -1703,6 +1708,12 @@ static R mote__lights(mote__ld *ld)
             L.intensity = 1.0f;
             memset(L.ground_color, 0, sizeof L.ground_color);
         }
+        /* a disabled light, or one under a disabled parent, lights nothing */
+        bool enabled = true;
+        MOTE__TRY(mote__flag(ld, l, "isEnabled", at, &enabled));
+        int x = mote__xnode_find(ld, l);
+        if (!enabled || (x >= 0 && mote__node_disabled(ld, &ld->nodes[x])))
+            continue;
         /* a parent moves a point or spot light and turns a directional one
          * (ShadowLight's transformed position and direction); a
          * hemispheric light keeps its direction (its node has no parent) */
@@ -1972,7 +1983,8 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
     for (int i = 0; i < n; i++)
         frame->lights[i] = scene->lights[i];
     frame->light_count = n;
-    if (n == 0) {
+    /* a file whose lights are all disabled is lit by none, as in Babylon.js */
+    if (n == 0 && !scene->has_lights) {
         mote_light *l = &frame->lights[0];
         l->type = MOTE_LIGHT_POINT;
         memcpy(l->position, frame->camera.position, sizeof l->position);
