@@ -22,6 +22,25 @@
  * - Materials and multi-materials count against limits.max_meshes too, and
  *   so do transform nodes and instances.
  * - Meshes naming one geometryId, and a mesh's instances, share its arrays.
+ *
+ * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
+ * - A parentId naming no mesh or transform node may name a camera, then a
+ *   light (by id, name when it has no id, or uniqueId). That camera or
+ *   light, and the active camera and every light with a parentId, get a
+ *   hidden 0-vertex mesh after the others in scene.meshes (mote__xnode), so
+ *   their chains are checked and placed like any other: a camera's turns
+ *   as its view, a light's is its position only, a hemispheric light's is
+ *   the identity (its parent ignored).
+ * - The active camera's parent moves its position, target and up; a
+ *   light's moves a point or spot light's position and turns a directional
+ *   light's direction. A light disabled, or under a disabled node, is left
+ *   out; when all are, mote_scene_frame adds no stand-in (has_lights).
+ * - lockedTargetId (a mesh or transform node; else a warning) sets the
+ *   target to that node's world position; then target, then rotation
+ *   (rotationQuaternion overriding it) give the view direction.
+ * - minZ and maxZ default to 1 and 10000 (Camera's); minZ <= 0 is 0.1,
+ *   maxZ 0 is no far plane (a far one: mote__camera); minZ >= maxZ is an
+ *   error. activeCameraID matches an id, or a name when there is no id.
  */
 #include "io_internal.h"
 
