@@ -534,6 +534,18 @@ void loader_should_place_children_of_cameras_and_lights(void)
     mote_scene_free(&s);
 }
 
+/* Equal ids: the last camera wins (scene.getLastEntryById), and a camera
+ * comes before a light. */
+void loader_should_take_the_last_camera_of_an_id_as_parent(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_parent_duplicate_id.babylon"), &s);
+    float p[3];
+    world_origin(&s.meshes[0], p);
+    ASSERT_VEC3(7.0f, 0.0f, 0.0f, p, 1e-5f);
+    mote_scene_free(&s);
+}
+
 /* A camera's and a light's parentId: the rig at x 5 turned a quarter to
  * the right carries the camera, the point light and the directional
  * light's direction; the hemispheric light ignores it (as in Babylon.js);
@@ -885,6 +897,7 @@ int main(void)
     RUN_TEST(loader_should_draw_a_mesh_again_for_each_of_its_instances);
     RUN_TEST(loader_should_use_the_first_camera_without_an_active_one);
     RUN_TEST(loader_should_place_children_of_cameras_and_lights);
+    RUN_TEST(loader_should_take_the_last_camera_of_an_id_as_parent);
     RUN_TEST(loader_should_apply_a_parent_to_the_camera_and_lights);
     RUN_TEST(loader_should_aim_a_camera_at_its_locked_target);
     RUN_TEST(loader_should_turn_a_camera_by_its_quaternion);

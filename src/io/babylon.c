@@ -25,12 +25,13 @@
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
- *   light (by id, name when it has no id, or uniqueId). That camera or
- *   light, and the active camera and every light with a parentId, get a
- *   hidden 0-vertex mesh after the others in scene.meshes (mote__xnode), so
- *   their chains are checked and placed like any other: a camera's turns
- *   as its view, a light's is its position only, a hemispheric light's is
- *   the identity (its parent ignored).
+ *   light (by id, name when it has no id, or uniqueId; the last of equal
+ *   ones, as scene.getLastEntryById). That camera or light, the active
+ *   camera and every light with a parentId get a hidden 0-vertex mesh
+ *   after the others in scene.meshes (mote__xnode), so their chains are
+ *   checked and placed like any other: a camera's turns as its view, a
+ *   light's is its position only, a hemispheric light's is the identity
+ *   (its parent ignored).
  * - The active camera's parent moves its position, target and up; a
  *   light's moves a point or spot light's position and turns a directional
  *   light's direction. A light disabled, or under a disabled node, is left
@@ -124,7 +125,6 @@ typedef struct mote__node {
     bool use_quat;
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
-    const cJSON *src;             /* the camera or light this stands for, or NULL */
     mote_vertex *verts;
     uint32_t nv;
     mote_rgba *colors;            /* one per vertex, or NULL */
@@ -149,6 +149,17 @@ typedef struct mote__idmap {
     int index;
 } mote__idmap;
 
+/* The cameras or the lights: their entries, the node made for each (-1:
+ * none yet; mote__xnode), and maps by id (or name) and by uniqueId built
+ * from the entries in reverse, so that a map's match is the file's last
+ * entry (scene.getLastEntryById): entry count - 1 - index. */
+typedef struct mote__xlist {
+    const cJSON **items;
+    int *node;
+    int count;
+    mote__idmap *ids, *uniques;
+} mote__xlist;
+
 typedef struct mote__ld {
     char name[128];
     const char *base_dir;
@@ -171,6 +182,7 @@ typedef struct mote__ld {
     mote__node *nodes;
     int node_count;
     int node_cap;                 /* room for the cameras and lights in the tree */
+    mote__xlist xlists[2];        /* cameras, lights */
     mote__idmap *node_map;
     int texture_cap;
     char **texture_paths;         /* resolved path of scene->textures[i] */
@@ -1225,46 +1237,76 @@ static R mote__light_type(mote__ld *ld, const cJSON *l, const char *at, uint32_t
     return mote__to_uint(ld, type, at2, 0, 3, t);
 }
 
-/* Whether a camera or light entry is the one `key` names: by uniqueId when
- * the reference was a number, else by id, or by name when it has no id (as
- * Babylon.js gives a node without an id its name). */
-static bool mote__entry_named(const cJSON *e, const char *key, bool by_unique)
+/* What a camera or light is found by: its id, or its name when it has no
+ * id (Babylon.js gives a node without an id its name); NULL: neither. */
+static const char *mote__entry_key(const cJSON *e)
 {
-    if (!cJSON_IsObject(e))
-        return false;
-    if (by_unique) {
-        const cJSON *u = mote__get(e, "uniqueId");
-        char text[32];
-        if (!cJSON_IsNumber(u))
-            return false;
-        snprintf(text, sizeof text, "%.17g", u->valuedouble);
-        return strcmp(text, key) == 0;
-    }
     const cJSON *id = cJSON_GetObjectItemCaseSensitive(e, "id");
     if (!cJSON_IsString(id))
         id = cJSON_GetObjectItemCaseSensitive(e, "name");
-    return cJSON_IsString(id) && strcmp(id->valuestring, key) == 0;
+    return cJSON_IsString(id) ? id->valuestring : NULL;
 }
 
-/* The node made for a camera or light entry, or -1. */
-static int mote__xnode_find(const mote__ld *ld, const cJSON *json)
+typedef struct mote__xkey {
+    const char *id, *unique;
+} mote__xkey;
+
+/* ld->xlists: maps, so that a file with many parents or lights is not
+ * searched once per reference. */
+static R mote__xlists(mote__ld *ld)
 {
-    for (int i = 0; i < ld->node_count; i++)
-        if (ld->nodes[i].src == json)
-            return i;
-    return -1;
+    static const char *const names[2] = {"cameras", "lights"};
+    for (int l = 0; l < 2; l++) {
+        mote__xlist *x = &ld->xlists[l];
+        const cJSON *arr;
+        MOTE__TRY(mote__arr(ld, ld->root, names[l], "", &arr));
+        size_t n = mote__array_len(arr);
+        x->items = mote__store_alloc(&ld->tmp, n, sizeof *x->items);
+        x->node = mote__store_alloc(&ld->tmp, n, sizeof *x->node);
+        mote__xkey *keys = mote__store_alloc(&ld->tmp, n, sizeof *keys);
+        if (!x->items || !x->node || !keys)
+            return mote__oom(ld, names[l]);
+        int k = 0;
+        for (const cJSON *e = arr ? arr->child : NULL; e; e = e->next, k++) {
+            x->items[k] = e;
+            x->node[k] = -1;
+            mote__xkey *key = &keys[n - 1 - (size_t)k];
+            if (!cJSON_IsObject(e))
+                continue;
+            key->id = mote__entry_key(e);
+            const cJSON *u = mote__get(e, "uniqueId");
+            if (cJSON_IsNumber(u) && isfinite(u->valuedouble)) {
+                char text[32];
+                int len = snprintf(text, sizeof text, "%.17g", u->valuedouble);
+                char *copy = mote__store_alloc(&ld->tmp, (size_t)len + 1, 1);
+                if (!copy)
+                    return mote__oom(ld, names[l]);
+                memcpy(copy, text, (size_t)len + 1);
+                key->unique = copy;
+            }
+        }
+        x->count = k;
+        int dup;
+        x->ids = mote__idmap_build(ld, &keys[0].id, sizeof *keys, k, &dup);
+        x->uniques = mote__idmap_build(ld, &keys[0].unique, sizeof *keys, k, &dup);
+        if (!x->ids || !x->uniques)
+            return mote__oom(ld, names[l]);
+    }
+    return MOTE_OK;
 }
 
-/* The node standing for a camera or light (json, at `where`), made on first
- * use: in Babylon.js cameras and lights are nodes, so they may be parents
+/* The node standing for cameras[k] (list 0) or lights[k] (list 1), at
+ * `where`, made on first use: in Babylon.js cameras and lights are nodes, so they may be parents
  * and have parents. It goes at the end of ld->nodes with no id in the node
  * maps (a mesh or transform node of the same id is found first, as in
  * scene.getLastEntryById), no geometry, and hidden; its transform is the
  * world matrix Babylon.js gives the camera or light. */
-static R mote__xnode(mote__ld *ld, const cJSON *json, const char *where, bool is_light,
-                     int *out)
+static R mote__xnode(mote__ld *ld, int list, int k, const char *where, int *out)
 {
-    *out = mote__xnode_find(ld, json);
+    mote__xlist *x = &ld->xlists[list];
+    const cJSON *json = x->items[k];
+    bool is_light = list == 1;
+    *out = x->node[k];
     if (*out >= 0)
         return MOTE_OK;
     if (ld->node_count >= ld->node_cap)
@@ -1306,8 +1348,7 @@ static R mote__xnode(mote__ld *ld, const cJSON *json, const char *where, bool is
     nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
     nd->id = nd->unique_id = NULL;
     nd->invisible = true;
-    nd->src = json;
-    *out = ld->node_count++;
+    *out = x->node[k] = ld->node_count++;
     return MOTE_OK;
 }
 
@@ -1316,19 +1357,14 @@ static R mote__xnode(mote__ld *ld, const cJSON *json, const char *where, bool is
  * Leaves nd->parent -1 when nothing matches. */
 static R mote__camera_light_parent(mote__ld *ld, mote__node *nd)
 {
-    static const char *const lists[2] = {"cameras", "lights"};
     for (int l = 0; l < 2; l++) {
-        const cJSON *arr = mote__get(ld->root, lists[l]), *hit = NULL;
-        int k = 0, hit_k = -1;
-        for (const cJSON *e = cJSON_IsArray(arr) ? arr->child : NULL; e; e = e->next, k++)
-            if (mote__entry_named(e, nd->parent_id, nd->parent_by_unique)) {
-                hit = e;
-                hit_k = k;
-            }
-        if (hit) {
+        const mote__xlist *x = &ld->xlists[l];
+        int r = mote__idmap_find(nd->parent_by_unique ? x->uniques : x->ids, nd->parent_id);
+        if (r >= 0) {
+            int k = x->count - 1 - r;
             char where[48];
-            snprintf(where, sizeof where, "%s[%d]", lists[l], hit_k);
-            return mote__xnode(ld, hit, where, l == 1, &nd->parent);
+            snprintf(where, sizeof where, "%s[%d]", l ? "lights" : "cameras", k);
+            return mote__xnode(ld, l, k, where, &nd->parent);
         }
     }
     return MOTE_OK;
@@ -1352,12 +1388,14 @@ static R mote__active_camera(mote__ld *ld, bool warn, const cJSON **out, int *in
     if (!active)
         return MOTE_OK;
     int k = 0;
-    for (const cJSON *c = cams->child; c; c = c->next, k++)
-        if (mote__entry_named(c, active, false)) {
+    for (const cJSON *c = cams->child; c; c = c->next, k++) {
+        const char *key = cJSON_IsObject(c) ? mote__entry_key(c) : NULL;
+        if (key && strcmp(key, active) == 0) {
             *out = c;
             *index = k;
             return MOTE_OK;
         }
+    }
     if (warn)
         mote__warn(ld, "activeCamera \"%s\" names no camera; the first one is used",
                    mote__quote(active).s);
@@ -1369,22 +1407,22 @@ static R mote__active_camera(mote__ld *ld, bool warn, const cJSON **out, int *in
  * depth) with the rest. */
 static R mote__camera_light_nodes(mote__ld *ld)
 {
-    const cJSON *cam, *lights;
+    const cJSON *cam;
     int index, unused;
+    MOTE__TRY(mote__xlists(ld));
     MOTE__TRY(mote__active_camera(ld, false, &cam, &index));
     if (cam && cJSON_IsObject(cam) && mote__get(cam, "parentId")) {
         char at[48];
         snprintf(at, sizeof at, "cameras[%d]", index);
-        MOTE__TRY(mote__xnode(ld, cam, at, false, &unused));
+        MOTE__TRY(mote__xnode(ld, 0, index, at, &unused));
     }
-    MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
-    int i = 0;
-    for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
-        if (!cJSON_IsObject(l) || !mote__get(l, "parentId"))
+    const mote__xlist *lights = &ld->xlists[1];
+    for (int i = 0; i < lights->count; i++) {
+        if (!cJSON_IsObject(lights->items[i]) || !mote__get(lights->items[i], "parentId"))
             continue;
         char at[48];
         snprintf(at, sizeof at, "lights[%d]", i);
-        MOTE__TRY(mote__xnode(ld, l, at, true, &unused));
+        MOTE__TRY(mote__xnode(ld, 1, i, at, &unused));
     }
     return MOTE_OK;
 }
@@ -1566,11 +1604,11 @@ static R mote__build_meshes(mote__ld *ld)
 
 /* ---- camera, lights, scene colours ------------------------------------ */
 
-/* The world matrix of the parent of a camera or light, when it has one
- * (its node: mote__camera_light_nodes). */
-static bool mote__parent_world(const mote__ld *ld, const cJSON *json, float w[16])
+/* The world matrix of the parent of cameras[k] (list 0) or lights[k] (1),
+ * when it has one (its node: mote__camera_light_nodes). */
+static bool mote__parent_world(const mote__ld *ld, int list, int k, float w[16])
 {
-    int x = mote__xnode_find(ld, json);
+    int x = ld->xlists[list].node[k];
     if (x < 0 || ld->nodes[x].parent < 0)
         return false;
     mote_mesh_world_matrix(&ld->scene->meshes[ld->nodes[ld->nodes[x].parent].first_mesh], w);
@@ -1662,7 +1700,7 @@ static R mote__camera(mote__ld *ld)
     /* a parent (3ds Max rigs) moves and turns the whole view: the view
      * matrix is the parent's world matrix after the camera's own */
     float w[16];
-    if (mote__parent_world(ld, cam, w)) {
+    if (mote__parent_world(ld, 0, index, w)) {
         if (c->up[0] == 0.0f && c->up[1] == 0.0f && c->up[2] == 0.0f)
             c->up[1] = 1.0f;
         mote__transform(w, c->position, true);
@@ -1730,14 +1768,14 @@ static R mote__lights(mote__ld *ld)
         /* a disabled light, or one under a disabled parent, lights nothing */
         bool enabled = true;
         MOTE__TRY(mote__flag(ld, l, "isEnabled", at, &enabled));
-        int x = mote__xnode_find(ld, l);
+        int x = ld->xlists[1].node[i];
         if (!enabled || (x >= 0 && mote__node_disabled(ld, &ld->nodes[x])))
             continue;
         /* a parent moves a point or spot light and turns a directional one
          * (ShadowLight's transformed position and direction); a
          * hemispheric light keeps its direction (its node has no parent) */
         float w[16];
-        if (mote__parent_world(ld, l, w)) {
+        if (mote__parent_world(ld, 1, i, w)) {
             if (L.type == MOTE_LIGHT_POINT)
                 mote__transform(w, L.position, true);
             else
