@@ -18,6 +18,7 @@
 
 #define MONKEY MOTE_SOURCE_DIR "/../shared/assets/monkey.babylon"
 #define VERTEX_COLORS MOTE_SOURCE_DIR "/tests/data/vertex_colors.babylon"
+#define DATA(name) MOTE_SOURCE_DIR "/tests/data/" name
 
 static char msg[512];
 static char tmpdir[256];
@@ -634,8 +635,155 @@ void loader_should_use_the_first_camera_without_an_active_one(void)
     load_json(j, "c", &s);
     TEST_ASSERT_TRUE(s.has_camera);
     ASSERT_VEC3(1.0f, 2.0f, 3.0f, s.camera.position, 0.0f);
-    TEST_ASSERT_EQUAL_FLOAT(0.8f, s.camera.fov); /* absent: the default */
+    /* absent: Babylon.js's Camera defaults */
+    TEST_ASSERT_EQUAL_FLOAT(0.8f, s.camera.fov);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(10000.0f, s.camera.zfar);
     TEST_ASSERT_EQUAL(0, s.mesh_count);
+    mote_scene_free(&s);
+}
+
+/* ---- cameras and lights -------------------------------------------------- */
+
+static void load_data(const char *path, mote_scene *s)
+{
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(path, NULL, s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_STRING("", s->warning);
+}
+
+/* Where a mesh's origin lands in the world. */
+static void world_origin(const mote_mesh *m, float out[3])
+{
+    float w[16];
+    mote_mesh_world_matrix(m, w);
+    memcpy(out, &w[12], 3 * sizeof *out);
+}
+
+/* Meshes parented to cameras and lights, by id and by uniqueId: a camera
+ * turns its children as its view turns (its target gives yaw and pitch), a
+ * light only moves them, a hemispheric light not even that. */
+void loader_should_place_children_of_cameras_and_lights(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_light_parents.babylon"), &s);
+    /* seven meshes, then hidden nodes for cam, side, p, h and above */
+    TEST_ASSERT_EQUAL(12, s.mesh_count);
+    for (int i = 7; i < 12; i++) {
+        TEST_ASSERT_TRUE(s.meshes[i].hidden);
+        TEST_ASSERT_EQUAL_UINT32(0, s.meshes[i].vertex_count);
+    }
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].parent, s.meshes[1].parent);
+    float p[3];
+    world_origin(&s.meshes[0], p);         /* 5 ahead of the camera at z -10 */
+    ASSERT_VEC3(0.0f, 0.0f, -5.0f, p, 1e-5f);
+    world_origin(&s.meshes[1], p);         /* by uniqueId 42 */
+    ASSERT_VEC3(1.0f, 0.0f, -10.0f, p, 1e-5f);
+    world_origin(&s.meshes[2], p);         /* "side" at x 3 looks down -x */
+    ASSERT_VEC3(1.0f, 0.0f, 0.0f, p, 1e-5f);
+    world_origin(&s.meshes[3], p);         /* its right is +z */
+    ASSERT_VEC3(3.0f, 0.0f, 1.0f, p, 1e-5f);
+    world_origin(&s.meshes[4], p);         /* the point light at y 5 */
+    ASSERT_VEC3(1.0f, 5.0f, 0.0f, p, 1e-5f);
+    world_origin(&s.meshes[5], p);         /* a hemispheric light: the identity */
+    ASSERT_VEC3(0.0f, 2.0f, 0.0f, p, 1e-5f);
+    world_origin(&s.meshes[6], p);         /* "above" pitches down a quarter */
+    ASSERT_VEC3(0.0f, 3.0f, 0.0f, p, 1e-5f);
+    /* the scene's own camera and lights are as before */
+    ASSERT_VEC3(0.0f, 0.0f, -10.0f, s.camera.position, 0.0f);
+    TEST_ASSERT_EQUAL(2, s.light_count);
+    ASSERT_VEC3(0.0f, 5.0f, 0.0f, s.lights[0].position, 0.0f);
+    mote_scene_free(&s);
+}
+
+/* Equal ids: the last camera wins (scene.getLastEntryById), and a camera
+ * comes before a light. */
+void loader_should_take_the_last_camera_of_an_id_as_parent(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_parent_duplicate_id.babylon"), &s);
+    float p[3];
+    world_origin(&s.meshes[0], p);
+    ASSERT_VEC3(7.0f, 0.0f, 0.0f, p, 1e-5f);
+    mote_scene_free(&s);
+}
+
+/* A camera's and a light's parentId: the rig at x 5 turned a quarter to
+ * the right carries the camera, the point light and the directional
+ * light's direction; the hemispheric light ignores it (as in Babylon.js);
+ * disabled lights, or lights under a disabled node, are left out. */
+void loader_should_apply_a_parent_to_the_camera_and_lights(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_parent.babylon"), &s);
+    ASSERT_VEC3(-5.0f, 0.0f, 0.0f, s.camera.position, 1e-5f);
+    ASSERT_VEC3(-4.0f, 0.0f, 0.0f, s.camera.target, 1e-5f);
+    ASSERT_VEC3(0.0f, 1.0f, 0.0f, s.camera.up, 1e-6f);
+    TEST_ASSERT_TRUE(s.has_lights);
+    TEST_ASSERT_EQUAL(3, s.light_count);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, s.lights[0].type);
+    ASSERT_VEC3(6.0f, 0.0f, 0.0f, s.lights[0].position, 1e-5f);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_DIRECTIONAL, s.lights[1].type);
+    ASSERT_VEC3(1.0f, 0.0f, 0.0f, s.lights[1].direction, 1e-6f);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_HEMISPHERIC, s.lights[2].type);
+    ASSERT_VEC3(0.0f, 1.0f, 0.0f, s.lights[2].direction, 0.0f);
+    mote_scene_free(&s);
+}
+
+/* lockedTargetId: the camera looks at the node's world position. */
+void loader_should_aim_a_camera_at_its_locked_target(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_locked_target.babylon"), &s);
+    ASSERT_VEC3(0.0f, 0.0f, -10.0f, s.camera.position, 0.0f);
+    ASSERT_VEC3(2.0f, 3.0f, 0.0f, s.camera.target, 1e-6f);
+    mote_scene_free(&s);
+}
+
+/* rotationQuaternion overrides rotation: a quarter turn left looks down -x. */
+void loader_should_turn_a_camera_by_its_quaternion(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_quaternion.babylon"), &s);
+    ASSERT_VEC3(10.0f, 0.0f, 0.0f, s.camera.position, 0.0f);
+    ASSERT_VEC3(9.0f, 0.0f, 0.0f, s.camera.target, 1e-6f);
+    mote_scene_free(&s);
+}
+
+/* activeCameraID finds a camera by name when it has no id. */
+void loader_should_find_the_active_camera_by_name(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_name_only.babylon"), &s);
+    ASSERT_VEC3(3.0f, 0.0f, -10.0f, s.camera.position, 0.0f);
+    mote_scene_free(&s);
+}
+
+/* minZ <= 0 projects as 0.1, maxZ 0 is no far plane (2^24 times the near
+ * distance), an absent maxZ is Babylon.js's 10000. */
+void loader_should_read_camera_planes_as_babylon_does(void)
+{
+    mote_scene s;
+    load_data(DATA("camera_planes_zero.babylon"), &s);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f * 16777216.0f, s.camera.zfar);
+    mote_scene_free(&s);
+    load_data(DATA("camera_planes_default.babylon"), &s);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(10000.0f, s.camera.zfar);
+    mote_scene_free(&s);
+}
+
+/* A file whose only light is disabled is lit by nothing: no light, and no
+ * stand-in light from mote_scene_frame either. */
+void loader_should_leave_out_disabled_lights(void)
+{
+    mote_scene s;
+    load_data(DATA("light_all_disabled.babylon"), &s);
+    TEST_ASSERT_EQUAL(0, s.light_count);
+    TEST_ASSERT_TRUE(s.has_lights);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 1.0f, &f);
+    TEST_ASSERT_EQUAL(0, f.light_count);
     mote_scene_free(&s);
 }
 
@@ -911,6 +1059,14 @@ int main(void)
     RUN_TEST(loader_should_share_a_geometry_between_the_meshes_naming_it);
     RUN_TEST(loader_should_draw_a_mesh_again_for_each_of_its_instances);
     RUN_TEST(loader_should_use_the_first_camera_without_an_active_one);
+    RUN_TEST(loader_should_place_children_of_cameras_and_lights);
+    RUN_TEST(loader_should_take_the_last_camera_of_an_id_as_parent);
+    RUN_TEST(loader_should_apply_a_parent_to_the_camera_and_lights);
+    RUN_TEST(loader_should_aim_a_camera_at_its_locked_target);
+    RUN_TEST(loader_should_turn_a_camera_by_its_quaternion);
+    RUN_TEST(loader_should_find_the_active_camera_by_name);
+    RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
+    RUN_TEST(loader_should_leave_out_disabled_lights);
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     RUN_TEST(texture_should_round_trip_a_png_exactly);
     RUN_TEST(texture_should_refuse_dimensions_over_the_limit_before_decoding);

@@ -271,6 +271,19 @@ void loader_should_refuse_counts_over_the_limits(void)
     TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_scene_load_memory(j, strlen(j), "l", NULL, &lim, &s,
                                                              msg, sizeof msg));
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "2 meshes, more than the limit of 1"), msg);
+    /* a camera that is a parent becomes a mesh and counts */
+    const char *cam = "{\"meshes\":[{\"id\":\"m\",\"parentId\":\"c\"}],"
+                      "\"cameras\":[{\"id\":\"c\"}]}";
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_scene_load_memory(cam, strlen(cam), "l", NULL, &lim,
+                                                             &s, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "l: cameras[0]: more than the limit of 1 meshes"),
+                                 msg);
+    TEST_ASSERT_TRUE(scene_is_zeroed(&s));
+    lim.max_meshes = 2;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(cam, strlen(cam), "l", NULL, &lim,
+                                                              &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    mote_scene_free(&s);
     lim = mote_limits_default();
     lim.max_json_depth = 2;
     TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_scene_load_memory(j, strlen(j), "l", NULL, &lim, &s,

@@ -60,6 +60,7 @@ typedef struct mote_scene {
     bool has_camera;
     mote_light lights[MOTE_MAX_LIGHTS];
     int light_count;
+    bool has_lights;              /* the file lists lights, perhaps all disabled */
     float ambient[3];
     mote_rgba clear_color;
     float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
@@ -97,7 +98,7 @@ void mote_scene_free(mote_scene *scene);
 
 /* Fills a frame (camera, lights, ambient) for the scene: its own camera when
  * it has one, else a camera that frames the bounding box from the front-top
- * right; with no lights, a point light above the camera. */
+ * right; when the file lists no lights, a point light above the camera. */
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
 
 /* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with

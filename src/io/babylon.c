@@ -39,6 +39,26 @@
  *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
  * - With no base_dir (mote_scene_load_memory), embedded images are not
  *   loaded either: no textures at all, as documented.
+ *
+ * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
+ * - A parentId naming no mesh or transform node may name a camera, then a
+ *   light (by id, name when it has no id, or uniqueId; the last of equal
+ *   ones, as scene.getLastEntryById). That camera or light, the active
+ *   camera and every light with a parentId get a hidden 0-vertex mesh
+ *   after the others in scene.meshes (mote__xnode), so their chains are
+ *   checked and placed like any other: a camera's turns as its view, a
+ *   light's is its position only, a hemispheric light's is the identity
+ *   (its parent ignored).
+ * - The active camera's parent moves its position, target and up; a
+ *   light's moves a point or spot light's position and turns a directional
+ *   light's direction. A light disabled, or under a disabled node, is left
+ *   out; when all are, mote_scene_frame adds no stand-in (has_lights).
+ * - lockedTargetId (a mesh or transform node; else a warning) sets the
+ *   target to that node's world position; then target, then rotation
+ *   (rotationQuaternion overriding it) give the view direction.
+ * - minZ and maxZ default to 1 and 10000 (Camera's); minZ <= 0 is 0.1,
+ *   maxZ 0 is no far plane (a far one: mote__camera); minZ >= maxZ is an
+ *   error. activeCameraID matches an id, or a name when there is no id.
  */
 #include "io_internal.h"
 
@@ -162,6 +182,17 @@ typedef struct mote__idmap {
     int index;
 } mote__idmap;
 
+/* The cameras or the lights: their entries, the node made for each (-1:
+ * none yet; mote__xnode), and maps by id (or name) and by uniqueId built
+ * from the entries in reverse, so that a map's match is the file's last
+ * entry (scene.getLastEntryById): entry count - 1 - index. */
+typedef struct mote__xlist {
+    const cJSON **items;
+    int *node;
+    int count;
+    mote__idmap *ids, *uniques;
+} mote__xlist;
+
 typedef struct mote__ld {
     char name[128];
     const char *base_dir;
@@ -183,6 +214,8 @@ typedef struct mote__ld {
     mote__idmap *geometry_map;
     mote__node *nodes;
     int node_count;
+    int node_cap;                 /* room for the cameras and lights in the tree */
+    mote__xlist xlists[2];        /* cameras, lights */
     mote__idmap *node_map;
     bool any_uv2;                 /* a material samples uvs2: keep them while loading */
     int texture_cap;
@@ -1287,10 +1320,19 @@ static R mote__nodes(mote__ld *ld)
         return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u "
                           "(transform nodes and instances count)", nm + nt + ni,
                           (unsigned)ld->lim.max_meshes);
-    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni, sizeof *ld->nodes);
+    /* cameras and lights may join the tree (mote__xnode); each becomes a
+     * mesh, so no more than the mesh limit leaves room for */
+    const cJSON *cams, *lights;
+    MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
+    MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
+    size_t nx = mote__array_len(cams) + mote__array_len(lights);
+    if (nx > ld->lim.max_meshes - (nm + nt + ni))
+        nx = ld->lim.max_meshes - (nm + nt + ni);
+    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni + nx, sizeof *ld->nodes);
     if (!ld->nodes)
         return mote__oom(ld, "meshes");
     ld->node_count = (int)(nm + nt + ni);
+    ld->node_cap = (int)(nm + nt + ni + nx);
     /* meshes, then transform nodes, then instances: each the source mesh's
      * geometry, material and sub-meshes with a transform and parent of its
      * own (Babylon.js's Mesh.Parse and createInstance) */
@@ -1328,6 +1370,209 @@ static R mote__nodes(mote__ld *ld)
     return MOTE_OK;
 }
 
+/* ---- cameras and lights in the node tree ------------------------------- */
+
+/* lights[k].type: 0 point, 1 directional, 2 spot, 3 hemispheric. */
+static R mote__light_type(mote__ld *ld, const cJSON *l, const char *at, uint32_t *t)
+{
+    char at2[64];
+    snprintf(at2, sizeof at2, "%s.type", at);
+    const cJSON *type = mote__get(l, "type");
+    if (!type)
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
+    return mote__to_uint(ld, type, at2, 0, 3, t);
+}
+
+/* What a camera or light is found by: its id, or its name when it has no
+ * id (Babylon.js gives a node without an id its name); NULL: neither. */
+static const char *mote__entry_key(const cJSON *e)
+{
+    const cJSON *id = cJSON_GetObjectItemCaseSensitive(e, "id");
+    if (!cJSON_IsString(id))
+        id = cJSON_GetObjectItemCaseSensitive(e, "name");
+    return cJSON_IsString(id) ? id->valuestring : NULL;
+}
+
+typedef struct mote__xkey {
+    const char *id, *unique;
+} mote__xkey;
+
+/* ld->xlists: maps, so that a file with many parents or lights is not
+ * searched once per reference. */
+static R mote__xlists(mote__ld *ld)
+{
+    static const char *const names[2] = {"cameras", "lights"};
+    for (int l = 0; l < 2; l++) {
+        mote__xlist *x = &ld->xlists[l];
+        const cJSON *arr;
+        MOTE__TRY(mote__arr(ld, ld->root, names[l], "", &arr));
+        size_t n = mote__array_len(arr);
+        x->items = mote__store_alloc(&ld->tmp, n, sizeof *x->items);
+        x->node = mote__store_alloc(&ld->tmp, n, sizeof *x->node);
+        mote__xkey *keys = mote__store_alloc(&ld->tmp, n, sizeof *keys);
+        if (!x->items || !x->node || !keys)
+            return mote__oom(ld, names[l]);
+        int k = 0;
+        for (const cJSON *e = arr ? arr->child : NULL; e; e = e->next, k++) {
+            x->items[k] = e;
+            x->node[k] = -1;
+            mote__xkey *key = &keys[n - 1 - (size_t)k];
+            if (!cJSON_IsObject(e))
+                continue;
+            key->id = mote__entry_key(e);
+            const cJSON *u = mote__get(e, "uniqueId");
+            if (cJSON_IsNumber(u) && isfinite(u->valuedouble)) {
+                char text[32];
+                int len = snprintf(text, sizeof text, "%.17g", u->valuedouble);
+                char *copy = mote__store_alloc(&ld->tmp, (size_t)len + 1, 1);
+                if (!copy)
+                    return mote__oom(ld, names[l]);
+                memcpy(copy, text, (size_t)len + 1);
+                key->unique = copy;
+            }
+        }
+        x->count = k;
+        int dup;
+        x->ids = mote__idmap_build(ld, &keys[0].id, sizeof *keys, k, &dup);
+        x->uniques = mote__idmap_build(ld, &keys[0].unique, sizeof *keys, k, &dup);
+        if (!x->ids || !x->uniques)
+            return mote__oom(ld, names[l]);
+    }
+    return MOTE_OK;
+}
+
+/* The node standing for cameras[k] (list 0) or lights[k] (list 1), at
+ * `where`, made on first use: in Babylon.js cameras and lights are nodes, so they may be parents
+ * and have parents. It goes at the end of ld->nodes with no id in the node
+ * maps (a mesh or transform node of the same id is found first, as in
+ * scene.getLastEntryById), no geometry, and hidden; its transform is the
+ * world matrix Babylon.js gives the camera or light. */
+static R mote__xnode(mote__ld *ld, int list, int k, const char *where, int *out)
+{
+    mote__xlist *x = &ld->xlists[list];
+    const cJSON *json = x->items[k];
+    bool is_light = list == 1;
+    *out = x->node[k];
+    if (*out >= 0)
+        return MOTE_OK;
+    if (ld->node_count >= ld->node_cap)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than the limit of %u meshes (cameras "
+                          "and lights in the parent tree count)", where,
+                          (unsigned)ld->lim.max_meshes);
+    mote__node *nd = &ld->nodes[ld->node_count];
+    snprintf(nd->where, sizeof nd->where, "%s", where);
+    if (is_light) {
+        uint32_t t;
+        MOTE__TRY(mote__light_type(ld, json, where, &t));
+        if (t == 0 || t == 2)     /* legacy files keep the position in `data` */
+            MOTE__TRY(mote__vec(ld, json, "data", where, 3, 0, nd->position));
+        MOTE__TRY(mote__node_common(ld, json, where, nd));
+        /* a light's world matrix is its position only (ShadowLight); a
+         * hemispheric light's is the identity, parent or not */
+        memset(nd->rotation, 0, sizeof nd->rotation);
+        nd->use_quat = false;
+        if (t == 3) {
+            memset(nd->position, 0, sizeof nd->position);
+            nd->parent_id = NULL;
+        }
+    } else {
+        MOTE__TRY(mote__node_common(ld, json, where, nd));
+        float target[3];
+        if (mote__get(json, "target")) {
+            /* setTarget: yaw and pitch that turn +z toward the target, no roll */
+            MOTE__TRY(mote__vec(ld, json, "target", where, 3, 0, target));
+            float d[3] = {target[0] - nd->position[0], target[1] - nd->position[1],
+                          target[2] - nd->position[2]};
+            nd->rotation[0] = atan2f(-d[1], sqrtf(d[0] * d[0] + d[2] * d[2]));
+            nd->rotation[1] = atan2f(d[0], d[2]);
+            nd->rotation[2] = 0.0f;
+            nd->use_quat = false;
+        }
+    }
+    /* a camera's world matrix is its inverted view, a light's a translation:
+     * neither scales */
+    nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
+    nd->id = nd->unique_id = NULL;
+    nd->invisible = true;
+    *out = x->node[k] = ld->node_count++;
+    return MOTE_OK;
+}
+
+/* A parentId that names no mesh or transform node may name a camera, then
+ * a light (scene.getLastEntryById's order, the last of equal ids winning).
+ * Leaves nd->parent -1 when nothing matches. */
+static R mote__camera_light_parent(mote__ld *ld, mote__node *nd)
+{
+    for (int l = 0; l < 2; l++) {
+        const mote__xlist *x = &ld->xlists[l];
+        int r = mote__idmap_find(nd->parent_by_unique ? x->uniques : x->ids, nd->parent_id);
+        if (r >= 0) {
+            int k = x->count - 1 - r;
+            char where[48];
+            snprintf(where, sizeof where, "%s[%d]", l ? "lights" : "cameras", k);
+            return mote__xnode(ld, l, k, where, &nd->parent);
+        }
+    }
+    return MOTE_OK;
+}
+
+/* The active camera: the first whose id (or name) is activeCameraID (older
+ * files: activeCamera), else the first, with a warning. NULL: no cameras. */
+static R mote__active_camera(mote__ld *ld, bool warn, const cJSON **out, int *index)
+{
+    const cJSON *cams;
+    *out = NULL;
+    *index = 0;
+    MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
+    if (!cams || !cams->child)
+        return MOTE_OK;
+    const char *active;
+    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "", &active));
+    if (!active)
+        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "", &active));
+    *out = cams->child;
+    if (!active)
+        return MOTE_OK;
+    int k = 0;
+    for (const cJSON *c = cams->child; c; c = c->next, k++) {
+        const char *key = cJSON_IsObject(c) ? mote__entry_key(c) : NULL;
+        if (key && strcmp(key, active) == 0) {
+            *out = c;
+            *index = k;
+            return MOTE_OK;
+        }
+    }
+    if (warn)
+        mote__warn(ld, "activeCamera \"%s\" names no camera; the first one is used",
+                   mote__quote(active).s);
+    return MOTE_OK;
+}
+
+/* Nodes for the active camera and the lights that have a parent, made
+ * before the parents are resolved so that their chains are checked (cycles,
+ * depth) with the rest. */
+static R mote__camera_light_nodes(mote__ld *ld)
+{
+    const cJSON *cam;
+    int index, unused;
+    MOTE__TRY(mote__xlists(ld));
+    MOTE__TRY(mote__active_camera(ld, false, &cam, &index));
+    if (cam && cJSON_IsObject(cam) && mote__get(cam, "parentId")) {
+        char at[48];
+        snprintf(at, sizeof at, "cameras[%d]", index);
+        MOTE__TRY(mote__xnode(ld, 0, index, at, &unused));
+    }
+    const mote__xlist *lights = &ld->xlists[1];
+    for (int i = 0; i < lights->count; i++) {
+        if (!cJSON_IsObject(lights->items[i]) || !mote__get(lights->items[i], "parentId"))
+            continue;
+        char at[48];
+        snprintf(at, sizeof at, "lights[%d]", i);
+        MOTE__TRY(mote__xnode(ld, 1, i, at, &unused));
+    }
+    return MOTE_OK;
+}
+
 /* parentId -> node index; then every chain must end (no cycle) within the
  * depth the core follows. */
 static R mote__parents(mote__ld *ld)
@@ -1347,11 +1592,15 @@ static R mote__parents(mote__ld *ld)
         if (nd->parent_by_unique) {
             nd->parent = mote__idmap_find(unique_map, nd->parent_id);
             if (nd->parent < 0)
+                MOTE__TRY(mote__camera_light_parent(ld, nd));
+            if (nd->parent < 0)
                 return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: %s is the uniqueId of no "
                                   "mesh or transform node", nd->where, nd->parent_id);
             continue;
         }
         nd->parent = mote__idmap_find_last(ld->node_map, nd->parent_id);
+        if (nd->parent < 0)
+            MOTE__TRY(mote__camera_light_parent(ld, nd));
         if (nd->parent < 0)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
                               "transform node", nd->where, mote__quote(nd->parent_id).s);
@@ -1431,12 +1680,10 @@ static const mote__mat *mote__resolve_material(mote__ld *ld, const mote__node *n
     return slot >= 0 ? &ld->mats[slot] : NULL;
 }
 
-/* Whether a node is drawn: not if it is invisible, or it or a parent is
- * disabled (chains are finite and short: mote__parents). */
-static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
+/* Whether it or a parent is disabled (chains are finite and short:
+ * mote__parents). */
+static bool mote__node_disabled(const mote__ld *ld, const mote__node *nd)
 {
-    if (nd->invisible)
-        return true;
     for (; nd; nd = nd->parent >= 0 ? &ld->nodes[nd->parent] : NULL)
         if (nd->disabled)
             return true;
@@ -1466,6 +1713,12 @@ static R mote__uv2_vertices(mote__ld *ld, mote__node *nd, mote_mesh *m)
     }
     m->vertices = owner->verts2;
     return MOTE_OK;
+}
+
+/* Whether a node is not drawn: it is invisible or disabled. */
+static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
+{
+    return nd->invisible || mote__node_disabled(ld, nd);
 }
 
 static R mote__build_meshes(mote__ld *ld)
@@ -1555,65 +1808,109 @@ static R mote__build_meshes(mote__ld *ld)
 
 /* ---- camera, lights, scene colours ------------------------------------ */
 
+/* The world matrix of the parent of cameras[k] (list 0) or lights[k] (1),
+ * when it has one (its node: mote__camera_light_nodes). */
+static bool mote__parent_world(const mote__ld *ld, int list, int k, float w[16])
+{
+    int x = ld->xlists[list].node[k];
+    if (x < 0 || ld->nodes[x].parent < 0)
+        return false;
+    mote_mesh_world_matrix(&ld->scene->meshes[ld->nodes[ld->nodes[x].parent].first_mesh], w);
+    return true;
+}
+
+/* p by the world matrix w: as a point (with w's translation) or not. */
+static void mote__transform(const float w[16], float p[3], bool point)
+{
+    float q[3];
+    for (int k = 0; k < 3; k++)
+        q[k] = w[k] * p[0] + w[4 + k] * p[1] + w[8 + k] * p[2] + (point ? w[12 + k] : 0.0f);
+    memcpy(p, q, sizeof q);
+}
+
+/* A node's or camera's rotation turning +z: the view direction (TargetCamera). */
+static void mote__forward(const float rotation[3], const float quat[4], bool use_quat,
+                          float out[3])
+{
+    mote_mesh turn;
+    memset(&turn, 0, sizeof turn);
+    memcpy(turn.rotation, rotation, sizeof turn.rotation);
+    memcpy(turn.rotation_quaternion, quat, sizeof turn.rotation_quaternion);
+    turn.use_quaternion = use_quat;
+    float w[16];
+    mote_mesh_world_matrix(&turn, w);
+    memcpy(out, &w[8], 3 * sizeof *out);
+}
+
 static R mote__camera(mote__ld *ld)
 {
-    const cJSON *cams;
-    MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
-    if (!cams || !cams->child)
+    const cJSON *cam;
+    int index;
+    MOTE__TRY(mote__active_camera(ld, true, &cam, &index));
+    if (!cam)
         return MOTE_OK;
-    const char *active;
-    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "", &active));
-    if (!active)
-        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "", &active));
-    const cJSON *cam = cams->child;
-    int index = 0;
-    if (active) {
-        int k = 0;
-        const cJSON *c = cams->child;
-        for (; c; c = c->next, k++) {
-            const cJSON *id = cJSON_GetObjectItemCaseSensitive(c, "id");
-            if (cJSON_IsString(id) && strcmp(id->valuestring, active) == 0)
-                break;
-        }
-        if (c) {
-            cam = c;
-            index = k;
-        } else {
-            mote__warn(ld, "activeCamera \"%s\" names no camera; the first one is used",
-                       mote__quote(active).s);
-        }
-    }
     char at[48];
     snprintf(at, sizeof at, "cameras[%d]", index);
     MOTE__TRY(mote__obj_at(ld, cam, at));
     mote_camera *c = &ld->scene->camera;
     memset(c, 0, sizeof *c);
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
-    if (mote__get(cam, "target")) {
+    const char *locked;
+    MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
+    int target_node = mote__idmap_find(ld->node_map, locked);
+    if (locked && target_node < 0)
+        mote__warn(ld, "%s.lockedTargetId: \"%s\" names no mesh or transform node; the "
+                   "camera's own direction is used", at, mote__quote(locked).s);
+    if (target_node >= 0) {
+        /* a target camera (3ds Max) looks at the node's world position */
+        float w[16];
+        mote_mesh_world_matrix(&ld->scene->meshes[ld->nodes[target_node].first_mesh], w);
+        memcpy(c->target, &w[12], sizeof c->target);
+    } else if (mote__get(cam, "target")) {
         MOTE__TRY(mote__vec(ld, cam, "target", at, 3, 0, c->target));
     } else {
-        /* target = position + forward (+z) turned by the yaw-pitch-roll
-         * rotation, the same rotation the core applies to meshes */
-        mote_mesh turn;
-        memset(&turn, 0, sizeof turn);
-        MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, turn.rotation));
-        float w[16];
-        mote_mesh_world_matrix(&turn, w);
+        /* target = position + forward (+z) turned by the rotation (yaw,
+         * pitch, roll; rotationQuaternion overrides it), as meshes turn */
+        float rotation[3] = {0, 0, 0}, quat[4] = {0, 0, 0, 1}, fwd[3];
+        MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, rotation));
+        bool use_quat = mote__get(cam, "rotationQuaternion") != NULL;
+        MOTE__TRY(mote__vec(ld, cam, "rotationQuaternion", at, 4, 0, quat));
+        mote__forward(rotation, quat, use_quat, fwd);
         for (int k = 0; k < 3; k++)
-            c->target[k] = c->position[k] + w[8 + k];
+            c->target[k] = c->position[k] + fwd[k];
     }
     MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
+    /* Babylon.js's Camera defaults */
     c->fov = 0.8f;
-    c->znear = 0.1f;
-    c->zfar = 100.0f;
+    c->znear = 1.0f;
+    c->zfar = 10000.0f;
     MOTE__TRY(mote__num(ld, cam, "fov", at, &c->fov));
     MOTE__TRY(mote__num(ld, cam, "minZ", at, &c->znear));
     MOTE__TRY(mote__num(ld, cam, "maxZ", at, &c->zfar));
     if (!(c->fov > 0.0f && c->fov < 3.14159f))
         return mote__fail(ld, MOTE_ERR_RANGE, "%s.fov: %g is not in (0, pi)", at, c->fov);
-    if (!(c->znear > 0.0f) || !(c->zfar > c->znear))
-        return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need 0 < minZ < maxZ",
-                          at, c->znear, c->zfar);
+    /* Babylon.js projects with minZ <= 0 as 0.1 */
+    if (c->znear <= 0.0f)
+        c->znear = 0.1f;
+    /* maxZ 0: an infinite far plane. 2^24 times the near distance instead:
+     * there far / (far - near), the factor depth differs by from an
+     * infinite projection's, is 1 within half a float epsilon, so depths
+     * match the infinite projection's to float rounding */
+    if (c->zfar == 0.0f)
+        c->zfar = c->znear * 16777216.0f;
+    if (!(c->zfar > c->znear))
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need minZ < maxZ "
+                          "(maxZ 0: no far plane)", at, c->znear, c->zfar);
+    /* a parent (3ds Max rigs) moves and turns the whole view: the view
+     * matrix is the parent's world matrix after the camera's own */
+    float w[16];
+    if (mote__parent_world(ld, 0, index, w)) {
+        if (c->up[0] == 0.0f && c->up[1] == 0.0f && c->up[2] == 0.0f)
+            c->up[1] = 1.0f;
+        mote__transform(w, c->position, true);
+        mote__transform(w, c->target, true);
+        mote__transform(w, c->up, false);
+    }
     ld->scene->has_camera = true;
     return MOTE_OK;
 }
@@ -1624,16 +1921,13 @@ static R mote__lights(mote__ld *ld)
     MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
     int i = 0;
     mote_scene *sc = ld->scene;
+    sc->has_lights = lights && lights->child;
     for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
-        char at[48], at2[64];
+        char at[48];
         snprintf(at, sizeof at, "lights[%d]", i);
         MOTE__TRY(mote__obj_at(ld, l, at));
-        const cJSON *type = mote__get(l, "type");
         uint32_t t = 0;
-        snprintf(at2, sizeof at2, "%s.type", at);
-        if (!type)
-            return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
-        MOTE__TRY(mote__to_uint(ld, type, at2, 0, 3, &t));
+        MOTE__TRY(mote__light_type(ld, l, at, &t));
         mote_light L;
         memset(&L, 0, sizeof L);
         float data[3] = {0, 0, 0};
@@ -1674,6 +1968,22 @@ static R mote__lights(mote__ld *ld)
         if (intensity == 0.0f) {
             L.intensity = 1.0f;
             memset(L.ground_color, 0, sizeof L.ground_color);
+        }
+        /* a disabled light, or one under a disabled parent, lights nothing */
+        bool enabled = true;
+        MOTE__TRY(mote__flag(ld, l, "isEnabled", at, &enabled));
+        int x = ld->xlists[1].node[i];
+        if (!enabled || (x >= 0 && mote__node_disabled(ld, &ld->nodes[x])))
+            continue;
+        /* a parent moves a point or spot light and turns a directional one
+         * (ShadowLight's transformed position and direction); a
+         * hemispheric light keeps its direction (its node has no parent) */
+        float w[16];
+        if (mote__parent_world(ld, 1, i, w)) {
+            if (L.type == MOTE_LIGHT_POINT)
+                mote__transform(w, L.position, true);
+            else
+                mote__transform(w, L.direction, false);
         }
         if (sc->light_count >= MOTE_MAX_LIGHTS) {
             mote__warn(ld, "%s: more than %d lights; this one is ignored", at,
@@ -1771,6 +2081,7 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     R r = mote__materials(ld);
     if (r == MOTE_OK) r = mote__multi_materials(ld);
     if (r == MOTE_OK) r = mote__nodes(ld);
+    if (r == MOTE_OK) r = mote__camera_light_nodes(ld);
     if (r == MOTE_OK) r = mote__parents(ld);
     if (r == MOTE_OK) r = mote__build_meshes(ld);
     if (r == MOTE_OK) r = mote__camera(ld);
@@ -1949,7 +2260,8 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
     for (int i = 0; i < n; i++)
         frame->lights[i] = scene->lights[i];
     frame->light_count = n;
-    if (n == 0) {
+    /* a file whose lights are all disabled is lit by none, as in Babylon.js */
+    if (n == 0 && !scene->has_lights) {
         mote_light *l = &frame->lights[0];
         l->type = MOTE_LIGHT_POINT;
         memcpy(l->position, frame->camera.position, sizeof l->position);
