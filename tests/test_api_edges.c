@@ -246,7 +246,7 @@ void band_mode_should_clear_every_band_even_when_asked_to_keep(void)
  * texels would be read unaligned): the mesh is drawn untextured. */
 void textures_with_bad_strides_should_draw_untextured(void)
 {
-    static uint16_t texels[16 * 16 + 8];
+    static uint16_t texels[17 * 16 + 8];   /* room for the padded stride below (34 bytes a row) */
     static uint8_t plain[W * H * 4], got[W * H * 4];
     static uint32_t depth[W * H];
     for (size_t i = 0; i < sizeof texels / sizeof texels[0]; i++)
