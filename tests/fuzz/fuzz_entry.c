@@ -953,6 +953,32 @@ const char *mote_fuzz_texture(const uint8_t *data, size_t size)
                 err = "texture: message overran a short buffer or was not terminated";
         }
     }
+    /* an input that reads as a data: URL is also an embedded image: the
+     * base64 decoder in front of the same checks */
+    if (!err && size >= 5 && size < ((size_t)1 << 24)) {
+        char *url = (char *)malloc(size + 1);
+        if (url) {
+            memcpy(url, data, size);
+            url[size] = '\0';
+            if (mote__io_is_data_url(url)) {
+                memset(&t, 0, sizeof t);
+                r = mote__io_texture_load_data_url(url, &lim, &t, msg, sizeof msg);
+                if (r == MOTE_OK) {
+                    if (t.width < 1 || t.height < 1 || t.width > lim.max_texture_width
+                        || t.height > lim.max_texture_height || !t.pixels)
+                        err = "data URL: loaded with an impossible size or no pixels";
+                    mote_texture_free(&t);
+                } else if ((int)r <= 0 || r >= MOTE_RESULT_COUNT) {
+                    err = "data URL: result out of range";
+                } else if (t.pixels || t.width || t.height) {
+                    err = "data URL: failed load left a texture behind";
+                } else {
+                    err = fz_check_message(msg, sizeof msg);
+                }
+            }
+            free(url);
+        }
+    }
     if (!err && mote__io_live_allocations() != live)
         err = "texture: allocations leaked (mote__io_live_allocations)";
     return err;
