@@ -2,7 +2,8 @@
  * mote-bake - turns a .babylon scene into a C header that firmware compiles
  * in: const vertex, vertex colour and index arrays, textures already in the
  * target pixel format, the meshes as mote_mesh (material.texture pointing at the baked
- * texture), the frame (camera, lights, ambient) and the clear colour. The
+ * texture), which of them are drawn two-sided, the frame (camera, lights,
+ * ambient) and the clear colour. The
  * firmware then renders with no file system, no JSON and no heap.
  *
  *   mote-bake SCENE.babylon -o scene.h [--format rgb565|rgba8888|grey8]
@@ -337,6 +338,13 @@ static int bake(baker *b, int width, int height, const char *source)
         fprintf(f, "static const mote_mesh %s_meshes[%d] = {\n", b->name, s->mesh_count);
         for (int i = 0; i < s->mesh_count; i++)
             write_mesh(b, i);
+        fprintf(f, "};\n\n");
+        /* culling is a draw option, not a mesh field: the firmware reads
+         * this to draw a mesh whose material has backFaceCulling false */
+        fprintf(f, "/* per mesh: draw with cull = MOTE_CULL_NONE (backFaceCulling false) */\n");
+        fprintf(f, "static const bool %s_two_sided[%d] = {", b->name, s->mesh_count);
+        for (int i = 0; i < s->mesh_count; i++)
+            fprintf(f, "%s%d", i ? ", " : "", s->two_sided && s->two_sided[i] ? 1 : 0);
         fprintf(f, "};\n\n");
     }
 

@@ -92,9 +92,12 @@ int main(void)
         fail("mote_device_init", r);
     if ((r = mote_begin(&dev, &scene_frame)) != MOTE_OK)
         fail("mote_begin", r);
-    for (int i = 0; i < SCENE_MESH_COUNT; i++)
-        if ((r = mote_draw(&dev, &scene_meshes[i], NULL)) != MOTE_OK)
+    for (int i = 0; i < SCENE_MESH_COUNT; i++) {
+        mote_draw_desc draw = {0};
+        draw.cull = scene_two_sided[i] ? MOTE_CULL_NONE : MOTE_CULL_DEFAULT;
+        if ((r = mote_draw(&dev, &scene_meshes[i], &draw)) != MOTE_OK)
             fail("mote_draw", r);
+    }
     if ((r = mote_end(&dev)) != MOTE_OK)
         fail("mote_end", r);
     if (fc.out_of_order || fc.next_row != H) {

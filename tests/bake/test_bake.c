@@ -82,10 +82,24 @@ void a_baked_scene_should_render_the_same_bytes_as_the_loaded_one(void)
     }
 }
 
+/* A mesh whose material has backFaceCulling false is baked as two-sided
+ * (the scene's grey material says so, for the sub-mesh drawn with it). */
+void baked_meshes_should_keep_which_are_two_sided(void)
+{
+    TEST_ASSERT_NOT_NULL(scene.two_sided);
+    int two = 0;
+    for (int i = 0; i < scene.mesh_count; i++) {
+        TEST_ASSERT_EQUAL(scene.two_sided[i], baked_two_sided[i]);
+        two += baked_two_sided[i];
+    }
+    TEST_ASSERT_TRUE(two > 0 && two < scene.mesh_count);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(baked_meshes_should_hold_the_loaded_arrays_and_vertex_colours);
     RUN_TEST(a_baked_scene_should_render_the_same_bytes_as_the_loaded_one);
+    RUN_TEST(baked_meshes_should_keep_which_are_two_sided);
     return UNITY_END();
 }
