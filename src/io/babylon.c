@@ -183,9 +183,9 @@ typedef struct mote__idmap {
 } mote__idmap;
 
 /* The cameras or the lights: their entries, the node made for each (-1:
- * none yet; mote__xnode), and maps by id (or name) and by uniqueId built
- * from the entries in reverse, so that a map's match is the file's last
- * entry (scene.getLastEntryById): entry count - 1 - index. */
+ * none yet; mote__xnode), and maps by id (or name) and by uniqueId, looked
+ * up for the file's last entry (mote__idmap_find_last, as
+ * scene.getLastEntryById). */
 typedef struct mote__xlist {
     const cJSON **items;
     int *node;
@@ -424,6 +424,19 @@ static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *
 
 /* key -> a number's text ("%.17g", so equal numbers give equal text) or
  * NULL (absent); anything else is an error. For numeric ids. */
+/* v as text ("%.17g", in the temporary store): how uniqueIds are compared */
+static R mote__double_text(mote__ld *ld, double v, const char *at, const char **out)
+{
+    char text[32];
+    int n = snprintf(text, sizeof text, "%.17g", v);
+    char *copy = mote__store_alloc(&ld->tmp, (size_t)n + 1, 1);
+    if (!copy)
+        return mote__oom(ld, at);
+    memcpy(copy, text, (size_t)n + 1);
+    *out = copy;
+    return MOTE_OK;
+}
+
 static R mote__number_text(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
                            const char **out)
 {
@@ -435,14 +448,7 @@ static R mote__number_text(mote__ld *ld, const cJSON *obj, const char *key, cons
     snprintf(at, sizeof at, "%s.%s", where, key);
     float unused;
     MOTE__TRY(mote__to_float(ld, v, at, &unused));   /* a finite number */
-    char text[32];
-    int n = snprintf(text, sizeof text, "%.17g", v->valuedouble);
-    char *copy = mote__store_alloc(&ld->tmp, (size_t)n + 1, 1);
-    if (!copy)
-        return mote__oom(ld, at);
-    memcpy(copy, text, (size_t)n + 1);
-    *out = copy;
-    return MOTE_OK;
+    return mote__double_text(ld, v->valuedouble, at, out);
 }
 
 /* key -> array or NULL (absent); anything else is an error. */
@@ -532,8 +538,8 @@ static int mote__idmap_find(const mote__idmap *m, const char *id)
     return mote__idmap_lookup(m, id, false);
 }
 
-/* Materials resolve as Babylon.js's scene.getLastMaterialById does: the
- * last of equal ids. */
+/* The last of equal ids, as Babylon.js resolves materials
+ * (getLastMaterialById) and parents (getLastEntryById). */
 static int mote__idmap_find_last(const mote__idmap *m, const char *id)
 {
     return mote__idmap_lookup(m, id, true);
@@ -1416,20 +1422,13 @@ static R mote__xlists(mote__ld *ld)
         for (const cJSON *e = arr ? arr->child : NULL; e; e = e->next, k++) {
             x->items[k] = e;
             x->node[k] = -1;
-            mote__xkey *key = &keys[n - 1 - (size_t)k];
+            mote__xkey *key = &keys[k];
             if (!cJSON_IsObject(e))
                 continue;
             key->id = mote__entry_key(e);
             const cJSON *u = mote__get(e, "uniqueId");
-            if (cJSON_IsNumber(u) && isfinite(u->valuedouble)) {
-                char text[32];
-                int len = snprintf(text, sizeof text, "%.17g", u->valuedouble);
-                char *copy = mote__store_alloc(&ld->tmp, (size_t)len + 1, 1);
-                if (!copy)
-                    return mote__oom(ld, names[l]);
-                memcpy(copy, text, (size_t)len + 1);
-                key->unique = copy;
-            }
+            if (cJSON_IsNumber(u) && isfinite(u->valuedouble))
+                MOTE__TRY(mote__double_text(ld, u->valuedouble, names[l], &key->unique));
         }
         x->count = k;
         int dup;
@@ -1505,9 +1504,8 @@ static R mote__camera_light_parent(mote__ld *ld, mote__node *nd)
 {
     for (int l = 0; l < 2; l++) {
         const mote__xlist *x = &ld->xlists[l];
-        int r = mote__idmap_find(nd->parent_by_unique ? x->uniques : x->ids, nd->parent_id);
-        if (r >= 0) {
-            int k = x->count - 1 - r;
+        int k = mote__idmap_find_last(nd->parent_by_unique ? x->uniques : x->ids, nd->parent_id);
+        if (k >= 0) {
             char where[48];
             snprintf(where, sizeof where, "%s[%d]", l ? "lights" : "cameras", k);
             return mote__xnode(ld, l, k, where, &nd->parent);
@@ -1857,7 +1855,7 @@ static R mote__camera(mote__ld *ld)
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
     const char *locked;
     MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
-    int target_node = mote__idmap_find(ld->node_map, locked);
+    int target_node = mote__idmap_find_last(ld->node_map, locked);
     if (locked && target_node < 0)
         mote__warn(ld, "%s.lockedTargetId: \"%s\" names no mesh or transform node; the "
                    "camera's own direction is used", at, mote__quote(locked).s);
