@@ -50,10 +50,22 @@ static mote__raster_state texture_state(mote__tex_kind kind, const mote_texture 
     return rs;
 }
 
+/* A random shade in (0, 1]; with edges, one in three at a value whose
+ * 16-bit halves are extreme (the vector colour arithmetic splits a shade
+ * into them). */
+static int32_t random_shade(bool edges_too)
+{
+    static const int32_t edges[] = {MOTE__SHADE_ONE, MOTE__SHADE_ONE - 1, 0xffff, 0x10000, 0xff0000 | 0xffff, 1};
+    if (edges_too && next_u32() % 3 == 0)
+        return edges[next_u32() % (sizeof edges / sizeof edges[0])];
+    return (int32_t)(frand(1e-6f, 1.0f) * MOTE__SHADE_ONE);
+}
+
 /* A random triangle over the W x H target and a little past its edges,
  * with random w, depth and texel coordinates (u within +-uv_range, v half
  * that), shaded as shade kind sk makes shades: flat, one shade for all
- * (grey when grey); mono, grey vertices; RGB, any; black, zero. */
+ * (grey when grey); mono, grey vertices; RGB, any; black, zero. Only
+ * vertex 0 takes extreme shades, so that shades still vary. */
 static void random_triangle(int32_t X[3], int32_t Y[3], mote__svert v[3], int sk, bool grey, float uv_range)
 {
     for (int k = 0; k < 3; k++) {
@@ -65,8 +77,7 @@ static void random_triangle(int32_t X[3], int32_t Y[3], mote__svert v[3], int sk
         for (int c = 0; c < 3; c++)
             v[k].s[c] = sk == MOTE__SHADE_FLAT && k > 0 ? v[0].s[c]
                       : (sk == MOTE__SHADE_MONO || (sk == MOTE__SHADE_FLAT && grey)) && c > 0
-                      ? v[k].s[0] : sk == MOTE__SHADE_BLACK ? 0
-                      : (int32_t)(frand(1e-6f, 1.0f) * MOTE__SHADE_ONE);
+                      ? v[k].s[0] : sk == MOTE__SHADE_BLACK ? 0 : random_shade(k == 0);
         v[k].texel[0] = (int64_t)(frand(-uv_range, uv_range) * 65536.0f);
         v[k].texel[1] = (int64_t)(frand(-uv_range / 2.0f, uv_range / 2.0f) * 65536.0f);
     }
