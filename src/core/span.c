@@ -86,6 +86,7 @@ typedef struct mote__tex_view {
     const uint8_t *pixels;
     int stride, w, h;
     int stride_log2;              /* with pow2_repeat: rows by a shift */
+    int row_shift;                /* mote__texel_pow2: K - 4 - stride_log2 */
     mote_format format;
     mote_wrap wrap_u, wrap_v;
     bool pow2_repeat;
@@ -245,7 +246,7 @@ MOTE__INLINE const uint8_t *mote__texel_pow2(const mote__tex_view *tx, const uin
     uint64_t su = origin[0] + (uint64_t)(nu >> 10) * r, sv = origin[1] + (uint64_t)(nv >> 10) * r;
     *col = (size_t)(su >> (k - 4)) & (size_t)(tx->w - 1);
     /* the row's offset (v's texel << stride_log2) is those bits of sv moved down less far */
-    return tx->pixels + ((size_t)(sv >> (k - 4 - tx->stride_log2)) & ((size_t)(tx->h - 1) << tx->stride_log2));
+    return tx->pixels + ((size_t)(sv >> tx->row_shift) & ((size_t)(tx->h - 1) << tx->stride_log2));
 }
 
 /* Packs a colour for a format: one store per pixel in the loop. */
@@ -576,9 +577,11 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
                              const int persp, const int dsel, const int dmode, const mote_format fmt, const int k)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
-    uint8_t *const color = tg->color;
-    void *const depthbuf = tg->depth;
-    const int stride = tg->stride, width = tg->width, ty0 = tg->y0;
+    /* the rows' colour and depth, stepped row by row (a product a row
+     * cost more) */
+    const size_t stride = (size_t)tg->stride, zstride = (size_t)tg->width * (dsel == MOTE__D_16 ? 2 : 4);
+    uint8_t *crow = tg->color + (size_t)(w->y - tg->y0) * stride;
+    uint8_t *zrow = dsel != MOTE__D_NONE ? (uint8_t *)tg->depth + (size_t)(w->y - tg->y0) * zstride : NULL;
     const int64_t dy0 = w->y - t->oy;
     const int64_t zdy = t->zdy, qdy = t->qdy;
     uint64_t zr = (uint64_t)mote__plane_at(t->z, zdy, dy0);
@@ -595,30 +598,33 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
      * cost 0.8% of the grid's instructions */
     uint64_t tested = 0;
     uint32_t rejected = 0;
-    for (; w->y < w->yend; zr += (uint64_t)zdy, qr += (uint64_t)qdy) {
-        const int y = w->y;
+    for (; w->y < w->yend; zr += (uint64_t)zdy, qr += (uint64_t)qdy, crow += stride) {
         int x0, x1;
         mote__walk_row(w, &x0, &x1);
         if (x0 < x1) {
             const int64_t dx0 = x0 - ox;
-            const size_t drow = (size_t)(y - ty0) * (size_t)width;
             int64_t n[MOTE__ATTRS] = {0};
             MOTE__UNROLL
             for (int a = 0; a < MOTE__ATTRS; a++)
                 if (mote__reads_plane(a, shade, tex))
                     n[a] = mote__plane_at((int64_t)nrow[a], c->ndx[a], dx0);
-            mote__pixels(c, color + (size_t)(y - ty0) * (size_t)stride,
-                         dsel == MOTE__D_16 ? (uint16_t *)depthbuf + drow : NULL,
-                         dsel == MOTE__D_32 ? (uint32_t *)depthbuf + drow : NULL, x0, x1,
+            /* counted before the pixel loop: after it, x0 and x1 would
+             * have to outlive a loop that needs every register */
+            tested += (uint64_t)(x1 - x0);
+            mote__pixels(c, crow, dsel == MOTE__D_16 ? (uint16_t *)(void *)zrow : NULL,
+                         dsel == MOTE__D_32 ? (uint32_t *)(void *)zrow : NULL, x0, x1,
                          mote__plane_at((int64_t)zr, c->zdx, dx0),
                          varying ? mote__plane_at((int64_t)qr, c->qdx, dx0) : 0, n, &rejected,
                          tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, k);
-            tested += (uint64_t)(x1 - x0);
         }
         MOTE__UNROLL
         for (int a = 0; a < MOTE__ATTRS; a++)
             if (mote__reads_plane(a, shade, tex))
                 nrow[a] += (uint64_t)c->ndy[a];
+        /* a constant test in the variants; the shortest code in the
+         * generic-only build (flash) */
+        if (MOTE_SPECIALISE_SPANS ? dsel != MOTE__D_NONE : zrow != NULL)
+            zrow += zstride;
     }
     tg->counts->tested += tested;
     tg->counts->written += tested - rejected;
@@ -681,6 +687,9 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
         c.tx.pow2_repeat = rs->pow2_repeat;
         c.tx.stride_log2 = rs->tex_stride_log2;
         if (MOTE_SPECIALISE_SPANS) {
+            /* once a triangle: worked out in the row loop, it took a
+             * register the pixel loop then lacked */
+            c.tx.row_shift = k - 4 - c.tx.stride_log2;
             c.tex_origin[0] = (uint64_t)c.a0[MOTE__A_U] << (k - 20);
             c.tex_origin[1] = (uint64_t)c.a0[MOTE__A_V] << (k - 20);
         }
