@@ -15,7 +15,19 @@
  */
 #include "internal.h"
 
-static inline void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
+/* Speed builds compile the walk's set-up twice: for the default 8
+ * sub-pixel bits, whose shifts are then constants (a tenth of a small
+ * triangle's walk set-up was variable shifts and their count register),
+ * and for any other. Size builds keep one copy. */
+#if MOTE_SHORTCUTS && defined(__GNUC__)
+#define MOTE__WALK_F8 1
+#define MOTE__WALK_INLINE static inline __attribute__((always_inline))
+#else
+#define MOTE__WALK_F8 0
+#define MOTE__WALK_INLINE static inline
+#endif
+
+MOTE__WALK_INLINE void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, int32_t xb, int32_t yb,
                             int y, int F)
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
@@ -47,7 +59,11 @@ static int mote__first_row(int32_t Yv, int F)
     return mote__floor_shift32(Yv + (1 << (F - 1)) - 1, F);   /* no overflow: |Yv| < 2^24 */
 }
 
+#if MOTE__WALK_F8
+MOTE__WALK_INLINE bool mote__walk_begin_f(mote__walk *w, const mote__tri *t, mote__rect r, int F)
+#else
 bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
+#endif
 {
     /* the vertices sorted by y (then x) and the long edge's side: from setup */
     const int o = t->order, a = o & 3, b = (o >> 2) & 3, c = (o >> 4) & 3;
@@ -79,7 +95,22 @@ bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
     return true;
 }
 
+#if MOTE__WALK_F8
+bool mote__walk_begin(mote__walk *w, const mote__tri *t, mote__rect r, int F)
+{
+    if (F == 8)
+        return mote__walk_begin_f(w, t, r, 8);
+    return mote__walk_begin_f(w, t, r, F);
+}
+#endif
+
 void mote__walk_switch(mote__walk *w)
 {
+#if MOTE__WALK_F8
+    if (w->subpixel_bits == 8) {
+        mote__edge_init(w->short_left ? &w->left : &w->right, w->xb, w->yb, w->xc, w->yc, w->y, 8);
+        return;
+    }
+#endif
     mote__edge_init(w->short_left ? &w->left : &w->right, w->xb, w->yb, w->xc, w->yc, w->y, w->subpixel_bits);
 }
