@@ -234,6 +234,61 @@ void subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them(v
     TEST_ASSERT_EQUAL_INT(0, differ);
 }
 
+/* Sub-span perspective on slivers: a segment's end past a triangle's edge
+ * may hold a Q plane value that is no pixel's of the triangle (a sliver's
+ * plane spans far more than 64 bits allow over its box). Such a segment
+ * must be drawn exactly, not from a reciprocal of garbage: each pixel
+ * within a few units of the exact perspective's. */
+void subspan_slivers_should_stay_close_to_the_exact_perspective(void)
+{
+    static uint8_t ca[W * H * 4], cb[W * H * 4];
+    static uint32_t da[W * H], db[W * H];
+    mote__raster_state rs;
+    memset(&rs, 0, sizeof rs);
+    rs.gouraud = true;
+    rs.subspan_log2 = 3;
+    mote__raster_state exact = rs;
+    rs.persp = MOTE__PERSP_SUBSPAN;
+    exact.persp = MOTE__PERSP_CORRECT;
+    mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE);
+    mote__fill_select(&exact, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE);
+    long compared = 0;
+    int worst = 0;
+    for (int t = 0; t < 4000; t++) {
+        memset(ca, 0, sizeof ca);
+        memset(cb, 0, sizeof cb);
+        mote__svert v[3];
+        int32_t X[3], Y[3];
+        random_triangle(X, Y, v, MOTE__SHADE_RGB, false, 40.0f);
+        /* vertex 2 within a fraction of a pixel of the line from 0 to 1 */
+        int32_t f = (int32_t)(next_u32() % 256);
+        X[2] = X[0] + (int32_t)(((int64_t)(X[1] - X[0]) * f) >> 8) + (int32_t)(next_u32() % 64) - 32;
+        Y[2] = Y[0] + (int32_t)(((int64_t)(Y[1] - Y[0]) * f) >> 8) + (int32_t)(next_u32() % 64) - 32;
+        for (int k = 0; k < 3; k++)   /* a perspective sub-spans approximate well */
+            v[k].w = frand(0.7f, 1.4f);
+        const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
+        int64_t area2 = mote__area2(X, Y);
+        mote__tri ta_tri, tb_tri;
+        if (area2 == 0 || mote__setup(&ta_tri, &rs, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN
+            || mote__setup(&tb_tri, &exact, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
+            continue;
+        mote__counts n = {0, 0};
+        mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &n}, tb = ta;
+        tb.color = cb;
+        tb.depth = db;
+        mote__rect all = {0, 0, W, H};
+        mote__raster_tri(&ta_tri, &ta, all, 8);
+        mote__raster_tri(&tb_tri, &tb, all, 8);
+        for (int i = 0; i < 4 * W * H; i++) {
+            int d = abs((int)ca[i] - (int)cb[i]);
+            worst = d > worst ? d : worst;
+            compared += (i & 3) == 3 && ca[i] != 0;
+        }
+    }
+    TEST_ASSERT_GREATER_THAN_INT(1000, compared);
+    TEST_ASSERT_LESS_OR_EQUAL_INT(4, worst);
+}
+
 /* ---- determinism ------------------------------------------------------------ */
 
 #define NV 600
@@ -949,6 +1004,7 @@ int main(void)
     RUN_TEST(every_specialised_span_should_match_the_generic_span);
     RUN_TEST(a_record_should_keep_planes_up_to_its_last_one);
     RUN_TEST(subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them);
+    RUN_TEST(subspan_slivers_should_stay_close_to_the_exact_perspective);
     RUN_TEST(a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in);
     RUN_TEST(setup_should_box_a_triangle_by_the_pixel_centres_its_vertices_span);
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);

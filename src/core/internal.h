@@ -350,12 +350,15 @@ MOTE__SPEED_INLINE void mote__edge_step(mote__edge *e)
     e->err += e->den & wrap;
 }
 
-/* The pixels [*x0, *x1) of row w->y (empty when *x0 >= *x1), then the walk
+/* The pixels [*x0, *x1) of row w->y (empty when *x0 >= *x1), and in
+ * *span the row's own pixels before the cut to the region, then the walk
  * moves to the next row. */
-static inline void mote__walk_row(mote__walk *w, int *x0, int *x1)
+static inline void mote__walk_row(mote__walk *w, int *x0, int *x1, int64_t span[2])
 {
     if (w->y == w->ymid)
         mote__walk_switch(w);
+    span[0] = w->left.x;
+    span[1] = w->right.x;
     /* cut to the region; an empty row stays empty (x0 >= x1) */
     *x0 = (int)MOTE__MAX(w->left.x, w->rx0);
     *x1 = (int)MOTE__MIN(w->right.x, w->rx1);

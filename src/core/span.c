@@ -422,7 +422,7 @@ typedef struct mote__fill_ctx {
  * *rejected (rare: counted rather than the written ones). */
 MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
                                ptrdiff_t x0, ptrdiff_t x1, int64_t z, int64_t q, const int64_t n[MOTE__ATTRS],
-                               uint32_t *rejected, const int tex, const mote_format tfmt, const bool pow2,
+                               const int64_t span[2], uint32_t *rejected, const int tex, const mote_format tfmt, const bool pow2,
                                const int shade, const int persp, const int dsel, const int dmode,
                                const mote_format fmt, const int k)
 {
@@ -437,7 +437,7 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
      * linear between, so where a region starts a row changes nothing */
     uint64_t seg_r0 = 0, seg_r1 = 0;
     int64_t seg_step = 0;
-    ptrdiff_t seg_x0 = 0, seg_x1 = x0;
+    ptrdiff_t seg_x0 = 0, seg_x1 = 0, seg_next = x0;   /* r's ends; where the next segment starts */
     bool seg_exact = true;        /* until a segment with both ends valid: no r1 to reuse */
     /* Speed builds index the buffers from the row's end, i = x - x1 < 0:
      * one counter for both and no end to compare with, a register fewer
@@ -472,24 +472,31 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
             uint64_t r;
             if (MOTE_ENABLE_SUBSPAN && persp == MOTE__PERSP_SUBSPAN) {
                 const ptrdiff_t x = base + i;
-                if (x >= seg_x1) {
-                    /* the segment's start is the last one's end, whose r is
-                     * known, unless depth-rejected pixels skipped a segment */
+                if (x >= seg_next) {
+                    /* r is exact at the segment's ends, cut to the
+                     * triangle's own row: past its edges Q may be
+                     * anything (across a sliver's edge it moves by far
+                     * more than its whole range inside, within a pixel),
+                     * and r from it garbage. The row's span, not the
+                     * region's cut of it, so that a region changes
+                     * nothing. The start's r is the last segment's end's,
+                     * unless depth-rejected pixels skipped a segment. */
                     const ptrdiff_t len = (ptrdiff_t)1 << c->seg_log2, start = x & -len;
-                    const bool reuse = !seg_exact && start == seg_x1;
-                    seg_x0 = start;
-                    seg_x1 = start + len;
-                    int64_t qa = mote__plane_at(q, qdx, seg_x0 - x);
-                    int64_t qb = mote__plane_at(q, qdx, seg_x1 - x);
-                    /* an end outside the triangle may have no valid Q:
-                     * then this segment is exact at every pixel */
-                    seg_exact = (qa >> shift) <= 0 || (qb >> shift) <= 0;
+                    const ptrdiff_t first = start > span[0] ? start : (ptrdiff_t)span[0];
+                    const bool reuse = !seg_exact && first == seg_x1;
+                    seg_next = start + len;
+                    seg_x0 = first;
+                    seg_x1 = seg_next < span[1] - 1 ? seg_next : (ptrdiff_t)span[1] - 1;
+                    seg_exact = seg_x1 <= seg_x0;
                     if (!seg_exact) {
-                        seg_r0 = reuse ? seg_r1 : mote__recip_k(qa, shift, k);
-                        seg_r1 = mote__recip_k(qb, shift, k);
-                        /* (r1 - r0) / len, rounded toward zero, by a shift */
+                        seg_r0 = reuse ? seg_r1 : mote__recip_k(mote__plane_at(q, qdx, seg_x0 - x), shift, k);
+                        seg_r1 = mote__recip_k(mote__plane_at(q, qdx, seg_x1 - x), shift, k);
+                        /* (r1 - r0) / length, rounded toward zero: by a
+                         * shift for a whole segment */
                         int64_t d = (int64_t)seg_r1 - (int64_t)seg_r0;
-                        seg_step = mote__floor_shift64(d + ((len - 1) & -(int64_t)(d < 0)), c->seg_log2);
+                        seg_step = seg_x1 - seg_x0 == len
+                                 ? mote__floor_shift64(d + ((len - 1) & -(int64_t)(d < 0)), c->seg_log2)
+                                 : d / (int64_t)(seg_x1 - seg_x0);
                     }
                 }
                 r = seg_exact ? mote__recip_k(q, shift, k) : seg_r0 + (uint64_t)(seg_step * (x - seg_x0));
@@ -600,7 +607,8 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
     uint32_t rejected = 0;
     for (; w->y < w->yend; zr += (uint64_t)zdy, qr += (uint64_t)qdy, crow += stride) {
         int x0, x1;
-        mote__walk_row(w, &x0, &x1);
+        int64_t span[2];
+        mote__walk_row(w, &x0, &x1, span);
         if (x0 < x1) {
             const int64_t dx0 = x0 - ox;
             int64_t n[MOTE__ATTRS] = {0};
@@ -614,7 +622,7 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
             mote__pixels(c, crow, dsel == MOTE__D_16 ? (uint16_t *)(void *)zrow : NULL,
                          dsel == MOTE__D_32 ? (uint32_t *)(void *)zrow : NULL, x0, x1,
                          mote__plane_at((int64_t)zr, c->zdx, dx0),
-                         varying ? mote__plane_at((int64_t)qr, c->qdx, dx0) : 0, n, &rejected,
+                         varying ? mote__plane_at((int64_t)qr, c->qdx, dx0) : 0, n, span, &rejected,
                          tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, k);
         }
         MOTE__UNROLL
