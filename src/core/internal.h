@@ -272,12 +272,11 @@ typedef struct mote__tri {
     int32_t X[3], Y[3];           /* snapped, from the top vertex (see setup.c), original winding */
     int16_t xmin, ymin, xmax, ymax; /* pixel bounding box, inclusive, clamped to the viewport */
     int16_t ox, oy;
-    int8_t shift;                 /* brings Q under 2^31 */
     uint8_t shade;                /* mote__shade_kind */
-    int8_t rbits;                 /* K of the reciprocal r = 2^K / (Q >> shift) */
+    int8_t rbits;                 /* K of the reciprocal r = 2^K / (q >> 10) */
     uint8_t order;                /* walk order (raster.c): bits 0-1, 2-3, 4-5 the top,
                                    * middle and bottom vertex; bit 6: long edge on the left */
-    int64_t q, qdx, qdy;          /* Q = sum Ei qi, qi ~ 1/wi (see setup.c) */
+    int64_t q, qdx, qdy;          /* Q 2^(10 - shift), Q = sum Ei qi, qi ~ 1/wi (see setup.c) */
     int64_t z, zdx, zdy;          /* depth, 24.16 */
     /* attributes: values at vertex 0 (shades in 2^24, texels in 16.16) and
      * numerator planes N (value, x step, y step): A = a0 + N r / 2^(K-10);

@@ -155,6 +155,18 @@ static inline int64_t mote__scaled_div(int64_t n, int64_t d, bool *huge)
     return v;
 }
 
+/* A coefficient of the Q plane as the triangle keeps it: Q 2^(10 - shift),
+ * floored, so that the pixel loops' Q >> shift is Q's plane shifted by a
+ * constant (by the triangle's count, it took them a register and four
+ * instructions a pixel). Ten more bits keep the floored steps' drift to
+ * 2^-10 of a unit of Q >> shift a pixel; below shift 10 nothing is lost.
+ * Modulo 2^64: at the triangle's pixels Q >> shift < 2^31, so the values
+ * the loops divide by are right whatever a coefficient wraps to. */
+MOTE__SPEED_INLINE int64_t mote__q_plane(int64_t v, int shift)
+{
+    return shift >= 10 ? mote__floor_shift64(v, shift - 10) : (int64_t)((uint64_t)v << (10 - shift));
+}
+
 /* v rounded down to a multiple of period (> 0); a shift and a mask for the
  * usual power-of-two texture */
 static int64_t mote__floor_multiple(int64_t v, int64_t period)
@@ -251,7 +263,6 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         t->order = (uint8_t)((swap ? 2 << 2 | 1 << 4 : 1 << 2 | 2 << 4) | ((area2 > 0) != swap) << 6);
     }
 
-    t->shift = 0;
     t->rbits = MOTE__RBITS;       /* any pixel loop stays defined (N = 0: A = a0) */
     t->q = t->qdx = t->qdy = 0;
     /* The shade: vertex 0's, and the differences to it (shades and their
@@ -357,11 +368,11 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         /* Q straight into the triangle: through an array, GCC copied two
          * of its values as one 16-byte load of what it had just stored as
          * 8-byte halves, which stalls (about 5% of setup's time) */
-        t->q = pd[0] * q[0] + p1[0] + p2[0];
-        t->qdx = pd[3] * q[0] + p1[1] + p2[1];
-        t->qdy = pd[6] * q[0] + p1[2] + p2[2];
         int s = mote__bitlen((uint64_t)a2k) + qbits - 30;
-        t->shift = (int8_t)MOTE__MAX(s, 0);
+        const int shift = MOTE__MAX(s, 0);
+        t->q = mote__q_plane(pd[0] * q[0] + p1[0] + p2[0], shift);
+        t->qdx = mote__q_plane(pd[3] * q[0] + p1[1] + p2[1], shift);
+        t->qdy = mote__q_plane(pd[6] * q[0] + p1[2] + p2[2], shift);
 
         /* K (below): shade differences are at most 2^24 and never lower
          * it; texel differences' largest magnitude does, and has the bit
@@ -402,7 +413,7 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
          * so K is 54 (r keeps >= 23 bits, Q >> shift being below 2^31)
          * unless an attribute spans more than 2^27 units. Only the planes
          * the pixel loops read are made (mote__has_plane); the rest are 0. */
-        const int ps = t->shift + 10;
+        const int ps = shift + 10;
 #if MOTE__SETUP_FAST
         /* 2^(64-ps) for mote__mul_shift2, written so: from 1 << (64 - ps)
          * GCC made its multiply a shift again */

@@ -216,10 +216,11 @@ MOTE__INLINE int64_t mote__plane_next(int64_t value, int64_t step)
     return (int64_t)((uint64_t)value + (uint64_t)step);
 }
 
-/* 2^k / (q >> shift): the one division per pixel. */
-MOTE__SMALL uint64_t mote__recip_k(int64_t q, int shift, int k)
+/* 2^k / (q >> 10), for q a value of the triangle's Q plane (setup.c's
+ * mote__q_plane: q >> 10 is Q >> shift): the one division per pixel. */
+MOTE__SMALL uint64_t mote__recip_k(int64_t q, int k)
 {
-    uint64_t qs = (uint64_t)(q >> shift);
+    uint64_t qs = (uint64_t)(q >> 10);
     if (qs == 0)                  /* never inside a sane triangle: a branch, not a select */
         return (uint64_t)1 << k;
     return ((uint64_t)1 << k) / qs;
@@ -407,7 +408,6 @@ typedef struct mote__fill_ctx {
     /* the numerator planes: origin value, x and y steps (0 for those the
      * triangle lacks: a binned record ends after its last plane) */
     int64_t n0[MOTE__ATTRS], ndx[MOTE__ATTRS], ndy[MOTE__ATTRS];
-    int shift;
     int64_t a0[MOTE__ATTRS];
     uint32_t flat_px;             /* the pixel when nothing varies */
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
@@ -428,7 +428,6 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     const int64_t zdx = c->zdx, qdx = c->qdx;
-    const int shift = c->shift;
     int64_t nr = n[MOTE__A_R], ng = n[MOTE__A_G], nb = n[MOTE__A_B], nu = n[MOTE__A_U], nv = n[MOTE__A_V];
     const int64_t nrdx = c->ndx[MOTE__A_R], ngdx = c->ndx[MOTE__A_G], nbdx = c->ndx[MOTE__A_B];
     const int64_t nudx = c->ndx[MOTE__A_U], nvdx = c->ndx[MOTE__A_V];
@@ -489,8 +488,8 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
                     seg_x1 = seg_next < span[1] - 1 ? seg_next : (ptrdiff_t)span[1] - 1;
                     seg_exact = seg_x1 <= seg_x0;
                     if (!seg_exact) {
-                        seg_r0 = reuse ? seg_r1 : mote__recip_k(mote__plane_at(q, qdx, seg_x0 - x), shift, k);
-                        seg_r1 = mote__recip_k(mote__plane_at(q, qdx, seg_x1 - x), shift, k);
+                        seg_r0 = reuse ? seg_r1 : mote__recip_k(mote__plane_at(q, qdx, seg_x0 - x), k);
+                        seg_r1 = mote__recip_k(mote__plane_at(q, qdx, seg_x1 - x), k);
                         /* (r1 - r0) / length, rounded toward zero: by a
                          * shift for a whole segment */
                         int64_t d = (int64_t)seg_r1 - (int64_t)seg_r0;
@@ -499,9 +498,9 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
                                  : d / (int64_t)(seg_x1 - seg_x0);
                     }
                 }
-                r = seg_exact ? mote__recip_k(q, shift, k) : seg_r0 + (uint64_t)(seg_step * (x - seg_x0));
+                r = seg_exact ? mote__recip_k(q, k) : seg_r0 + (uint64_t)(seg_step * (x - seg_x0));
             } else {
-                r = persp == MOTE__PERSP_AFFINE ? c->affine_r : mote__recip_k(q, shift, k);
+                r = persp == MOTE__PERSP_AFFINE ? c->affine_r : mote__recip_k(q, k);
             }
             if (shade == MOTE__SHADE_MONO) {
                 sr = sg = sb = mote__shade_at(c->a0[MOTE__A_R], nr, r, k);
@@ -663,7 +662,6 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     mote__fill_ctx c;
     c.zdx = t->zdx;
     c.qdx = t->qdx;
-    c.shift = t->shift;
     /* only binned records are cut short: drawn directly, t has them all */
     const int planes = MOTE_ENABLE_BINNING ? mote__plane_count(shade, tex != MOTE__TEX_NONE) : MOTE__ATTRS;
     for (int a = 0; a < MOTE__ATTRS; a++) {
@@ -703,7 +701,7 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
         }
     }
     c.seg_log2 = MOTE_ENABLE_SUBSPAN ? rs->subspan_log2 : 0;
-    c.affine_r = varying && persp == MOTE__PERSP_AFFINE ? mote__recip_k(t->q, t->shift, k) : 0;
+    c.affine_r = varying && persp == MOTE__PERSP_AFFINE ? mote__recip_k(t->q, k) : 0;
 #if MOTE_SPECIALISE_SPANS
     /* a power-of-two repeating texture: its own loop, texel addresses by masks */
     if (tex && c.tx.pow2_repeat) {
