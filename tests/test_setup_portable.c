@@ -111,9 +111,38 @@ static void test_portable_setup_should_match_the_library_bit_for_bit(void)
     TEST_ASSERT_GREATER_THAN_INT64(100000, drawn);
 }
 
+/* mote__round_positive rounds the 1/w weights, halves up, in double where
+ * double is hardware; a core without an FPU takes the float form written
+ * here. The same answer on the ties t + 1/2 (t < 2^23, where a float holds
+ * them), their neighbouring floats, and random floats in [0, 2^31). */
+void round_positive_should_match_the_float_rounding(void)
+{
+    rng = tu_rng_seed(20261125);
+    long differ = 0, compared = 0;
+    for (int k = 0; k < 3000000; k++) {
+        float f;
+        if (k % 2) {
+            f = (float)tu_rand_range(&rng, 0.0, 2147483520.0) / (float)(1 << tu_rand_int(&rng, 0, 30));
+        } else {
+            f = (float)tu_rand_int(&rng, 0, (1 << 23) - 1) + 0.5f;
+            uint32_t u;
+            memcpy(&u, &f, sizeof u);
+            u += (uint32_t)tu_rand_int(&rng, -2, 2);
+            memcpy(&f, &u, sizeof u);
+        }
+        int32_t t = (int32_t)f;
+        int32_t want = t + (f - (float)t >= 0.5f);
+        differ += mote__round_positive(f) != want;
+        compared++;
+    }
+    TEST_ASSERT_EQUAL_INT(0, differ);
+    TEST_ASSERT_GREATER_THAN_INT(1000000, compared);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(round_positive_should_match_the_float_rounding);
     RUN_TEST(test_portable_product_should_match_int128_on_edge_values);
     RUN_TEST(test_portable_setup_should_match_the_library_bit_for_bit);
     return UNITY_END();

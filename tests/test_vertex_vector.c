@@ -119,9 +119,71 @@ void vector_snap_should_match_the_scalar_snap(void)
 }
 #endif
 
+#if MOTE__VECTOR_VERTEX
+/* A float near x: x itself, or one or two floats to either side. */
+static float near_float(tu_rng *rng, double x)
+{
+    float f = (float)x;
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    u += (uint32_t)tu_rand_int(rng, -2, 2);
+    return float_from_bits(u);
+}
+
+/* The four-vertex finish rounds texels (16.16, halves away from zero) in
+ * double and depths (halves up) in float lanes; every microcontroller
+ * runs mote__round_scaled. Held to the same answer on random values of
+ * the ranges they take (texels within 1e9, depths in [0, 2^24)), on the
+ * ties and on their neighbouring floats. */
+void vector_texel_and_depth_rounding_should_match_the_scalar_rounding(void)
+{
+    tu_rng rng = tu_rng_seed(20261125);
+    long compared = 0, differ = 0;
+    for (int k = 0; k < 400000; k++) {
+        mote__cvert c;
+        memset(&c, 0, sizeof c);
+        float d[4];
+        for (int lane = 0; lane < 2; lane++) {
+            float x;
+            if (k % 3 == 0) {     /* any magnitude up to 1e9 */
+                x = (float)(tu_rand_range(&rng, -1.0, 1.0) * pow(10.0, tu_rand_range(&rng, -12.0, 9.0)));
+            } else {              /* a tie j + 1/2 in 16.16 units, or a float next to it */
+                int64_t j = tu_rand_int(&rng, -((int64_t)1 << 40), (int64_t)1 << 40) >> tu_rand_int(&rng, 0, 40);
+                x = near_float(&rng, ((double)j + 0.5) / 65536.0);
+            }
+            if (lane == 0)
+                c.u = x;
+            else
+                c.v = x;
+        }
+        int64_t t[2];
+        mote__texels_fixed(&c, t);
+        differ += t[0] != mote__round_scaled(c.u, 16) || t[1] != mote__round_scaled(c.v, 16);
+        for (int lane = 0; lane < 4; lane++) {
+            int64_t j = tu_rand_int(&rng, 0, ((int64_t)1 << 24) - 2);
+            d[lane] = (k + lane) % 2 ? (float)tu_rand_range(&rng, 0.0, 16777215.0)
+                                     : near_float(&rng, (double)j + 0.5);
+            d[lane] = d[lane] < 0.0f ? 0.0f : d[lane];
+        }
+        mote__v4i z = mote__v4_round_depth((mote__v4f){d[0], d[1], d[2], d[3]});
+        for (int lane = 0; lane < 4; lane++)
+            differ += z[lane] != mote__round_scaled(d[lane], 0);
+        compared += 6;
+    }
+    TEST_ASSERT_EQUAL_INT(0, differ);
+    TEST_ASSERT_GREATER_THAN_INT(2000000, compared);
+}
+#else
+void vector_texel_and_depth_rounding_should_match_the_scalar_rounding(void)
+{
+    TEST_IGNORE_MESSAGE("no four-vertex finish on this host (SSE2 with GCC or clang)");
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(vector_snap_should_match_the_scalar_snap);
+    RUN_TEST(vector_texel_and_depth_rounding_should_match_the_scalar_rounding);
     return UNITY_END();
 }

@@ -401,7 +401,8 @@ typedef enum mote_perspective {
     MOTE_PERSPECTIVE_DEFAULT = 0, /* correct per pixel */
     MOTE_PERSPECTIVE_CORRECT,
     MOTE_PERSPECTIVE_AFFINE,      /* screen-linear: the retro "wobble" */
-    MOTE_PERSPECTIVE_SUBSPAN,     /* 1/w exact every 2^subspan_log2 pixels, linear between */
+    MOTE_PERSPECTIVE_SUBSPAN,     /* 1/w exact every 2^subspan_log2 pixels and at a row's
+                                   * ends, linear between */
     MOTE_PERSPECTIVE_COUNT
 } mote_perspective;
 

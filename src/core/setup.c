@@ -14,7 +14,8 @@
  *
  * The planes' origin is the pixel holding vertex 0, where E1 and E2 are
  * small (both vanish at vertex 0), so the depth products fit in 64 bits.
- * No double arithmetic: a core without an FPU pays only for float.
+ * No double arithmetic but one exact rounding on SSE2 hosts
+ * (mote__round_positive): a core without an FPU pays only for float.
  */
 #include "internal.h"
 
