@@ -39,6 +39,12 @@ static float float_from_bits(uint32_t u)
     return f;
 }
 
+/* mote__v4_snap_by with one h and lim in every lane, as a draw sets them */
+static mote__v4i mote__v4_snap_axis(mote__v4f n, int32_t h, int32_t lim, mote__v4i *ok)
+{
+    return mote__v4_snap_by(n, _mm_set1_pd((double)h), (mote__v4i){h, h, h, h}, (mote__v4i){lim, lim, lim, lim}, ok);
+}
+
 /* Snaps four values both ways; returns the lanes that differ. */
 static int compare_four(const float n[4], int32_t h, int32_t lim)
 {

@@ -675,11 +675,6 @@ static inline mote__v4i mote__v4_snap_by(mote__v4f n, __m128d hd, mote__v4i hi, 
     *ok = (mote__v4i)_mm_and_si128(in, _mm_and_si128(_mm_cmpgt_epi32(v, nlim), _mm_cmplt_epi32(v, (__m128i)lim)));
     return (mote__v4i)v;
 }
-
-static inline mote__v4i mote__v4_snap_axis(mote__v4f n, int32_t h, int32_t lim, mote__v4i *ok)
-{
-    return mote__v4_snap_by(n, _mm_set1_pd((double)h), (mote__v4i){h, h, h, h}, (mote__v4i){lim, lim, lim, lim}, ok);
-}
 #else
 #define MOTE__VECTOR_SNAP 0
 #endif
