@@ -289,6 +289,58 @@ void subspan_slivers_should_stay_close_to_the_exact_perspective(void)
     TEST_ASSERT_LESS_OR_EQUAL_INT(4, worst);
 }
 
+/* Sub-span segments are cut to a triangle's own rows, never to the region
+ * drawn: a triangle drawn in 8x8 tiles gives the bytes it gives whole, in
+ * the specialised loops and in the generic one. */
+void subspan_pixels_should_not_depend_on_the_region(void)
+{
+    static uint8_t ca[W * H * 4], cb[W * H * 4];
+    static uint32_t da[W * H], db[W * H];
+    static uint8_t texels[16 * 8 * 4];
+    mote_texture tex = random_texture(texels, 16, 8);
+    long covered = 0;
+    for (int specialised = 0; specialised < 2; specialised++) {
+        mote__raster_state rs = texture_state(MOTE__TEX_NEAREST, &tex, MOTE_WRAP_REPEAT);
+        rs.gouraud = true;
+        rs.persp = MOTE__PERSP_SUBSPAN;
+        rs.subspan_log2 = 6;       /* long segments: where one is cut shows */
+        rs.depth_test = rs.depth_write = true;
+        mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32);
+        for (int k = 0; k < MOTE__SHADE_COUNT && !specialised; k++)
+            rs.fill[k] = mote__fill_generic;
+        mote__counts n = {0, 0};
+        mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n}, tb = ta;
+        tb.color = cb;
+        tb.depth = db;
+        memset(ca, 0, sizeof ca);
+        memset(cb, 0, sizeof cb);
+        memset(da, 0xff, sizeof da);
+        memset(db, 0xff, sizeof db);
+        for (int t = 0; t < 200; t++) {
+            mote__svert v[3];
+            int32_t X[3], Y[3];
+            random_triangle(X, Y, v, MOTE__SHADE_RGB, false, 400.0f);
+            const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
+            int64_t area2 = mote__area2(X, Y);
+            mote__tri tri;
+            if (area2 == 0 || mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
+                continue;
+            mote__rect all = {0, 0, W, H};
+            mote__raster_tri(&tri, &ta, all, 8);
+            for (int y = 0; y < H; y += 8)
+                for (int x = 0; x < W; x += 8) {
+                    mote__rect tile = {x, y, MOTE__MIN(x + 8, W), MOTE__MIN(y + 8, H)};
+                    mote__raster_tri(&tri, &tb, tile, 8);
+                }
+        }
+        for (int i = 0; i < W * H; i++)
+            covered += da[i] != 0xffffffffu;
+        TEST_ASSERT_EQUAL_MEMORY(ca, cb, sizeof ca);
+        TEST_ASSERT_EQUAL_MEMORY(da, db, sizeof da);
+    }
+    TEST_ASSERT_GREATER_THAN_INT(W * H, covered);
+}
+
 /* ---- determinism ------------------------------------------------------------ */
 
 #define NV 600
@@ -1005,6 +1057,7 @@ int main(void)
     RUN_TEST(a_record_should_keep_planes_up_to_its_last_one);
     RUN_TEST(subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them);
     RUN_TEST(subspan_slivers_should_stay_close_to_the_exact_perspective);
+    RUN_TEST(subspan_pixels_should_not_depend_on_the_region);
     RUN_TEST(a_triangle_should_draw_the_same_bytes_whatever_order_its_vertices_come_in);
     RUN_TEST(setup_should_box_a_triangle_by_the_pixel_centres_its_vertices_span);
     RUN_TEST(frames_should_be_the_same_bytes_for_any_threads_tiles_arena_and_bands);
