@@ -176,6 +176,22 @@ void a_record_should_keep_planes_up_to_its_last_one(void)
         }
 }
 
+/* A raster state drawing tex nearest with Gouraud RGB shades, sub-span
+ * perspective in segments of 2^log2 pixels and a 32-bit depth test, by
+ * the specialised loops or by the generic one. */
+static mote__raster_state subspan_state(const mote_texture *tex, int log2, bool specialised)
+{
+    mote__raster_state rs = texture_state(MOTE__TEX_NEAREST, tex, MOTE_WRAP_REPEAT);
+    rs.gouraud = true;
+    rs.persp = MOTE__PERSP_SUBSPAN;
+    rs.subspan_log2 = log2;
+    rs.depth_test = rs.depth_write = true;
+    mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32);
+    for (int k = 0; k < MOTE__SHADE_COUNT && !specialised; k++)
+        rs.fill[k] = mote__fill_generic;
+    return rs;
+}
+
 /* Sub-span perspective: r is exact at the columns that are multiples of
  * the segment length and linear between them, so a pixel must not depend
  * on which pixels before it in its row failed the depth test. (The loop
@@ -193,14 +209,7 @@ void subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them(v
         hidden[i] = ((i % W) / 13 + i / W) % 3 == 0;
     long compared = 0, differ = 0;
     for (int specialised = 0; specialised < 2; specialised++) {
-        mote__raster_state rs = texture_state(MOTE__TEX_NEAREST, &tex, MOTE_WRAP_REPEAT);
-        rs.gouraud = true;
-        rs.persp = MOTE__PERSP_SUBSPAN;
-        rs.subspan_log2 = 3;
-        rs.depth_test = rs.depth_write = true;
-        mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32);
-        for (int k = 0; k < MOTE__SHADE_COUNT && !specialised; k++)
-            rs.fill[k] = mote__fill_generic;
+        mote__raster_state rs = subspan_state(&tex, 3, specialised);
         mote__counts n = {0, 0};
         mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n}, tb = ta;
         tb.color = cb;
@@ -300,14 +309,8 @@ void subspan_pixels_should_not_depend_on_the_region(void)
     mote_texture tex = random_texture(texels, 16, 8);
     long covered = 0;
     for (int specialised = 0; specialised < 2; specialised++) {
-        mote__raster_state rs = texture_state(MOTE__TEX_NEAREST, &tex, MOTE_WRAP_REPEAT);
-        rs.gouraud = true;
-        rs.persp = MOTE__PERSP_SUBSPAN;
-        rs.subspan_log2 = 6;       /* long segments: where one is cut shows */
-        rs.depth_test = rs.depth_write = true;
-        mote__fill_select(&rs, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32);
-        for (int k = 0; k < MOTE__SHADE_COUNT && !specialised; k++)
-            rs.fill[k] = mote__fill_generic;
+        /* long segments: where one is cut shows */
+        mote__raster_state rs = subspan_state(&tex, 6, specialised);
         mote__counts n = {0, 0};
         mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n}, tb = ta;
         tb.color = cb;
