@@ -83,6 +83,18 @@ static void random_triangle(int32_t X[3], int32_t Y[3], mote__svert v[3], int sk
     }
 }
 
+/* A random triangle (random_triangle's) set up with rs into *tri: false
+ * when it has no pixels or no area. */
+static bool setup_random_triangle(mote__tri *tri, const mote__raster_state *rs, int sk, bool grey, float uv_range)
+{
+    mote__svert v[3];
+    int32_t X[3], Y[3];
+    random_triangle(X, Y, v, sk, grey, uv_range);
+    const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
+    int64_t area2 = mote__area2(X, Y);
+    return area2 != 0 && mote__setup(tri, rs, X, Y, area2, vp, 8, W, H) == MOTE__SETUP_DRAWN;
+}
+
 void every_specialised_span_should_match_the_generic_span(void)
 {
     static uint8_t ca[W * H * 4], cb[W * H * 4];
@@ -126,13 +138,8 @@ void every_specialised_span_should_match_the_generic_span(void)
         tb.color = cb;
         tb.depth = db;
         for (int t = 0; t < 40; t++) {
-            mote__svert v[3];
-            int32_t X[3], Y[3];
-            random_triangle(X, Y, v, sk, (t & 1) != 0, uv_range);
-            const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
-            int64_t area2 = mote__area2(X, Y);
             mote__tri tri;
-            if (area2 == 0 || mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
+            if (!setup_random_triangle(&tri, &rs, sk, (t & 1) != 0, uv_range))
                 continue;
             TEST_ASSERT_EQUAL_INT(sk, tri.shade);
             wide += tri.rbits != MOTE__RBITS;
@@ -220,13 +227,8 @@ void subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them(v
             memset(da, 0xff, sizeof da);
             for (int i = 0; i < W * H; i++)
                 db[i] = hidden[i] ? 0u : 0xffffffffu;
-            mote__svert v[3];
-            int32_t X[3], Y[3];
-            random_triangle(X, Y, v, MOTE__SHADE_RGB, false, 40.0f);
-            const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
-            int64_t area2 = mote__area2(X, Y);
             mote__tri tri;
-            if (area2 == 0 || mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
+            if (!setup_random_triangle(&tri, &rs, MOTE__SHADE_RGB, false, 40.0f))
                 continue;
             mote__rect all = {0, 0, W, H};
             mote__raster_tri(&tri, &ta, all, 8);
@@ -320,13 +322,8 @@ void subspan_pixels_should_not_depend_on_the_region(void)
         memset(da, 0xff, sizeof da);
         memset(db, 0xff, sizeof db);
         for (int t = 0; t < 200; t++) {
-            mote__svert v[3];
-            int32_t X[3], Y[3];
-            random_triangle(X, Y, v, MOTE__SHADE_RGB, false, 400.0f);
-            const mote__svert *const vp[3] = {&v[0], &v[1], &v[2]};
-            int64_t area2 = mote__area2(X, Y);
             mote__tri tri;
-            if (area2 == 0 || mote__setup(&tri, &rs, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
+            if (!setup_random_triangle(&tri, &rs, MOTE__SHADE_RGB, false, 400.0f))
                 continue;
             mote__rect all = {0, 0, W, H};
             mote__raster_tri(&tri, &ta, all, 8);
