@@ -318,7 +318,8 @@ MOTE__INLINE __m128i mote__word_channels(uint32_t texel)
 /* mote__blend's sums for texel words a, b (row 0) and d, e
  * (row 1): each row's a (256 - fu) + b fu < 2^16 by one pmaddwd of 16-bit
  * lanes a_r b_r a_g b_g ..., then the rows weighted by 256 - fv and fv in
- * 64-bit lanes (red and blue, then green and alpha). */
+ * 64-bit lanes (red and blue, then green and alpha); the channels as the
+ * 16-bit lanes 0-3, as mote__word_channels gives them. */
 MOTE__INLINE __m128i mote__blend_channels(uint32_t a, uint32_t b, uint32_t d, uint32_t e, uint32_t fu, uint32_t fv)
 {
     const __m128i zero = _mm_setzero_si128(), wu = _mm_set1_epi32((int)(fu << 16 | (256 - fu)));
@@ -332,13 +333,7 @@ MOTE__INLINE __m128i mote__blend_channels(uint32_t a, uint32_t b, uint32_t d, ui
     top = _mm_srli_epi64(top, 32);
     bottom = _mm_srli_epi64(bottom, 32);
     __m128i ga = _mm_add_epi64(_mm_add_epi64(_mm_mul_epu32(top, wv0), _mm_mul_epu32(bottom, wv1)), half);
-    return _mm_or_si128(_mm_srli_epi64(rb, 16), _mm_slli_epi64(_mm_srli_epi64(ga, 16), 32));
-}
-
-/* A texel's channels r, g, b, a as the 16-bit lanes 0-3 of a register
- * (mote__blend_channels' 32-bit lanes, narrowed). */
-MOTE__INLINE __m128i mote__word_lanes(__m128i c32)
-{
+    const __m128i c32 = _mm_or_si128(_mm_srli_epi64(rb, 16), _mm_slli_epi64(_mm_srli_epi64(ga, 16), 32));
     return _mm_packs_epi32(c32, c32);
 }
 
@@ -432,8 +427,9 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
     const int64_t nrdx = c->ndx[MOTE__A_R], ngdx = c->ndx[MOTE__A_G], nbdx = c->ndx[MOTE__A_B];
     const int64_t nudx = c->ndx[MOTE__A_U], nvdx = c->ndx[MOTE__A_V];
     uint32_t sr = c->sr, sg = c->sg, sb = c->sb;
-    /* sub-span: r exact at screen columns that are multiples of 2^seg_log2,
-     * linear between, so where a region starts a row changes nothing */
+    /* sub-span: r exact at screen columns that are multiples of 2^seg_log2
+     * and at the row's ends, linear between, so where a region starts a
+     * row changes nothing */
     uint64_t seg_r0 = 0, seg_r1 = 0;
     int64_t seg_step = 0;
     ptrdiff_t seg_x0 = 0, seg_x1 = 0, seg_next = x0;   /* r's ends; where the next segment starts */
@@ -527,9 +523,9 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
                  * the generic loop */
                 if (MOTE__VECTOR_COLOR && tfmt == MOTE_FORMAT_RGBA8888 && fmt == MOTE_FORMAT_RGBA8888) {
 #if MOTE__VECTOR_COLOR
-                    __m128i t = bilinear ? mote__word_lanes(mote__blend_channels(
-                                               mote__word(p.row0, p.u0), mote__word(p.row0, p.u1),
-                                               mote__word(p.row1, p.u0), mote__word(p.row1, p.u1), p.fu, p.fv))
+                    __m128i t = bilinear ? mote__blend_channels(mote__word(p.row0, p.u0), mote__word(p.row0, p.u1),
+                                                                mote__word(p.row1, p.u0), mote__word(p.row1, p.u1),
+                                                                p.fu, p.fv)
                                          : mote__word_channels(mote__word(p.row0, p.u0));
                     __m128i sh, sl;
                     mote__shade_lanes(shade, sr, sg, sb, &sh, &sl);
