@@ -1232,18 +1232,16 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
 #if MOTE__VECTOR_VERTEX
 /* The triangles [first, end) of a draw whose front faces queue (its own
  * full cache, lit Gouraud, never wireframe): mote__triangle's path for an
- * unclipped face, with the draw's flags read once and the face's corners
- * and area taken straight from its vertices; any other triangle goes
- * through mote__triangle. GCC kept mote__triangle's arrays and the
- * draw's flags on the stack: about 90 instructions a triangle before it
- * reached the queue, against about 55 here, for each of the dense grid's
- * 96,600 triangles a frame. */
+ * unclipped face, the face's corners and area taken straight from its
+ * vertices; any other triangle goes through mote__triangle. GCC kept
+ * mote__triangle's arrays and the draw's flags on the stack: about 90
+ * instructions a triangle before it reached the queue, against about 55
+ * here, for each of the dense grid's 96,600 triangles a frame. */
 static void mote__queue_triangles(mote__ctx *cx, const uint32_t *indices, uint32_t first, uint32_t end)
 {
     mote_device *dev = cx->dev;
     mote__tvert *const cache = cx->cache;
     const uint32_t nv = cx->mesh->vertex_count;
-    const bool cull_cw = cx->cull_cw, cull_ccw = cx->cull_ccw;
     for (uint32_t i = first; i < end && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++) {
         const uint32_t *idx = &indices[3 * i];
         if (idx[0] >= nv || idx[1] >= nv || idx[2] >= nv) {
@@ -1257,14 +1255,9 @@ static void mote__queue_triangles(mote__ctx *cx, const uint32_t *indices, uint32
             mote__triangle(cx, idx);
             continue;
         }
-        /* mote__facing_area */
         const int32_t X[3] = {tv[0]->X, tv[1]->X, tv[2]->X}, Y[3] = {tv[0]->Y, tv[1]->Y, tv[2]->Y};
-        const int64_t area = mote__area2(X, Y);
-        if (area == 0)
-            dev->stats.triangles_degenerate++;
-        else if (area > 0 ? cull_cw : cull_ccw)
-            dev->stats.triangles_backface++;
-        else
+        const int64_t area = mote__facing_area(cx, X, Y);
+        if (area != 0)
             mote__queue_face(cx, tv, area);
     }
 }
