@@ -642,11 +642,16 @@ static bench_time summarize(double *ms, int n)
  * all of them see the same machine: on the shared 2-core VM the same binary
  * runs up to 1.4x slower for minutes at a time, and ratios of runs taken
  * one after another (thread scaling, mote against llvmpipe) swung with it.
- * Turns of one frame would leave each frame the caches of the other
- * renderer's buffers (mote's 1080p frame: 1.8 against 1.3 ms); turns of
- * BENCH_TURN frames leave that to the first frame of each turn. */
+ * A turn's first frames find the caches full of the other renderer's
+ * buffers: the first frame after a switch took 1.6x mote's usual time at
+ * 1080p (Suzanne, tex-nearest) and 1.15x llvmpipe's, and the grid took
+ * four or five frames to recover. So with two renderers or more each turn
+ * begins with BENCH_TURN_WARM frames that are drawn but not timed (the
+ * frames before the turn's first), as an application drawing only with
+ * one renderer would have warmed its caches. */
 #define BENCH_MAX_PAIRED BENCH_MAX_CPUS   /* check_cores times every core in turns */
 #define BENCH_TURN 10
+#define BENCH_TURN_WARM 3
 static void time_frames_paired(const frame_fn fn[], void *const ctx[], int count, int frames,
                                bench_time out[])
 {
@@ -661,13 +666,16 @@ static void time_frames_paired(const frame_fn fn[], void *const ctx[], int count
     while (n < frames) {
         int turn = frames - n < BENCH_TURN ? frames - n : BENCH_TURN;
         double t1 = 0.0;
-        for (int i = 0; i < count; i++)
+        for (int i = 0; i < count; i++) {
+            for (int w = count > 1 ? BENCH_TURN_WARM : 0; w > 0; w--)
+                fn[i](ctx[i], n >= w ? n - w : 0);
             for (int f = n; f < n + turn; f++) {
                 double t0 = bench_now();
                 fn[i](ctx[i], f);
                 t1 = bench_now();
                 ms[i][f] = (t1 - t0) * 1e3;
             }
+        }
         n += turn;
         if (t1 - start > opt.cap_s * count && n >= 5)
             break;
@@ -1117,11 +1125,12 @@ static bench_table *section_llvmpipe(void)
     tbl_note(t, "%s. Same camera, triangles, texture; GL fixed-function per-vertex lighting "
                 "(mote's formula for a diffuse point light); time includes glFinish (OSMesa then has "
                 "the image in the caller's buffer). Each mode's llvmpipe and mote (one thread, serial binned path) "
-                "frames are timed in turns of 10 frames, in one run: mote ms median and mote/lp "
+                "frames are timed in turns of %d frames (each turn after %d frames drawn untimed), in one run: "
+                "mote ms median and mote/lp "
                 "time come from that run. mote/lp time < 1: mote is faster. Errors against "
                 "the same reference as above. GL flat shading takes the provoking vertex's lit colour, "
                 "mote's the centroid's: flat errors differ for that reason.",
-             gl_name);
+             gl_name, BENCH_TURN, BENCH_TURN_WARM);
     return t;
 }
 
@@ -1169,11 +1178,11 @@ static bench_table *section_threads(void)
             fprintf(stderr, "  threads %s %d %.3f ms (1 thread %.3f ms)\n", s->name, th, r->t.med, tt[0].med);
         }
     }
-    tbl_note(t, "each thread count timed in turns of 10 frames with a 1-thread device (binned, no parallel_for, "
-                "on the fastest core), "
+    tbl_note(t, "each thread count timed in turns of %d frames (each turn after %d frames drawn untimed) "
+                "with a 1-thread device (binned, no parallel_for, on the fastest core), "
                 "in one run; speed-up: the ratio of their medians; cores allow: the sum of the speeds of that "
                 "many fastest cores, relative to the fastest (core check: %s); efficiency: speed-up over what "
-                "the cores allow; %d cores online.", cores_line, opt.max_threads);
+                "the cores allow; %d cores online.", BENCH_TURN, BENCH_TURN_WARM, cores_line, opt.max_threads);
     return t;
 }
 
