@@ -1038,6 +1038,71 @@ void loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_da
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* ---- geometry without indices ------------------------------------------- */
+
+/* Babylon.js draws an isUnIndexed mesh with drawArrays: vertices 0,1,2 /
+ * 3,4,5 / ... are its triangles, any indices ignored, a partial last
+ * triangle dropped; a sub-mesh draws its vertex range. */
+void loader_should_draw_unindexed_meshes_as_consecutive_triangles(void)
+{
+    mote_scene s;
+    load_json("{\"meshes\":[{\"id\":\"u\",\"isUnIndexed\":true,\"indices\":[0,0,0],"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1, 5,5,5]}]}",
+              "u", &s);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    const mote_mesh *m = &s.meshes[0];
+    TEST_ASSERT_EQUAL_UINT32(7, m->vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(6, m->index_count);
+    for (uint32_t i = 0; i < m->index_count; i++)
+        TEST_ASSERT_EQUAL_UINT32(i, m->indices[i]);
+    TEST_ASSERT_EQUAL_STRING("meshes[0]: isUnIndexed, but 7 vertices is not a multiple of 3; "
+                             "the last 1 are not drawn", s.warning);
+    /* smooth normals come from those triangles: the first faces -z */
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, fabsf(m->vertices[0].normal[2]));
+    mote_scene_free(&s);
+    load_json("{\"meshes\":[{\"id\":\"u\",\"isUnIndexed\":true,"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1],"
+              "\"subMeshes\":[{\"materialIndex\":0,\"verticesStart\":0,\"verticesCount\":3,"
+              "\"indexStart\":0,\"indexCount\":3},{\"materialIndex\":0,\"verticesStart\":3,"
+              "\"verticesCount\":3,\"indexStart\":3,\"indexCount\":3}]}]}", "u", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].index_count);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].indices[0]);
+    TEST_ASSERT_EQUAL_UINT32(5, s.meshes[1].indices[2]);
+    mote_scene_free(&s);
+    /* one geometry drawn unindexed by one mesh and by its indices by another */
+    load_json("{\"geometries\":{\"vertexData\":[{\"id\":\"g\",\"indices\":[2,1,0],"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1]}]},"
+              "\"meshes\":[{\"id\":\"a\",\"geometryId\":\"g\",\"isUnIndexed\":true},"
+              "{\"id\":\"b\",\"geometryId\":\"g\"},"
+              "{\"id\":\"c\",\"geometryId\":\"g\",\"isUnIndexed\":true}]}", "g", &s);
+    TEST_ASSERT_EQUAL(3, s.mesh_count);
+    TEST_ASSERT_EQUAL_UINT32(6, s.meshes[0].index_count);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].index_count);
+    TEST_ASSERT_EQUAL_UINT32(2, s.meshes[1].indices[0]);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].indices, s.meshes[2].indices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[2].vertices);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* Positions without indices (nor isUnIndexed) draw nothing: said, not silent. */
+void loader_should_warn_about_positions_without_indices(void)
+{
+    mote_scene s;
+    load_json("{\"meshes\":[{\"id\":\"p\",\"positions\":[0,0,0, 1,0,0, 0,1,0]}]}", "p", &s);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[0].vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(0, s.meshes[0].index_count);
+    TEST_ASSERT_EQUAL_STRING("meshes[0]: has positions but no indices (and no isUnIndexed): it "
+                             "draws no triangles", s.warning);
+    mote_scene_free(&s);
+    /* empty arrays are an empty mesh, not a forgotten key */
+    load_json("{\"meshes\":[{\"id\":\"p\",\"positions\":[]}]}", "p", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1079,6 +1144,8 @@ int main(void)
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
+    RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);
+    RUN_TEST(loader_should_warn_about_positions_without_indices);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

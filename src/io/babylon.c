@@ -20,7 +20,9 @@
  *
  * Decisions (tested in tests/test_loader_errors.c):
  * - A mesh with no vertex data loads as a 0-vertex mesh (it may be a
- *   parent); empty arrays are fine and give 0 triangles.
+ *   parent); empty arrays are fine and give 0 triangles. Positions with
+ *   no indices give 0 triangles too, with a warning, unless the mesh says
+ *   isUnIndexed (its vertices taken three by three: mote__sequential_indices).
  * - Duplicate material (and multi-material) ids: the last wins, with a
  *   warning, as Babylon.js resolves materialId with getLastMaterialById.
  *   A mesh's materialUniqueId, when it matches a (multi-)material's
@@ -149,6 +151,7 @@ typedef struct mote__node {
     bool use_quat;
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
+    bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
     mote_vertex *verts;
     uint32_t nv;
     /* uvs2, 2 floats per vertex, in the temporary store; read only when a
@@ -1061,8 +1064,6 @@ static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node
     return MOTE_OK;
 }
 
-/* The current layout, from the mesh itself or from a geometries.vertexData
- * entry (src, named src_where in messages). */
 /* Gives to the vertex and index arrays of from: shared, not copied. */
 static void mote__share_arrays(mote__node *to, mote__node *from)
 {
@@ -1096,6 +1097,31 @@ static R mote__per_vertex(mote__ld *ld, const cJSON *arr, const char *where, con
     return mote__fill(ld, arr, at, nd, what, per);
 }
 
+/* isUnIndexed: Babylon.js draws vertices 0,1,2 / 3,4,5 / ... as triangles
+ * and ignores any indices. The indices 0..nv-1 let the core draw it as any
+ * other mesh; the whole mesh draws the first nv - nv % 3 of them (a partial
+ * last triangle is dropped, as drawArrays drops it), and a sub-mesh its own
+ * vertex range (mote__submeshes). */
+static R mote__sequential_indices(mote__ld *ld, const char *where, mote__node *nd)
+{
+    if (nd->nv > ld->lim.max_indices)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: isUnIndexed: %u vertices, more indices "
+                          "than the limit of %u", where, (unsigned)nd->nv,
+                          (unsigned)ld->lim.max_indices);
+    if (nd->nv % 3)
+        mote__warn(ld, "%s: isUnIndexed, but %u vertices is not a multiple of 3; the last %u "
+                   "are not drawn", where, (unsigned)nd->nv, (unsigned)(nd->nv % 3));
+    nd->idx = mote__store_alloc(ld->keep, nd->nv, sizeof *nd->idx);
+    if (!nd->idx)
+        return mote__oom(ld, where);
+    for (uint32_t k = 0; k < nd->nv; k++)
+        nd->idx[k] = k;
+    nd->ni = nd->nv - nd->nv % 3;
+    return MOTE_OK;
+}
+
+/* The current layout, from the mesh itself or from a geometries.vertexData
+ * entry (src, named `where` in messages); nd->unindexed is the mesh's. */
 static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *where,
                                 mote__node *nd)
 {
@@ -1110,7 +1136,7 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
     char at[96], iat[96];
     snprintf(iat, sizeof iat, "%s.indices", where);
     uint32_t max_index;
-    if (ind)
+    if (ind && !nd->unindexed)
         MOTE__TRY(mote__indices(ld, ind, iat, nd, &max_index));
     size_t len = mote__array_len(pos);
     snprintf(at, sizeof at, "%s.positions", where);
@@ -1119,6 +1145,11 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
                           len);
     size_t nv = len / 3;
     MOTE__TRY(mote__alloc_vertices(ld, at, nv, nd));
+    if (nd->unindexed)
+        MOTE__TRY(mote__sequential_indices(ld, where, nd));
+    else if (!ind && nv > 0)
+        mote__warn(ld, "%s: has positions but no indices (and no isUnIndexed): it draws no "
+                   "triangles", where);
     if (pos)
         MOTE__TRY(mote__fill(ld, pos, at, nd, MOTE__POS, 3));
     if (nrm)
@@ -1162,7 +1193,7 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
             const cJSON *e = mote__get(s, keys[j]);
             snprintf(at2, sizeof at2, "%s.%s", at, keys[j]);
             if (!e) {
-                if (j == 4)
+                if (j == 4 && !nd->unindexed)
                     return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
                 continue;
             }
@@ -1172,6 +1203,14 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
             return mote__fail(ld, MOTE_ERR_RANGE, "%s: vertices %u..%llu are out of range "
                               "(%u vertices)", at, (unsigned)v[1],
                               (unsigned long long)v[1] + v[2], (unsigned)nd->nv);
+        nd->subs[k].material_index = v[0];
+        if (nd->unindexed) {
+            /* drawn as drawArrays(verticesStart, verticesCount): the
+             * sequential indices from verticesStart, whole triangles only */
+            nd->subs[k].index_start = v[1];
+            nd->subs[k].index_count = v[2] - v[2] % 3;
+            continue;
+        }
         if ((uint64_t)v[3] + v[4] > nd->ni)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s: indices %u..%llu are out of range "
                               "(%u indices)", at, (unsigned)v[3],
@@ -1179,7 +1218,6 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
         if (v[3] % 3 || v[4] % 3)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s: indexStart %u and indexCount %u must "
                               "be multiples of 3", at, (unsigned)v[3], (unsigned)v[4]);
-        nd->subs[k].material_index = v[0];
         nd->subs[k].index_start = v[3];
         nd->subs[k].index_count = v[4];
     }
@@ -1239,6 +1277,7 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
     MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
+    MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
     const cJSON *verts, *pos;
     MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
@@ -1258,13 +1297,16 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
                               "%s.geometryId: \"%s\" names no geometries.vertexData entry",
                               where, mote__quote(geometry_id).s);
         mote__geometry *g = &ld->geometries[k];
-        if (g->owner >= 0) {      /* parsed once: meshes share it (no copies) */
+        /* parsed once: meshes share it (no copies), unless one draws it
+         * unindexed and the other by its indices */
+        if (g->owner >= 0 && ld->nodes[g->owner].unindexed == nd->unindexed) {
             mote__share_arrays(nd, &ld->nodes[g->owner]);
         } else {
             char gat[64];
             snprintf(gat, sizeof gat, "geometries.vertexData[%d]", k);
             MOTE__TRY(mote__current_geometry(ld, g->json, gat, nd));
-            g->owner = (int)(nd - ld->nodes);
+            if (g->owner < 0)
+                g->owner = (int)(nd - ld->nodes);
         }
     } else {
         /* an incremental (.incremental.babylon) or binary export keeps the
