@@ -1103,6 +1103,38 @@ void loader_should_warn_about_positions_without_indices(void)
     mote_scene_free(&s);
 }
 
+/* A parentId naming nothing (a partial export, "export selected"): as in
+ * Babylon.js the node loads without a parent and keeps its own transform,
+ * whether it is a mesh, the camera or a light; the file loads, warned. */
+void loader_should_load_a_node_whose_parent_is_missing_without_a_parent(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"m\",\"parentId\":\"gone\",\"position\":[1,2,3]," TRI "},"
+                    "{\"id\":\"n\",\"parentId\":77,\"position\":[4,5,6]}],"
+                    "\"cameras\":[{\"id\":\"c\",\"parentId\":\"gone\",\"position\":[0,0,-5],"
+                    "\"target\":[0,0,0]}],"
+                    "\"lights\":[{\"id\":\"l\",\"type\":0,\"parentId\":\"gone\","
+                    "\"position\":[7,8,9]}]}";
+    mote_scene s;
+    load_json(j, "pm", &s);
+    TEST_ASSERT_NULL(s.meshes[0].parent);
+    TEST_ASSERT_NULL(s.meshes[1].parent);
+    float o[3];
+    world_origin(&s.meshes[0], o);
+    ASSERT_VEC3(1.0f, 2.0f, 3.0f, o, 0.0f);
+    ASSERT_VEC3(0.0f, 0.0f, -5.0f, s.camera.position, 0.0f);
+    ASSERT_VEC3(0.0f, 0.0f, 0.0f, s.camera.target, 0.0f);
+    TEST_ASSERT_EQUAL(1, s.light_count);
+    ASSERT_VEC3(7.0f, 8.0f, 9.0f, s.lights[0].position, 0.0f);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "meshes[0].parentId: \"gone\" names no node; "
+                                        "loaded without a parent"), s.warning);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "meshes[1].parentId: 77 is the uniqueId of "
+                                        "no node"), s.warning);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "cameras[0].parentId: \"gone\""), s.warning);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "lights[0].parentId: \"gone\""), s.warning);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1146,6 +1178,7 @@ int main(void)
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);
     RUN_TEST(loader_should_warn_about_positions_without_indices);
+    RUN_TEST(loader_should_load_a_node_whose_parent_is_missing_without_a_parent);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

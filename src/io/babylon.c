@@ -28,8 +28,10 @@
  *   A mesh's materialUniqueId, when it matches a (multi-)material's
  *   uniqueId, is used before its materialId (current Babylon.js files).
  * - A materialId (or multi-material slot) naming nothing: default white
- *   material, with a warning. A parentId naming nothing is an error, and
- *   so is a parentInstanceIndex past the parent's instances. A parentId
+ *   material, with a warning. A parentId naming nothing leaves the node
+ *   (mesh, camera or light) without a parent, with a warning, as Babylon.js
+ *   loads it; a parentInstanceIndex past the parent's instances is an
+ *   error. A parentId
  *   several nodes hold names the last of them (Babylon.js's
  *   getLastEntryById).
  * - A mesh whose arrays are in another file (incremental or binary
@@ -1629,21 +1631,20 @@ static R mote__parents(mote__ld *ld)
         nd->parent = -1;
         if (!nd->parent_id)
             continue;
-        if (nd->parent_by_unique) {
+        if (nd->parent_by_unique)
             nd->parent = mote__idmap_find(unique_map, nd->parent_id);
-            if (nd->parent < 0)
-                MOTE__TRY(mote__camera_light_parent(ld, nd));
-            if (nd->parent < 0)
-                return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: %s is the uniqueId of no "
-                                  "mesh or transform node", nd->where, nd->parent_id);
-            continue;
-        }
-        nd->parent = mote__idmap_find_last(ld->node_map, nd->parent_id);
+        else
+            nd->parent = mote__idmap_find_last(ld->node_map, nd->parent_id);
         if (nd->parent < 0)
             MOTE__TRY(mote__camera_light_parent(ld, nd));
-        if (nd->parent < 0)
-            return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
-                              "transform node", nd->where, mote__quote(nd->parent_id).s);
+        /* Babylon.js leaves such a node without a parent (a partial export,
+         * "export selected"): it keeps its own transform */
+        if (nd->parent < 0 && nd->parent_by_unique)
+            mote__warn(ld, "%s.parentId: %s is the uniqueId of no node; loaded without a "
+                       "parent", nd->where, nd->parent_id);
+        else if (nd->parent < 0)
+            mote__warn(ld, "%s.parentId: \"%s\" names no node; loaded without a parent",
+                       nd->where, mote__quote(nd->parent_id).s);
     }
     for (int i = 0; i < ld->node_count; i++) {
         mote__node *nd = &ld->nodes[i];
