@@ -64,12 +64,17 @@ static long read_all(const char *path, unsigned char *buf, long cap)
         TEST_ASSERT_FLOAT_WITHIN(tol, z, (v)[2]);  \
     } while (0)
 
-/* Loads a scene from JSON text (no folder: colours only), or fails the test
- * with the loader's message. */
+/* Loads a scene from JSON text with its textures in folder dir (NULL: no
+ * folder, colours only), or fails the test with the loader's message. */
+static void load_json_in(const char *json, const char *name, const char *dir, mote_scene *s)
+{
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(json, strlen(json), name, dir, NULL, s,
+                                                              msg, sizeof msg), msg);
+}
+
 static void load_json(const char *json, const char *name, mote_scene *s)
 {
-    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(json, strlen(json), name, NULL, NULL, s,
-                                                              msg, sizeof msg), msg);
+    load_json_in(json, name, NULL, s);
 }
 
 /* A size x size RGBA device without depth, its frame begun, the camera at
@@ -975,8 +980,7 @@ void loader_should_load_a_texture_once_for_two_materials(void)
                     "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m1\",\"positions\":[0,0,0],\"indices\":[]},"
                     "{\"id\":\"b\",\"materialId\":\"m2\"}]}";
     mote_scene s;
-    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "t", tmpdir, NULL,
-                                                              &s, msg, sizeof msg), msg);
+    load_json_in(j, "t", tmpdir, &s);
     TEST_ASSERT_EQUAL(1, s.texture_count);
     TEST_ASSERT_EQUAL(2, s.textures[0].width);
     TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[0].material.texture);
@@ -1135,6 +1139,50 @@ void loader_should_load_a_node_whose_parent_is_missing_without_a_parent(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* A texture name written as a URL: when no file has the name as written,
+ * the file named by it decoded, without its "?query", is loaded (once).
+ * Invalid escapes and %00 are not decoded, and a decoded name is held to
+ * the scene's folder as any other. */
+void loader_should_read_a_url_encoded_texture_name_as_the_decoded_file(void)
+{
+    uint8_t px[4] = {1, 2, 3, 255};
+    char sub[300];
+    snprintf(sub, sizeof sub, "%s/my dir", tmpdir);
+    mkdir(sub, 0700);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(tmp_path("my dir/a b.png"), px, 1, 1, 0, msg,
+                                               sizeof msg));
+    const char *j = "{\"materials\":["
+                    "{\"id\":\"m1\",\"diffuseTexture\":{\"name\":\"my%20dir/a%20b.png?v=2\"}},"
+                    "{\"id\":\"m2\",\"diffuseTexture\":{\"name\":\"my dir/a b.png?x\"}},"
+                    "{\"id\":\"m3\",\"diffuseTexture\":{\"name\":\"my dir/a b.png\"}}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m1\"},"
+                    "{\"id\":\"b\",\"materialId\":\"m2\"},{\"id\":\"c\",\"materialId\":\"m3\"}]}";
+    mote_scene s;
+    load_json_in(j, "u", tmpdir, &s);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    for (int k = 0; k < 3; k++)
+        TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[k].material.texture);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, s.textures[0].pixels, sizeof px);
+    mote_scene_free(&s);
+    /* not decoded, from the folder "my dir" (files "a b.png" in it and
+     * above it): %00, a decoded name leaving the folder, invalid escapes */
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(tmp_path("a b.png"), px, 1, 1, 0, msg,
+                                               sizeof msg));
+    static const char *const refused[] = {"a%20b.png%00", "%2e%2e/a%20b.png", "a%2gb.png",
+                                          "a%20b.png%"};
+    for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++) {
+        char scene[256];
+        snprintf(scene, sizeof scene, "{\"materials\":[{\"id\":\"m\",\"diffuseTexture\":"
+                 "{\"name\":\"%s\"}}]}", refused[k]);
+        TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_IO, mote_scene_load_memory(scene, strlen(scene), "u",
+                                                                      sub, NULL, &s, msg,
+                                                                      sizeof msg), refused[k]);
+        TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "cannot open"), msg);
+        TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, refused[k]), msg);
+    }
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1179,6 +1227,7 @@ int main(void)
     RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);
     RUN_TEST(loader_should_warn_about_positions_without_indices);
     RUN_TEST(loader_should_load_a_node_whose_parent_is_missing_without_a_parent);
+    RUN_TEST(loader_should_read_a_url_encoded_texture_name_as_the_decoded_file);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)
