@@ -1126,10 +1126,8 @@ static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node
     size_t n = mote__array_len(arr), nv = nd->nv;
     if (n == 0 && nv == 0)
         return MOTE_OK;           /* nothing to colour */
-    size_t stride = n == nv * 4 ? 4 : n == nv * 3 ? 3 : 0;
-    if (!stride)
-        return mote__fail(ld, MOTE_ERR_RANGE,
-                          "%s: %zu floats, expected 4 or 3 per vertex (%zu vertices)", at, n, nv);
+    /* n is 4 or 3 per vertex: mote__check_vertex_counts */
+    size_t stride = n == nv * 4 ? 4 : 3;
     nd->colors = mote__store_alloc(ld->keep, nv, sizeof *nd->colors);
     if (!nd->colors)
         return mote__oom(ld, at);
@@ -1157,18 +1155,56 @@ static void mote__share_arrays(mote__node *to, mote__node *from)
     to->ni = from->ni;
 }
 
-/* arr (where.key): `per` floats for each of nd's vertices, into the part
- * `what` says (uvs2 get their temporary array here). */
+/* An array of the current layout that has `per` floats for each vertex
+ * (colours: `per`, or `per_alt` without alpha; 0: no second length). */
+typedef struct mote__vertex_array {
+    const char *key;
+    const cJSON *arr;             /* NULL: absent */
+    size_t per, per_alt;
+} mote__vertex_array;
+
+/* Every array present must have as many vertices as positions gives
+ * (nv). When one has not, the message names each that disagrees and the
+ * vertex count its length gives, so that a positions array one vertex
+ * short is not blamed on the normals. */
+static R mote__check_vertex_counts(mote__ld *ld, const char *where, size_t nv,
+                                   const mote__vertex_array *arrays, int count)
+{
+    char list[320];
+    size_t used = 0;
+    list[0] = '\0';
+    for (int i = 0; i < count; i++) {
+        const mote__vertex_array *a = &arrays[i];
+        size_t n = mote__array_len(a->arr);
+        if (!a->arr || n == nv * a->per || (a->per_alt && n == nv * a->per_alt))
+            continue;
+        char gives[48];
+        if (a->per_alt)
+            snprintf(gives, sizeof gives, "not %zu or %zu per vertex", a->per, a->per_alt);
+        else if (n % a->per)
+            snprintf(gives, sizeof gives, "not a multiple of %zu", a->per);
+        else
+            snprintf(gives, sizeof gives, "%zu vertices", n / a->per);
+        int w = snprintf(list + used, sizeof list - used, "%s%s has %zu floats (%s)",
+                         used ? ", " : "", a->key, n, gives);
+        if (w > 0)
+            used += (size_t)w < sizeof list - used ? (size_t)w : sizeof list - used - 1;
+    }
+    if (used == 0)
+        return MOTE_OK;
+    return mote__fail(ld, MOTE_ERR_RANGE, "%s: positions has %zu floats (%zu vertices), but %s",
+                      where, 3 * nv, nv, list);
+}
+
+/* arr (where.key): `per` floats for each of nd's vertices (the length is
+ * checked by mote__check_vertex_counts), into the part `what` says (uvs2
+ * get their temporary array here). */
 static R mote__per_vertex(mote__ld *ld, const cJSON *arr, const char *where, const char *key,
                           size_t per, int what, mote__node *nd)
 {
     char at[96];
     snprintf(at, sizeof at, "%s.%s", where, key);
-    size_t n = mote__array_len(arr), nv = nd->nv;
-    if (n != nv * per)
-        return mote__fail(ld, MOTE_ERR_RANGE,
-                          "%s: %zu floats, expected %zu per vertex (%zu vertices)", at, n, per,
-                          nv);
+    size_t nv = nd->nv;
     if (what == MOTE__UV2) {
         nd->uv2 = mote__store_alloc(&ld->tmp, nv, 2 * sizeof *nd->uv2);
         if (!nd->uv2)
@@ -1225,6 +1261,9 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
         return mote__fail(ld, MOTE_ERR_RANGE, "%s: %zu floats is not a multiple of 3", at,
                           len);
     size_t nv = len / 3;
+    const mote__vertex_array arrays[4] = {
+        {"normals", nrm, 3, 0}, {"uvs", uvs, 2, 0}, {"uvs2", uvs2, 2, 0}, {"colors", colors, 4, 3}};
+    MOTE__TRY(mote__check_vertex_counts(ld, where, nv, arrays, 4));
     MOTE__TRY(mote__alloc_vertices(ld, at, nv, nd));
     if (nd->unindexed)
         MOTE__TRY(mote__sequential_indices(ld, where, nd));
