@@ -64,7 +64,10 @@ typedef struct mote_scene {
     float ambient[3];
     mote_rgba clear_color;
     float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
-    char warning[256];            /* non-fatal notes (downgraded textures, ...) */
+    /* Non-fatal notes (downgraded textures, ...), "; " between them: each
+     * distinct one once, " (x12)" after one given 12 times, and "; N more
+     * warnings" for those that do not fit. */
+    char warning[256];
     /* One flag per mesh (mesh_count): its material says backFaceCulling
      * false, so Babylon.js draws both of its sides. The core's culling is a
      * per-draw option (mote_draw_desc.cull), not a material property:

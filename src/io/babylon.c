@@ -198,6 +198,15 @@ typedef struct mote__xlist {
     mote__idmap *ids, *uniques;
 } mote__xlist;
 
+/* A distinct warning and how many times it was given. */
+typedef struct mote__warning {
+    char text[256];
+    unsigned count;
+} mote__warning;
+
+/* More distinct warnings than scene.warning (256 bytes) can show anyway. */
+#define MOTE__MAX_WARNINGS 16
+
 typedef struct mote__ld {
     char name[128];
     const char *base_dir;
@@ -225,6 +234,9 @@ typedef struct mote__ld {
     bool any_uv2;                 /* a material samples uvs2: keep them while loading */
     int texture_cap;
     const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
+    mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
+    int warning_count;
+    unsigned warnings_dropped;    /* given after the list was full */
 } mote__ld;
 
 typedef mote_result R;
@@ -253,23 +265,56 @@ static R mote__oom(mote__ld *ld, const char *at)
     return mote__fail(ld, MOTE_ERR_OUT_OF_MEMORY, "%s: out of memory", at);
 }
 
+/* scene.warning from ld->warnings: each distinct warning once, "(xN)"
+ * when it was given N times, so that a warning repeated per sub-mesh does
+ * not crowd out the ones after it; what does not fit is counted at the
+ * end. */
+static void mote__show_warnings(mote__ld *ld)
+{
+    char *w = ld->scene->warning;
+    const size_t cap = sizeof ld->scene->warning, tail = 24; /* "; 99 more warnings" */
+    size_t used = 0;
+    int shown = 0;
+    w[0] = '\0';
+    for (; shown < ld->warning_count; shown++) {
+        const mote__warning *e = &ld->warnings[shown];
+        char count[24] = "";
+        if (e->count > 1)
+            snprintf(count, sizeof count, " (x%u)", e->count);
+        size_t need = (used ? 2 : 0) + strlen(e->text) + strlen(count);
+        if (used && used + need + tail >= cap)
+            break;                /* the first is shown, cut short if it must be */
+        snprintf(w + used, cap - used, "%s%s%s", used ? "; " : "", e->text, count);
+        used = strlen(w);
+    }
+    unsigned more = ld->warnings_dropped + (unsigned)(ld->warning_count - shown);
+    if (more)
+        snprintf(w + used, cap - used, "; %u more warning%s", more, more > 1 ? "s" : "");
+}
+
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
 static void mote__warn(mote__ld *ld, const char *fmt, ...)
 {
-    char *w = ld->scene->warning;
-    size_t n = strlen(w), cap = sizeof ld->scene->warning;
-    if (n + 3 >= cap)
-        return;
-    if (n) {
-        memcpy(w + n, "; ", 3);
-        n += 2;
-    }
+    char text[sizeof ld->warnings[0].text];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(w + n, cap - n, fmt, ap);
+    vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
+    int i = 0;
+    while (i < ld->warning_count && strcmp(ld->warnings[i].text, text) != 0)
+        i++;
+    if (i < ld->warning_count) {
+        ld->warnings[i].count++;
+    } else if (i < MOTE__MAX_WARNINGS) {
+        memcpy(ld->warnings[i].text, text, sizeof text);
+        ld->warnings[i].count = 1;
+        ld->warning_count++;
+    } else {
+        ld->warnings_dropped++;
+    }
+    mote__show_warnings(ld);
 }
 
 /* A name from the file, safe to print (no control bytes, bounded). */
@@ -2078,7 +2123,7 @@ static R mote__lights(mote__ld *ld)
 {
     const cJSON *lights;
     MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
-    int i = 0;
+    int i = 0, ignored = 0, first_ignored = 0;
     mote_scene *sc = ld->scene;
     sc->has_lights = lights && lights->child;
     for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
@@ -2145,12 +2190,19 @@ static R mote__lights(mote__ld *ld)
                 mote__transform(w, L.direction, false);
         }
         if (sc->light_count >= MOTE_MAX_LIGHTS) {
-            mote__warn(ld, "%s: more than %d lights; this one is ignored", at,
-                       MOTE_MAX_LIGHTS);
+            if (ignored++ == 0)
+                first_ignored = i;
             continue;
         }
         sc->lights[sc->light_count++] = L;
     }
+    /* one warning for them all, not one each */
+    if (ignored == 1)
+        mote__warn(ld, "lights[%d]: more than %d lights; this one is ignored", first_ignored,
+                   MOTE_MAX_LIGHTS);
+    else if (ignored > 1)
+        mote__warn(ld, "lights[%d]: more than %d lights; it and %d later ones are ignored",
+                   first_ignored, MOTE_MAX_LIGHTS, ignored - 1);
     return MOTE_OK;
 }
 
