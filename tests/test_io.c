@@ -1224,6 +1224,38 @@ void loader_should_show_each_distinct_warning_once_with_its_count(void)
     mote_scene_free(&s);
 }
 
+/* A path naming a FIFO, a directory or a device is refused before it is
+ * opened: fopen on a FIFO waits for a writer, and /dev/zero would be read
+ * up to the size limit. */
+void file_reading_should_refuse_a_fifo_a_directory_and_a_device(void)
+{
+#if defined(__unix__) || defined(__APPLE__)
+    char fifo[512];
+    snprintf(fifo, sizeof fifo, "%s", tmp_path("fifo.png"));
+    TEST_ASSERT_EQUAL_MESSAGE(0, mkfifo(fifo, 0600), fifo);
+    alarm(30);                    /* before the check, the open never returned */
+    mote_texture t;
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load(fifo, NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "fifo.png: cannot open: a FIFO, not a regular file"),
+                                 msg);
+    mote_scene s;
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_scene_load(fifo, NULL, &s, msg, sizeof msg));
+    const char *j = "{\"materials\":[{\"id\":\"m\",\"diffuseTexture\":{\"name\":\"fifo.png\"}}]}";
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_scene_load_memory(j, strlen(j), "f", tmpdir, NULL, &s,
+                                                          msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "f: materials[0].diffuseTexture.name: "), msg);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "a FIFO, not a regular file"), msg);
+    alarm(0);
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load(tmpdir, NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "a directory, not a regular file"), msg);
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load("/dev/null", NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("/dev/null: cannot open: a device, not a regular file", msg);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+#else
+    TEST_IGNORE_MESSAGE("no FIFOs or devices to test with here");
+#endif
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1270,6 +1302,7 @@ int main(void)
     RUN_TEST(loader_should_load_a_node_whose_parent_is_missing_without_a_parent);
     RUN_TEST(loader_should_read_a_url_encoded_texture_name_as_the_decoded_file);
     RUN_TEST(loader_should_show_each_distinct_warning_once_with_its_count);
+    RUN_TEST(file_reading_should_refuse_a_fifo_a_directory_and_a_device);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)
