@@ -77,16 +77,23 @@ static void load_json(const char *json, const char *name, mote_scene *s)
     load_json_in(json, name, NULL, s);
 }
 
+/* A width x height RGBA device without depth. */
+static void init_color_device(mote_device *dev, uint8_t *color, int width, int height)
+{
+    mote_device_desc dd;
+    memset(&dd, 0, sizeof dd);
+    dd.width = width;
+    dd.height = height;
+    dd.color = color;
+    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(dev, &dd));
+}
+
 /* A size x size RGBA device without depth, its frame begun, the camera at
  * z = -3 looking at the origin. */
 static void begin_small_frame(mote_device *dev, uint8_t *color, int size)
 {
-    mote_device_desc dd;
-    memset(&dd, 0, sizeof dd);
-    dd.width = dd.height = size;
-    dd.color = color;
-    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(dev, &dd));
+    init_color_device(dev, color, size, size);
     mote_frame_desc f;
     memset(&f, 0, sizeof f);
     f.camera.position[2] = -3.0f;
@@ -1256,6 +1263,38 @@ void file_reading_should_refuse_a_fifo_a_directory_and_a_device(void)
 #endif
 }
 
+/* fovMode 1 (Babylon.js's FOVMODE_HORIZONTAL_FIXED): fov spans the width,
+ * so the vertical field follows the aspect ratio. */
+void loader_should_read_fov_mode_1_as_a_horizontal_field_of_view(void)
+{
+    mote_scene s;
+    load_json("{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],\"target\":[0,0,1],"
+              "\"fov\":1.5707963267948966,\"fovMode\":1,\"minZ\":0.1,\"maxZ\":10}]}", "h", &s);
+    TEST_ASSERT_TRUE(s.camera_fov_is_horizontal);
+    /* 90 degrees across a 200 x 100 frame: x = z reaches the right edge,
+     * y = z / 2 the top (the vertical field is 2 atan(1/2)) */
+    static uint8_t color[200 * 100 * 4];
+    mote_device dev;
+    init_color_device(&dev, color, 200, 100);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 2.0f, &f);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    float x, y, z;
+    const float right[3] = {1, 0, 1}, top[3] = {0, 0.5f, 1};
+    TEST_ASSERT_TRUE(mote_project(&dev, right, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 200.0f, x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 50.0f, y);
+    TEST_ASSERT_TRUE(mote_project(&dev, top, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 100.0f, x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 0.0f, y);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    mote_scene_free(&s);
+    /* fovMode 0, or none: vertical, as before */
+    load_json("{\"cameras\":[{\"id\":\"c\",\"fovMode\":0}]}", "h", &s);
+    TEST_ASSERT_FALSE(s.camera_fov_is_horizontal);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1303,6 +1342,7 @@ int main(void)
     RUN_TEST(loader_should_read_a_url_encoded_texture_name_as_the_decoded_file);
     RUN_TEST(loader_should_show_each_distinct_warning_once_with_its_count);
     RUN_TEST(file_reading_should_refuse_a_fifo_a_directory_and_a_device);
+    RUN_TEST(loader_should_read_fov_mode_1_as_a_horizontal_field_of_view);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

@@ -2093,6 +2093,9 @@ static R mote__camera(mote__ld *ld)
     MOTE__TRY(mote__num(ld, cam, "maxZ", at, &c->zfar));
     if (!(c->fov > 0.0f && c->fov < 3.14159f))
         return mote__fail(ld, MOTE_ERR_RANGE, "%s.fov: %g is not in (0, pi)", at, c->fov);
+    /* Babylon.js's FOVMODE_HORIZONTAL_FIXED: any fovMode but 0 (vertical);
+     * the aspect ratio is known only when framing (mote_scene_frame) */
+    MOTE__TRY(mote__flag(ld, cam, "fovMode", at, &ld->scene->camera_fov_is_horizontal));
     /* Babylon.js projects with minZ <= 0 as 0.1 */
     if (c->znear <= 0.0f)
         c->znear = 0.1f;
@@ -2438,6 +2441,10 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
         radius = 1.0f;
     if (scene->has_camera) {
         frame->camera = scene->camera;
+        /* the horizontal field of view as the core's vertical one, as
+         * Babylon.js projects it: tan(v / 2) = tan(h / 2) / aspect */
+        if (scene->camera_fov_is_horizontal && aspect > 0.0f)
+            frame->camera.fov = 2.0f * atanf(tanf(0.5f * scene->camera.fov) / aspect);
     } else {
         /* front-top-right of the box, far enough that the bounding sphere
          * fits the narrower of the two fields of view, with a margin */
