@@ -1295,6 +1295,30 @@ void loader_should_read_fov_mode_1_as_a_horizontal_field_of_view(void)
     mote_scene_free(&s);
 }
 
+/* What mote does not read but that changes Babylon.js's image is said,
+ * once per scene: a right-handed scene, pivot or local matrices, an
+ * orthographic camera. An identity matrix changes nothing: no warning. */
+void loader_should_warn_once_of_unread_features_that_change_the_image(void)
+{
+    const char *j = "{\"useRightHandedSystem\":true,"
+                    "\"cameras\":[{\"id\":\"c\",\"mode\":1,\"orthoLeft\":-4}],"
+                    "\"meshes\":[{\"id\":\"a\",\"pivotMatrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]},"
+                    "{\"id\":\"b\",\"pivotMatrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 2,0,0,1]},"
+                    "{\"id\":\"c\",\"localMatrix\":[2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]}";
+    mote_scene s;
+    load_json(j, "x", &s);
+    TEST_ASSERT_EQUAL_STRING("useRightHandedSystem is not read: the image is mirrored from "
+                             "Babylon.js's; meshes[1].pivotMatrix: pivot and local matrices "
+                             "are not read; cameras[0].mode: 1 (orthographic) is drawn as a "
+                             "perspective camera", s.warning);
+    mote_scene_free(&s);
+    load_json("{\"useRightHandedSystem\":false,\"cameras\":[{\"id\":\"c\",\"mode\":0}],"
+              "\"transformNodes\":[{\"id\":\"t\",\"localMatrix\":[1,0,0,0, 0,1,0,0, "
+              "0,0,1,0, 0,0,0,1]}]}", "x", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1343,6 +1367,7 @@ int main(void)
     RUN_TEST(loader_should_show_each_distinct_warning_once_with_its_count);
     RUN_TEST(file_reading_should_refuse_a_fifo_a_directory_and_a_device);
     RUN_TEST(loader_should_read_fov_mode_1_as_a_horizontal_field_of_view);
+    RUN_TEST(loader_should_warn_once_of_unread_features_that_change_the_image);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

@@ -43,6 +43,9 @@
  *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
  * - With no base_dir (mote_scene_load_memory), embedded images are not
  *   loaded either: no textures at all, as documented.
+ * - Not read, but warned of once per scene as they change the image:
+ *   useRightHandedSystem true, a pivotMatrix or localMatrix other than the
+ *   identity, an orthographic camera (mode 1).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -234,6 +237,7 @@ typedef struct mote__ld {
     bool any_uv2;                 /* a material samples uvs2: keep them while loading */
     int texture_cap;
     const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
+    bool warned_matrix;           /* a pivotMatrix or localMatrix was warned of */
     mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
     int warning_count;
     unsigned warnings_dropped;    /* given after the list was full */
@@ -1436,10 +1440,36 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
     return MOTE_OK;
 }
 
+/* Whether obj[key] is absent or the identity matrix (16 numbers). */
+static bool mote__absent_or_identity(const cJSON *obj, const char *key)
+{
+    const cJSON *m = mote__get(obj, key);
+    if (!m)
+        return true;
+    int k = 0;
+    for (const cJSON *e = cJSON_IsArray(m) ? m->child : NULL; e; e = e->next, k++)
+        if (k >= 16 || !cJSON_IsNumber(e) || e->valuedouble != (k % 5 == 0 ? 1.0 : 0.0))
+            return false;
+    return k == 16;
+}
+
+/* A pivotMatrix or localMatrix (Babylon.js's pre-transform) moves the mesh
+ * in Babylon.js; mote does not read them: said once per scene. */
+static void mote__warn_unread_matrix(mote__ld *ld, const cJSON *mesh, const char *where)
+{
+    static const char *const keys[2] = {"pivotMatrix", "localMatrix"};
+    for (int k = 0; k < 2 && !ld->warned_matrix; k++)
+        if (!mote__absent_or_identity(mesh, keys[k])) {
+            mote__warn(ld, "%s.%s: pivot and local matrices are not read", where, keys[k]);
+            ld->warned_matrix = true;
+        }
+}
+
 /* One entry of meshes[] or transformNodes[]. */
 static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
 {
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
+    mote__warn_unread_matrix(ld, mesh, where);
     MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
@@ -2056,6 +2086,9 @@ static R mote__camera(mote__ld *ld)
     char at[48];
     snprintf(at, sizeof at, "cameras[%d]", index);
     MOTE__TRY(mote__obj_at(ld, cam, at));
+    const cJSON *mode = mote__get(cam, "mode");
+    if (cJSON_IsNumber(mode) && mode->valuedouble == 1.0)
+        mote__warn(ld, "%s.mode: 1 (orthographic) is drawn as a perspective camera", at);
     mote_camera *c = &ld->scene->camera;
     memset(c, 0, sizeof *c);
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
@@ -2292,6 +2325,11 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     cJSON *root;
     MOTE__TRY(mote__parse(ld, json, size, &root));
     ld->root = root;
+    /* Babylon.js draws such a scene right-handed; mote draws every scene
+     * left-handed, so the image is mirrored */
+    if (cJSON_IsTrue(mote__get(root, "useRightHandedSystem")))
+        mote__warn(ld, "useRightHandedSystem is not read: the image is mirrored from "
+                   "Babylon.js's");
     R r = mote__materials(ld);
     if (r == MOTE_OK) r = mote__multi_materials(ld);
     if (r == MOTE_OK) r = mote__nodes(ld);
