@@ -55,7 +55,7 @@ static void usage(FILE *out)
             "  --no-cull               draw back faces too\n"
             "  --camera EX,EY,EZ:TX,TY,TZ  eye and target (default: the scene's camera,\n"
             "                          else one that frames the scene)\n"
-            "  --fov RADIANS           vertical field of view\n"
+            "  --fov RADIANS           vertical field of view (whatever the file's fovMode)\n"
             "  --rotate RX,RY,RZ       add to every mesh's rotation (radians)\n"
             "  --frames N              time N frames after a warm-up and print ms/frame\n"
             "  --spin DEGREES          turn the scene about y by this much per timed frame\n"

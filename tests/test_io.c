@@ -64,24 +64,36 @@ static long read_all(const char *path, unsigned char *buf, long cap)
         TEST_ASSERT_FLOAT_WITHIN(tol, z, (v)[2]);  \
     } while (0)
 
-/* Loads a scene from JSON text (no folder: colours only), or fails the test
- * with the loader's message. */
+/* Loads a scene from JSON text with its textures in folder dir (NULL: no
+ * folder, colours only), or fails the test with the loader's message. */
+static void load_json_in(const char *json, const char *name, const char *dir, mote_scene *s)
+{
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(json, strlen(json), name, dir, NULL, s,
+                                                              msg, sizeof msg), msg);
+}
+
 static void load_json(const char *json, const char *name, mote_scene *s)
 {
-    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(json, strlen(json), name, NULL, NULL, s,
-                                                              msg, sizeof msg), msg);
+    load_json_in(json, name, NULL, s);
+}
+
+/* A width x height RGBA device without depth. */
+static void init_color_device(mote_device *dev, uint8_t *color, int width, int height)
+{
+    mote_device_desc dd;
+    memset(&dd, 0, sizeof dd);
+    dd.width = width;
+    dd.height = height;
+    dd.color = color;
+    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(dev, &dd));
 }
 
 /* A size x size RGBA device without depth, its frame begun, the camera at
  * z = -3 looking at the origin. */
 static void begin_small_frame(mote_device *dev, uint8_t *color, int size)
 {
-    mote_device_desc dd;
-    memset(&dd, 0, sizeof dd);
-    dd.width = dd.height = size;
-    dd.color = color;
-    dd.depth_format = MOTE_DEPTH_FORMAT_NONE;
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(dev, &dd));
+    init_color_device(dev, color, size, size);
     mote_frame_desc f;
     memset(&f, 0, sizeof f);
     f.camera.position[2] = -3.0f;
@@ -975,8 +987,7 @@ void loader_should_load_a_texture_once_for_two_materials(void)
                     "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m1\",\"positions\":[0,0,0],\"indices\":[]},"
                     "{\"id\":\"b\",\"materialId\":\"m2\"}]}";
     mote_scene s;
-    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(j, strlen(j), "t", tmpdir, NULL,
-                                                              &s, msg, sizeof msg), msg);
+    load_json_in(j, "t", tmpdir, &s);
     TEST_ASSERT_EQUAL(1, s.texture_count);
     TEST_ASSERT_EQUAL(2, s.textures[0].width);
     TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[0].material.texture);
@@ -1038,6 +1049,276 @@ void loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_da
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* ---- geometry without indices ------------------------------------------- */
+
+/* Babylon.js draws an isUnIndexed mesh with drawArrays: vertices 0,1,2 /
+ * 3,4,5 / ... are its triangles, any indices ignored, a partial last
+ * triangle dropped; a sub-mesh draws its vertex range. */
+void loader_should_draw_unindexed_meshes_as_consecutive_triangles(void)
+{
+    mote_scene s;
+    load_json("{\"meshes\":[{\"id\":\"u\",\"isUnIndexed\":true,\"indices\":[0,0,0],"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1, 5,5,5]}]}",
+              "u", &s);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    const mote_mesh *m = &s.meshes[0];
+    TEST_ASSERT_EQUAL_UINT32(7, m->vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(6, m->index_count);
+    for (uint32_t i = 0; i < m->index_count; i++)
+        TEST_ASSERT_EQUAL_UINT32(i, m->indices[i]);
+    TEST_ASSERT_EQUAL_STRING("meshes[0]: isUnIndexed, but 7 vertices is not a multiple of 3; "
+                             "the last 1 are not drawn", s.warning);
+    /* smooth normals come from those triangles: the first faces -z */
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, fabsf(m->vertices[0].normal[2]));
+    mote_scene_free(&s);
+    load_json("{\"meshes\":[{\"id\":\"u\",\"isUnIndexed\":true,"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1],"
+              "\"subMeshes\":[{\"materialIndex\":0,\"verticesStart\":0,\"verticesCount\":3,"
+              "\"indexStart\":0,\"indexCount\":3},{\"materialIndex\":0,\"verticesStart\":3,"
+              "\"verticesCount\":3,\"indexStart\":3,\"indexCount\":3}]}]}", "u", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].index_count);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].indices[0]);
+    TEST_ASSERT_EQUAL_UINT32(5, s.meshes[1].indices[2]);
+    mote_scene_free(&s);
+    /* one geometry drawn unindexed by one mesh and by its indices by another */
+    load_json("{\"geometries\":{\"vertexData\":[{\"id\":\"g\",\"indices\":[2,1,0],"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1]}]},"
+              "\"meshes\":[{\"id\":\"a\",\"geometryId\":\"g\",\"isUnIndexed\":true},"
+              "{\"id\":\"b\",\"geometryId\":\"g\"},"
+              "{\"id\":\"c\",\"geometryId\":\"g\",\"isUnIndexed\":true}]}", "g", &s);
+    TEST_ASSERT_EQUAL(3, s.mesh_count);
+    TEST_ASSERT_EQUAL_UINT32(6, s.meshes[0].index_count);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].index_count);
+    TEST_ASSERT_EQUAL_UINT32(2, s.meshes[1].indices[0]);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].indices, s.meshes[2].indices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[2].vertices);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* Positions without indices (nor isUnIndexed) draw nothing: said, not silent. */
+void loader_should_warn_about_positions_without_indices(void)
+{
+    mote_scene s;
+    load_json("{\"meshes\":[{\"id\":\"p\",\"positions\":[0,0,0, 1,0,0, 0,1,0]}]}", "p", &s);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[0].vertex_count);
+    TEST_ASSERT_EQUAL_UINT32(0, s.meshes[0].index_count);
+    TEST_ASSERT_EQUAL_STRING("meshes[0]: has positions but no indices (and no isUnIndexed): it "
+                             "draws no triangles", s.warning);
+    mote_scene_free(&s);
+    /* empty arrays are an empty mesh, not a forgotten key */
+    load_json("{\"meshes\":[{\"id\":\"p\",\"positions\":[]}]}", "p", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    mote_scene_free(&s);
+}
+
+/* A parentId naming nothing (a partial export, "export selected"): as in
+ * Babylon.js the node loads without a parent and keeps its own transform,
+ * whether it is a mesh, the camera or a light; the file loads, warned. */
+void loader_should_load_a_node_whose_parent_is_missing_without_a_parent(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"m\",\"parentId\":\"gone\",\"position\":[1,2,3]," TRI "}],"
+                    "\"cameras\":[{\"id\":\"c\",\"parentId\":\"gone\",\"position\":[0,0,-5],"
+                    "\"target\":[0,0,0]}],"
+                    "\"lights\":[{\"id\":\"l\",\"type\":0,\"parentId\":\"gone\","
+                    "\"position\":[7,8,9]}]}";
+    mote_scene s;
+    load_json(j, "pm", &s);
+    TEST_ASSERT_NULL(s.meshes[0].parent);
+    float o[3];
+    world_origin(&s.meshes[0], o);
+    ASSERT_VEC3(1.0f, 2.0f, 3.0f, o, 0.0f);
+    ASSERT_VEC3(0.0f, 0.0f, -5.0f, s.camera.position, 0.0f);
+    ASSERT_VEC3(0.0f, 0.0f, 0.0f, s.camera.target, 0.0f);
+    TEST_ASSERT_EQUAL(1, s.light_count);
+    ASSERT_VEC3(7.0f, 8.0f, 9.0f, s.lights[0].position, 0.0f);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "meshes[0].parentId: \"gone\" names no node; "
+                                        "loaded without a parent"), s.warning);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "cameras[0].parentId: \"gone\""), s.warning);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "lights[0].parentId: \"gone\""), s.warning);
+    mote_scene_free(&s);
+    /* a numeric parentId is a uniqueId */
+    load_json("{\"meshes\":[{\"id\":\"n\",\"parentId\":77,\"position\":[4,5,6]}]}", "pm", &s);
+    TEST_ASSERT_NULL(s.meshes[0].parent);
+    TEST_ASSERT_EQUAL_STRING("meshes[0].parentId: 77 is the uniqueId of no node; loaded without "
+                             "a parent", s.warning);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* A texture name written as a URL: when no file has the name as written,
+ * the file named by it decoded, without its "?query", is loaded (once).
+ * Invalid escapes and %00 are not decoded, and a decoded name is held to
+ * the scene's folder as any other. */
+void loader_should_read_a_url_encoded_texture_name_as_the_decoded_file(void)
+{
+    uint8_t px[4] = {1, 2, 3, 255};
+    char sub[300];
+    snprintf(sub, sizeof sub, "%s/my dir", tmpdir);
+    mkdir(sub, 0700);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(tmp_path("my dir/a b.png"), px, 1, 1, 0, msg,
+                                               sizeof msg));
+    const char *j = "{\"materials\":["
+                    "{\"id\":\"m1\",\"diffuseTexture\":{\"name\":\"my%20dir/a%20b.png?v=2\"}},"
+                    "{\"id\":\"m2\",\"diffuseTexture\":{\"name\":\"my dir/a b.png?x\"}},"
+                    "{\"id\":\"m3\",\"diffuseTexture\":{\"name\":\"my dir/a b.png\"}}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m1\"},"
+                    "{\"id\":\"b\",\"materialId\":\"m2\"},{\"id\":\"c\",\"materialId\":\"m3\"}]}";
+    mote_scene s;
+    load_json_in(j, "u", tmpdir, &s);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    for (int k = 0; k < 3; k++)
+        TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[k].material.texture);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, s.textures[0].pixels, sizeof px);
+    mote_scene_free(&s);
+    /* not decoded, from the folder "my dir" (files "a b.png" in it and
+     * above it): %00, a decoded name leaving the folder, invalid escapes */
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(tmp_path("a b.png"), px, 1, 1, 0, msg,
+                                               sizeof msg));
+    static const char *const refused[] = {"a%20b.png%00", "%2e%2e/a%20b.png", "a%2gb.png",
+                                          "a%20b.png%"};
+    for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++) {
+        char scene[256];
+        snprintf(scene, sizeof scene, "{\"materials\":[{\"id\":\"m\",\"diffuseTexture\":"
+                 "{\"name\":\"%s\"}}]}", refused[k]);
+        TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_IO, mote_scene_load_memory(scene, strlen(scene), "u",
+                                                                      sub, NULL, &s, msg,
+                                                                      sizeof msg), refused[k]);
+        TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "cannot open"), msg);
+        TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, refused[k]), msg);
+    }
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* Each distinct warning is shown once, with a count when it repeats, so
+ * that one given per sub-mesh or per extra light does not crowd out the
+ * warnings after it in the 256 bytes of scene.warning; distinct ones past
+ * what fits are counted. */
+void loader_should_show_each_distinct_warning_once_with_its_count(void)
+{
+    char j[2048];
+    int n = snprintf(j, sizeof j, "{\"multiMaterials\":[{\"id\":\"mm\",\"materials\":[null,null,null]}],"
+                     "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mm\",%s,\"subMeshes\":[", TRI);
+    for (int k = 0; k < 12; k++)
+        n += snprintf(j + n, sizeof j - (size_t)n, "%s{\"materialIndex\":5,\"indexStart\":0,"
+                      "\"indexCount\":3}", k ? "," : "");
+    n += snprintf(j + n, sizeof j - (size_t)n, "]}],\"activeCameraID\":\"nope\","
+                  "\"cameras\":[{\"id\":\"c\"}],\"lights\":[");
+    for (int k = 0; k < 12; k++)
+        n += snprintf(j + n, sizeof j - (size_t)n, "%s{\"type\":3}", k ? "," : "");
+    snprintf(j + n, sizeof j - (size_t)n, "]}");
+    mote_scene s;
+    load_json(j, "w", &s);
+    TEST_ASSERT_EQUAL(12, s.mesh_count);
+    TEST_ASSERT_EQUAL_STRING("meshes[0]: materialIndex 5 is past the 3 materials of \"mm\" (x12); "
+                             "activeCamera \"nope\" names no camera; the first one is used; "
+                             "lights[4]: more than 4 lights; it and 7 later ones are ignored",
+                             s.warning);
+    mote_scene_free(&s);
+    /* twenty distinct ones: those that fit, then how many more */
+    n = snprintf(j, sizeof j, "{\"meshes\":[");
+    for (int k = 0; k < 20; k++)
+        n += snprintf(j + n, sizeof j - (size_t)n, "%s{\"id\":\"m%d\",\"materialId\":\"x%d\"}",
+                      k ? "," : "", k, k);
+    snprintf(j + n, sizeof j - (size_t)n, "]}");
+    load_json(j, "w", &s);
+    TEST_ASSERT_EQUAL_PTR(s.warning, strstr(s.warning, "meshes[0].materialId: \"x0\" names no "
+                                                       "material; "));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "meshes[4].materialId: \"x4\" names no "
+                                        "material; 15 more warnings"), s.warning);
+    mote_scene_free(&s);
+}
+
+/* A path naming a FIFO, a directory or a device is refused before it is
+ * opened: fopen on a FIFO waits for a writer, and /dev/zero would be read
+ * up to the size limit. */
+void file_reading_should_refuse_a_fifo_a_directory_and_a_device(void)
+{
+#if defined(__unix__) || defined(__APPLE__)
+    char fifo[512];
+    snprintf(fifo, sizeof fifo, "%s", tmp_path("fifo.png"));
+    TEST_ASSERT_EQUAL_MESSAGE(0, mkfifo(fifo, 0600), fifo);
+    alarm(30);                    /* before the check, the open never returned */
+    mote_texture t;
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load(fifo, NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "fifo.png: cannot open: a FIFO, not a regular file"),
+                                 msg);
+    mote_scene s;
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_scene_load(fifo, NULL, &s, msg, sizeof msg));
+    const char *j = "{\"materials\":[{\"id\":\"m\",\"diffuseTexture\":{\"name\":\"fifo.png\"}}]}";
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_scene_load_memory(j, strlen(j), "f", tmpdir, NULL, &s,
+                                                          msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "f: materials[0].diffuseTexture.name: "), msg);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "a FIFO, not a regular file"), msg);
+    alarm(0);
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load(tmpdir, NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "a directory, not a regular file"), msg);
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load("/dev/null", NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("/dev/null: cannot open: a device, not a regular file", msg);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+#else
+    TEST_IGNORE_MESSAGE("no FIFOs or devices to test with here");
+#endif
+}
+
+/* fovMode 1 (Babylon.js's FOVMODE_HORIZONTAL_FIXED): fov spans the width,
+ * so the vertical field follows the aspect ratio. */
+void loader_should_read_fov_mode_1_as_a_horizontal_field_of_view(void)
+{
+    mote_scene s;
+    load_json("{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],\"target\":[0,0,1],"
+              "\"fov\":1.5707963267948966,\"fovMode\":1,\"minZ\":0.1,\"maxZ\":10}]}", "h", &s);
+    TEST_ASSERT_TRUE(s.camera_fov_is_horizontal);
+    /* 90 degrees across a 200 x 100 frame: x = z reaches the right edge,
+     * y = z / 2 the top (the vertical field is 2 atan(1/2)) */
+    static uint8_t color[200 * 100 * 4];
+    mote_device dev;
+    init_color_device(&dev, color, 200, 100);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 2.0f, &f);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    float x, y, z;
+    const float right[3] = {1, 0, 1}, top[3] = {0, 0.5f, 1};
+    TEST_ASSERT_TRUE(mote_project(&dev, right, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 200.0f, x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 50.0f, y);
+    TEST_ASSERT_TRUE(mote_project(&dev, top, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 100.0f, x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 0.0f, y);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    mote_scene_free(&s);
+    /* fovMode 0, or none: vertical, as before */
+    load_json("{\"cameras\":[{\"id\":\"c\",\"fovMode\":0}]}", "h", &s);
+    TEST_ASSERT_FALSE(s.camera_fov_is_horizontal);
+    mote_scene_free(&s);
+}
+
+/* What mote does not read but that changes Babylon.js's image is said,
+ * once per scene: a right-handed scene, pivot or local matrices, an
+ * orthographic camera. An identity matrix changes nothing: no warning. */
+void loader_should_warn_once_of_unread_features_that_change_the_image(void)
+{
+    const char *j = "{\"useRightHandedSystem\":true,"
+                    "\"cameras\":[{\"id\":\"c\",\"mode\":1,\"orthoLeft\":-4}],"
+                    "\"meshes\":[{\"id\":\"a\",\"pivotMatrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]},"
+                    "{\"id\":\"b\",\"pivotMatrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 2,0,0,1]},"
+                    "{\"id\":\"c\",\"localMatrix\":[2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]}";
+    mote_scene s;
+    load_json(j, "x", &s);
+    TEST_ASSERT_EQUAL_STRING("useRightHandedSystem is not read: the image is mirrored from "
+                             "Babylon.js's; meshes[1].pivotMatrix: pivot and local matrices "
+                             "are not read; cameras[0].mode: 1 (orthographic) is drawn as a "
+                             "perspective camera", s.warning);
+    mote_scene_free(&s);
+    load_json("{\"useRightHandedSystem\":false,\"cameras\":[{\"id\":\"c\",\"mode\":0}],"
+              "\"transformNodes\":[{\"id\":\"t\",\"localMatrix\":[1,0,0,0, 0,1,0,0, "
+              "0,0,1,0, 0,0,0,1]}]}", "x", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1079,6 +1360,14 @@ int main(void)
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
+    RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);
+    RUN_TEST(loader_should_warn_about_positions_without_indices);
+    RUN_TEST(loader_should_load_a_node_whose_parent_is_missing_without_a_parent);
+    RUN_TEST(loader_should_read_a_url_encoded_texture_name_as_the_decoded_file);
+    RUN_TEST(loader_should_show_each_distinct_warning_once_with_its_count);
+    RUN_TEST(file_reading_should_refuse_a_fifo_a_directory_and_a_device);
+    RUN_TEST(loader_should_read_fov_mode_1_as_a_horizontal_field_of_view);
+    RUN_TEST(loader_should_warn_once_of_unread_features_that_change_the_image);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

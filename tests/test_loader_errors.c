@@ -365,6 +365,31 @@ void loader_should_report_a_missing_file_as_io(void)
     mote_scene_free(NULL);
 }
 
+/* Positions one vertex short used to be blamed on the normals ("normals:
+ * 12 floats, expected 3 per vertex (3 vertices)"): the message names the
+ * vertex count positions gives and every array that disagrees with it. */
+void loader_should_name_each_array_that_disagrees_with_positions(void)
+{
+    const char *short_positions =
+        "{\"meshes\":[{\"id\":\"a\",\"positions\":[0,0,0, 1,0,0, 0,1,0],"
+        "\"normals\":[0,0,1, 0,0,1, 0,0,1, 0,0,1],\"uvs\":[0,0, 1,0, 0,1, 1,1],"
+        "\"colors\":[1,1,1,1, 1,1,1,1, 1,1,1,1],\"indices\":[0,1,2]}]}";
+    mote_scene s;
+    TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote_scene_load_memory(short_positions,
+                                                             strlen(short_positions), "v", NULL,
+                                                             NULL, &s, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("v: meshes[0]: positions has 9 floats (3 vertices), but normals "
+                             "has 12 floats (4 vertices), uvs has 8 floats (4 vertices)", msg);
+    TEST_ASSERT_TRUE(scene_is_zeroed(&s));
+    /* positions not in threes: said of positions, whatever the others */
+    const char *ragged = "{\"meshes\":[{\"id\":\"a\",\"positions\":[0,0,0, 1,0,0, 0,1],"
+                         "\"normals\":[0,0,1, 0,0,1, 0,0,1]}]}";
+    TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote_scene_load_memory(ragged, strlen(ragged), "v", NULL,
+                                                             NULL, &s, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("v: meshes[0].positions: 8 floats is not a multiple of 3", msg);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 int main(void)
 {
     read_expected();
@@ -379,5 +404,6 @@ int main(void)
     RUN_TEST(loader_should_draw_untextured_and_warn_when_asked_to);
     RUN_TEST(loader_should_follow_any_texture_path_when_allowed);
     RUN_TEST(loader_should_report_a_missing_file_as_io);
+    RUN_TEST(loader_should_name_each_array_that_disagrees_with_positions);
     return UNITY_END();
 }

@@ -58,13 +58,20 @@ typedef struct mote_scene {
     int texture_count;
     mote_camera camera;           /* the scene's active camera, if has_camera */
     bool has_camera;
+    /* The camera's fovMode is 1 (Babylon.js's FOVMODE_HORIZONTAL_FIXED):
+     * camera.fov is the horizontal field of view, which mote_scene_frame
+     * turns into the vertical one for its aspect ratio. */
+    bool camera_fov_is_horizontal;
     mote_light lights[MOTE_MAX_LIGHTS];
     int light_count;
     bool has_lights;              /* the file lists lights, perhaps all disabled */
     float ambient[3];
     mote_rgba clear_color;
     float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
-    char warning[256];            /* non-fatal notes (downgraded textures, ...) */
+    /* Non-fatal notes (downgraded textures, ...), "; " between them: each
+     * distinct one once, " (x12)" after one given 12 times, and "; N more
+     * warnings" for those that do not fit. */
+    char warning[256];
     /* One flag per mesh (mesh_count): its material says backFaceCulling
      * false, so Babylon.js draws both of its sides. The core's culling is a
      * per-draw option (mote_draw_desc.cull), not a material property:
@@ -97,8 +104,9 @@ mote_result mote_scene_load_memory(const char *json, size_t size, const char *na
 void mote_scene_free(mote_scene *scene);
 
 /* Fills a frame (camera, lights, ambient) for the scene: its own camera when
- * it has one, else a camera that frames the bounding box from the front-top
- * right; when the file lists no lights, a point light above the camera. */
+ * it has one (a horizontal fov made vertical for aspect, width / height),
+ * else a camera that frames the bounding box from the front-top right; when
+ * the file lists no lights, a point light above the camera. */
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
 
 /* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with

@@ -20,14 +20,18 @@
  *
  * Decisions (tested in tests/test_loader_errors.c):
  * - A mesh with no vertex data loads as a 0-vertex mesh (it may be a
- *   parent); empty arrays are fine and give 0 triangles.
+ *   parent); empty arrays are fine and give 0 triangles. Positions with
+ *   no indices give 0 triangles too, with a warning, unless the mesh says
+ *   isUnIndexed (its vertices taken three by three: mote__sequential_indices).
  * - Duplicate material (and multi-material) ids: the last wins, with a
  *   warning, as Babylon.js resolves materialId with getLastMaterialById.
  *   A mesh's materialUniqueId, when it matches a (multi-)material's
  *   uniqueId, is used before its materialId (current Babylon.js files).
  * - A materialId (or multi-material slot) naming nothing: default white
- *   material, with a warning. A parentId naming nothing is an error, and
- *   so is a parentInstanceIndex past the parent's instances. A parentId
+ *   material, with a warning. A parentId naming nothing leaves the node
+ *   (mesh, camera or light) without a parent, with a warning, as Babylon.js
+ *   loads it; a parentInstanceIndex past the parent's instances is an
+ *   error. A parentId
  *   several nodes hold names the last of them (Babylon.js's
  *   getLastEntryById).
  * - A mesh whose arrays are in another file (incremental or binary
@@ -39,6 +43,9 @@
  *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
  * - With no base_dir (mote_scene_load_memory), embedded images are not
  *   loaded either: no textures at all, as documented.
+ * - Not read, but warned of once per scene as they change the image:
+ *   useRightHandedSystem true, a pivotMatrix or localMatrix other than the
+ *   identity, an orthographic camera (mode 1).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -149,6 +156,7 @@ typedef struct mote__node {
     bool use_quat;
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
+    bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
     mote_vertex *verts;
     uint32_t nv;
     /* uvs2, 2 floats per vertex, in the temporary store; read only when a
@@ -193,6 +201,15 @@ typedef struct mote__xlist {
     mote__idmap *ids, *uniques;
 } mote__xlist;
 
+/* A distinct warning and how many times it was given. */
+typedef struct mote__warning {
+    char text[256];
+    unsigned count;
+} mote__warning;
+
+/* More distinct warnings than scene.warning (256 bytes) can show anyway. */
+#define MOTE__MAX_WARNINGS 16
+
 typedef struct mote__ld {
     char name[128];
     const char *base_dir;
@@ -220,6 +237,10 @@ typedef struct mote__ld {
     bool any_uv2;                 /* a material samples uvs2: keep them while loading */
     int texture_cap;
     const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
+    bool warned_matrix;           /* a pivotMatrix or localMatrix was warned of */
+    mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
+    int warning_count;
+    unsigned warnings_dropped;    /* given after the list was full */
 } mote__ld;
 
 typedef mote_result R;
@@ -248,23 +269,56 @@ static R mote__oom(mote__ld *ld, const char *at)
     return mote__fail(ld, MOTE_ERR_OUT_OF_MEMORY, "%s: out of memory", at);
 }
 
+/* scene.warning from ld->warnings: each distinct warning once, "(xN)"
+ * when it was given N times, so that a warning repeated per sub-mesh does
+ * not crowd out the ones after it; what does not fit is counted at the
+ * end. */
+static void mote__show_warnings(mote__ld *ld)
+{
+    char *w = ld->scene->warning;
+    const size_t cap = sizeof ld->scene->warning, tail = 24; /* "; 99 more warnings" */
+    size_t used = 0;
+    int shown = 0;
+    w[0] = '\0';
+    for (; shown < ld->warning_count; shown++) {
+        const mote__warning *e = &ld->warnings[shown];
+        char count[24] = "";
+        if (e->count > 1)
+            snprintf(count, sizeof count, " (x%u)", e->count);
+        size_t need = (used ? 2 : 0) + strlen(e->text) + strlen(count);
+        if (used && used + need + tail >= cap)
+            break;                /* the first is shown, cut short if it must be */
+        snprintf(w + used, cap - used, "%s%s%s", used ? "; " : "", e->text, count);
+        used = strlen(w);
+    }
+    unsigned more = ld->warnings_dropped + (unsigned)(ld->warning_count - shown);
+    if (more)
+        snprintf(w + used, cap - used, "; %u more warning%s", more, more > 1 ? "s" : "");
+}
+
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
 static void mote__warn(mote__ld *ld, const char *fmt, ...)
 {
-    char *w = ld->scene->warning;
-    size_t n = strlen(w), cap = sizeof ld->scene->warning;
-    if (n + 3 >= cap)
-        return;
-    if (n) {
-        memcpy(w + n, "; ", 3);
-        n += 2;
-    }
+    char text[sizeof ld->warnings[0].text];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(w + n, cap - n, fmt, ap);
+    vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
+    int i = 0;
+    while (i < ld->warning_count && strcmp(ld->warnings[i].text, text) != 0)
+        i++;
+    if (i < ld->warning_count) {
+        ld->warnings[i].count++;
+    } else if (i < MOTE__MAX_WARNINGS) {
+        memcpy(ld->warnings[i].text, text, sizeof text);
+        ld->warnings[i].count = 1;
+        ld->warning_count++;
+    } else {
+        ld->warnings_dropped++;
+    }
+    mote__show_warnings(ld);
 }
 
 /* A name from the file, safe to print (no control bytes, bounded). */
@@ -572,17 +626,25 @@ static bool mote__path_escapes(const char *name, const char **why)
     return false;
 }
 
+/* The texture already loaded from path, or NULL. */
+static mote_texture *mote__loaded_texture(const mote__ld *ld, const char *path)
+{
+    for (int i = 0; i < ld->scene->texture_count; i++)
+        if (strcmp(ld->texture_paths[i], path) == 0)
+            return &ld->scene->textures[i];
+    return NULL;
+}
+
 /* The texture at path (a file, or with embedded a data: URL), loaded once
- * however many materials name it; key names the JSON member in messages. */
+ * however many materials name it; key names the JSON member in messages.
+ * fallback (or NULL): the file to try when path cannot be opened. */
 static R mote__texture_found(mote__ld *ld, const char *at, const char *key, const char *path,
-                             bool embedded, mote_material *m)
+                             const char *fallback, bool embedded, mote_material *m)
 {
     mote_scene *sc = ld->scene;
-    for (int i = 0; i < sc->texture_count; i++)
-        if (strcmp(ld->texture_paths[i], path) == 0) {
-            m->texture = &sc->textures[i];
-            return MOTE_OK;
-        }
+    m->texture = mote__loaded_texture(ld, path);
+    if (m->texture)
+        return MOTE_OK;
     if (sc->texture_count >= ld->texture_cap)
         return mote__fail(ld, MOTE_ERR_LIMIT, "%s: too many textures", at);
     char why[256];
@@ -590,6 +652,19 @@ static R mote__texture_found(mote__ld *ld, const char *at, const char *key, cons
     R r = embedded
               ? mote__io_texture_load_data_url(path, &ld->lim, t, why, sizeof why)
               : mote_texture_load(path, &ld->lim, t, why, sizeof why);
+    if (r == MOTE_ERR_IO && fallback) {
+        m->texture = mote__loaded_texture(ld, fallback);
+        if (m->texture)
+            return MOTE_OK;
+        /* the fallback's own error, unless it cannot be opened either */
+        char fallback_why[256];
+        R rf = mote_texture_load(fallback, &ld->lim, t, fallback_why, sizeof fallback_why);
+        if (rf != MOTE_ERR_IO) {
+            r = rf;
+            path = fallback;
+            memcpy(why, fallback_why, sizeof why);
+        }
+    }
     if (r == MOTE_ERR_OUT_OF_MEMORY)
         return mote__fail(ld, r, "%s.%s: %s", at, key, why);
     if (r != MOTE_OK) {
@@ -604,8 +679,80 @@ static R mote__texture_found(mote__ld *ld, const char *at, const char *key, cons
     return MOTE_OK;
 }
 
+/* The path of the texture file `name` (in the temporary store): in the
+ * scene's folder, Windows separators turned. NULL, with *why, when name
+ * leaves that folder and limits.allow_any_texture_path is not set. */
+static R mote__texture_file(mote__ld *ld, const char *at, const char *name, const char **why,
+                            char **out)
+{
+    *out = NULL;
+    if (!ld->lim.allow_any_texture_path && mote__path_escapes(name, why))
+        return MOTE_OK;
+    bool absolute = name[0] == '/' || name[0] == '\\';
+    size_t blen = strlen(ld->base_dir), nlen = strlen(name);
+    char *path = mote__store_alloc(&ld->tmp, blen + nlen + 2, 1);
+    if (!path)
+        return mote__oom(ld, at);
+    if (absolute || blen == 0) {
+        memcpy(path, name, nlen + 1);
+    } else {
+        memcpy(path, ld->base_dir, blen);
+        path[blen] = '/';
+        memcpy(path + blen + 1, name, nlen + 1);
+    }
+#ifndef _WIN32
+    for (char *c = path + (absolute ? 0 : blen + 1); *c; c++)
+        if (*c == '\\')
+            *c = '/'; /* exporters on Windows write folder\\image.png */
+#endif
+    *out = path;
+    return MOTE_OK;
+}
+
+static int mote__hex_digit(char c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    if ((c | 0x20) >= 'a' && (c | 0x20) <= 'f')
+        return (c | 0x20) - 'a' + 10;
+    return -1;
+}
+
+/* A texture name written as a URL ("my%20tex.png?v=2", as web exporters
+ * write them) read as a file name: the "?query" dropped and %XX escapes
+ * decoded. An invalid escape, or %00, leaves the escapes as written.
+ * NULL: the same as name. */
+static R mote__url_decoded_name(mote__ld *ld, const char *at, const char *name, char **out)
+{
+    *out = NULL;
+    size_t n = strcspn(name, "?"), k = 0;
+    char *d = mote__store_alloc(&ld->tmp, n + 1, 1);
+    if (!d)
+        return mote__oom(ld, at);
+    for (size_t i = 0; i < n; i++) {
+        if (name[i] != '%') {
+            d[k++] = name[i];
+            continue;
+        }
+        /* '?' and the terminating NUL are no hex digits: no read past n */
+        int hi = mote__hex_digit(name[i + 1]);
+        int lo = hi >= 0 ? mote__hex_digit(name[i + 2]) : -1;
+        if (lo < 0 || (hi | lo) == 0) {
+            memcpy(d, name, n);   /* keep the escapes as written */
+            k = n;
+            break;
+        }
+        d[k++] = (char)(hi << 4 | lo);
+        i += 2;
+    }
+    d[k] = '\0';
+    if (strcmp(d, name) != 0)
+        *out = d;
+    return MOTE_OK;
+}
+
 /* Loads (once per resolved path) the texture a material names: a file in
- * the scene's folder, or an image embedded as a base64 data: URL, in
+ * the scene's folder (as written, else as a URL: mote__url_decoded_name), or an image embedded as a base64 data: URL, in
  * "base64String" (Babylon.js's SceneSerializer; "name" is then no file) or
  * in "name" itself. */
 static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
@@ -665,34 +812,20 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
     if (!ld->base_dir)
         return MOTE_OK; /* colours only (embedded images too, as documented) */
     if (embedded)
-        return mote__texture_found(ld, at, key, embedded, true, m);
-    mote__q qn = mote__quote(name);
-    if (!ld->lim.allow_any_texture_path) {
-        const char *why = "";
-        if (mote__path_escapes(name, &why))
-            return mote__fail(ld, MOTE_ERR_RANGE,
-                              "%s.name: \"%s\" %s (textures must be inside the scene's "
-                              "folder; see limits.allow_any_texture_path)",
-                              at, qn.s, why);
-    }
-    bool absolute = name[0] == '/' || name[0] == '\\';
-    size_t blen = strlen(ld->base_dir), nlen = strlen(name);
-    char *path = mote__store_alloc(&ld->tmp, blen + nlen + 2, 1);
+        return mote__texture_found(ld, at, key, embedded, NULL, true, m);
+    const char *why = "";
+    char *path, *decoded, *decoded_path = NULL;
+    MOTE__TRY(mote__texture_file(ld, at, name, &why, &path));
     if (!path)
-        return mote__oom(ld, at);
-    if (absolute || blen == 0) {
-        memcpy(path, name, nlen + 1);
-    } else {
-        memcpy(path, ld->base_dir, blen);
-        path[blen] = '/';
-        memcpy(path + blen + 1, name, nlen + 1);
-    }
-#ifndef _WIN32
-    for (char *c = path + (absolute ? 0 : blen + 1); *c; c++)
-        if (*c == '\\')
-            *c = '/'; /* exporters on Windows write folder\\image.png */
-#endif
-    return mote__texture_found(ld, at, key, path, false, m);
+        return mote__fail(ld, MOTE_ERR_RANGE,
+                          "%s.name: \"%s\" %s (textures must be inside the scene's "
+                          "folder; see limits.allow_any_texture_path)",
+                          at, mote__quote(name).s, why);
+    /* decoded, the name is checked again: "%2e%2e/x.png" is not tried */
+    MOTE__TRY(mote__url_decoded_name(ld, at, name, &decoded));
+    if (decoded)
+        MOTE__TRY(mote__texture_file(ld, at, decoded, &why, &decoded_path));
+    return mote__texture_found(ld, at, key, path, decoded_path, false, m);
 }
 
 /* ---- materials --------------------------------------------------------- */
@@ -1042,10 +1175,8 @@ static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node
     size_t n = mote__array_len(arr), nv = nd->nv;
     if (n == 0 && nv == 0)
         return MOTE_OK;           /* nothing to colour */
-    size_t stride = n == nv * 4 ? 4 : n == nv * 3 ? 3 : 0;
-    if (!stride)
-        return mote__fail(ld, MOTE_ERR_RANGE,
-                          "%s: %zu floats, expected 4 or 3 per vertex (%zu vertices)", at, n, nv);
+    /* n is 4 or 3 per vertex: mote__check_vertex_counts */
+    size_t stride = n == nv * 4 ? 4 : 3;
     nd->colors = mote__store_alloc(ld->keep, nv, sizeof *nd->colors);
     if (!nd->colors)
         return mote__oom(ld, at);
@@ -1061,8 +1192,6 @@ static R mote__colors(mote__ld *ld, const cJSON *arr, const char *at, mote__node
     return MOTE_OK;
 }
 
-/* The current layout, from the mesh itself or from a geometries.vertexData
- * entry (src, named src_where in messages). */
 /* Gives to the vertex and index arrays of from: shared, not copied. */
 static void mote__share_arrays(mote__node *to, mote__node *from)
 {
@@ -1075,18 +1204,56 @@ static void mote__share_arrays(mote__node *to, mote__node *from)
     to->ni = from->ni;
 }
 
-/* arr (where.key): `per` floats for each of nd's vertices, into the part
- * `what` says (uvs2 get their temporary array here). */
+/* An array of the current layout that has `per` floats for each vertex
+ * (colours: `per`, or `per_alt` without alpha; 0: no second length). */
+typedef struct mote__vertex_array {
+    const char *key;
+    const cJSON *arr;             /* NULL: absent */
+    size_t per, per_alt;
+} mote__vertex_array;
+
+/* Every array present must have as many vertices as positions gives
+ * (nv). When one has not, the message names each that disagrees and the
+ * vertex count its length gives, so that a positions array one vertex
+ * short is not blamed on the normals. */
+static R mote__check_vertex_counts(mote__ld *ld, const char *where, size_t nv,
+                                   const mote__vertex_array *arrays, int count)
+{
+    char list[320];
+    size_t used = 0;
+    list[0] = '\0';
+    for (int i = 0; i < count; i++) {
+        const mote__vertex_array *a = &arrays[i];
+        size_t n = mote__array_len(a->arr);
+        if (!a->arr || n == nv * a->per || (a->per_alt && n == nv * a->per_alt))
+            continue;
+        char gives[48];
+        if (a->per_alt)
+            snprintf(gives, sizeof gives, "not %zu or %zu per vertex", a->per, a->per_alt);
+        else if (n % a->per)
+            snprintf(gives, sizeof gives, "not a multiple of %zu", a->per);
+        else
+            snprintf(gives, sizeof gives, "%zu vertices", n / a->per);
+        int w = snprintf(list + used, sizeof list - used, "%s%s has %zu floats (%s)",
+                         used ? ", " : "", a->key, n, gives);
+        if (w > 0)
+            used += (size_t)w < sizeof list - used ? (size_t)w : sizeof list - used - 1;
+    }
+    if (used == 0)
+        return MOTE_OK;
+    return mote__fail(ld, MOTE_ERR_RANGE, "%s: positions has %zu floats (%zu vertices), but %s",
+                      where, 3 * nv, nv, list);
+}
+
+/* arr (where.key): `per` floats for each of nd's vertices (the length is
+ * checked by mote__check_vertex_counts), into the part `what` says (uvs2
+ * get their temporary array here). */
 static R mote__per_vertex(mote__ld *ld, const cJSON *arr, const char *where, const char *key,
                           size_t per, int what, mote__node *nd)
 {
     char at[96];
     snprintf(at, sizeof at, "%s.%s", where, key);
-    size_t n = mote__array_len(arr), nv = nd->nv;
-    if (n != nv * per)
-        return mote__fail(ld, MOTE_ERR_RANGE,
-                          "%s: %zu floats, expected %zu per vertex (%zu vertices)", at, n, per,
-                          nv);
+    size_t nv = nd->nv;
     if (what == MOTE__UV2) {
         nd->uv2 = mote__store_alloc(&ld->tmp, nv, 2 * sizeof *nd->uv2);
         if (!nd->uv2)
@@ -1096,6 +1263,31 @@ static R mote__per_vertex(mote__ld *ld, const cJSON *arr, const char *where, con
     return mote__fill(ld, arr, at, nd, what, per);
 }
 
+/* isUnIndexed: Babylon.js draws vertices 0,1,2 / 3,4,5 / ... as triangles
+ * and ignores any indices. The indices 0..nv-1 let the core draw it as any
+ * other mesh; the whole mesh draws the first nv - nv % 3 of them (a partial
+ * last triangle is dropped, as drawArrays drops it), and a sub-mesh its own
+ * vertex range (mote__submeshes). */
+static R mote__sequential_indices(mote__ld *ld, const char *where, mote__node *nd)
+{
+    if (nd->nv > ld->lim.max_indices)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: isUnIndexed: %u vertices, more indices "
+                          "than the limit of %u", where, (unsigned)nd->nv,
+                          (unsigned)ld->lim.max_indices);
+    if (nd->nv % 3)
+        mote__warn(ld, "%s: isUnIndexed, but %u vertices is not a multiple of 3; the last %u "
+                   "are not drawn", where, (unsigned)nd->nv, (unsigned)(nd->nv % 3));
+    nd->idx = mote__store_alloc(ld->keep, nd->nv, sizeof *nd->idx);
+    if (!nd->idx)
+        return mote__oom(ld, where);
+    for (uint32_t k = 0; k < nd->nv; k++)
+        nd->idx[k] = k;
+    nd->ni = nd->nv - nd->nv % 3;
+    return MOTE_OK;
+}
+
+/* The current layout, from the mesh itself or from a geometries.vertexData
+ * entry (src, named `where` in messages); nd->unindexed is the mesh's. */
 static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *where,
                                 mote__node *nd)
 {
@@ -1110,7 +1302,7 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
     char at[96], iat[96];
     snprintf(iat, sizeof iat, "%s.indices", where);
     uint32_t max_index;
-    if (ind)
+    if (ind && !nd->unindexed)
         MOTE__TRY(mote__indices(ld, ind, iat, nd, &max_index));
     size_t len = mote__array_len(pos);
     snprintf(at, sizeof at, "%s.positions", where);
@@ -1118,7 +1310,15 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
         return mote__fail(ld, MOTE_ERR_RANGE, "%s: %zu floats is not a multiple of 3", at,
                           len);
     size_t nv = len / 3;
+    const mote__vertex_array arrays[4] = {
+        {"normals", nrm, 3, 0}, {"uvs", uvs, 2, 0}, {"uvs2", uvs2, 2, 0}, {"colors", colors, 4, 3}};
+    MOTE__TRY(mote__check_vertex_counts(ld, where, nv, arrays, 4));
     MOTE__TRY(mote__alloc_vertices(ld, at, nv, nd));
+    if (nd->unindexed)
+        MOTE__TRY(mote__sequential_indices(ld, where, nd));
+    else if (!ind && nv > 0)
+        mote__warn(ld, "%s: has positions but no indices (and no isUnIndexed): it draws no "
+                   "triangles", where);
     if (pos)
         MOTE__TRY(mote__fill(ld, pos, at, nd, MOTE__POS, 3));
     if (nrm)
@@ -1162,7 +1362,7 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
             const cJSON *e = mote__get(s, keys[j]);
             snprintf(at2, sizeof at2, "%s.%s", at, keys[j]);
             if (!e) {
-                if (j == 4)
+                if (j == 4 && !nd->unindexed)
                     return mote__fail(ld, MOTE_ERR_PARSE, "%s: missing", at2);
                 continue;
             }
@@ -1172,6 +1372,14 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
             return mote__fail(ld, MOTE_ERR_RANGE, "%s: vertices %u..%llu are out of range "
                               "(%u vertices)", at, (unsigned)v[1],
                               (unsigned long long)v[1] + v[2], (unsigned)nd->nv);
+        nd->subs[k].material_index = v[0];
+        if (nd->unindexed) {
+            /* drawn as drawArrays(verticesStart, verticesCount): the
+             * sequential indices from verticesStart, whole triangles only */
+            nd->subs[k].index_start = v[1];
+            nd->subs[k].index_count = v[2] - v[2] % 3;
+            continue;
+        }
         if ((uint64_t)v[3] + v[4] > nd->ni)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s: indices %u..%llu are out of range "
                               "(%u indices)", at, (unsigned)v[3],
@@ -1179,7 +1387,6 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
         if (v[3] % 3 || v[4] % 3)
             return mote__fail(ld, MOTE_ERR_RANGE, "%s: indexStart %u and indexCount %u must "
                               "be multiples of 3", at, (unsigned)v[3], (unsigned)v[4]);
-        nd->subs[k].material_index = v[0];
         nd->subs[k].index_start = v[3];
         nd->subs[k].index_count = v[4];
     }
@@ -1233,12 +1440,39 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
     return MOTE_OK;
 }
 
+/* Whether obj[key] is absent or the identity matrix (16 numbers). */
+static bool mote__absent_or_identity(const cJSON *obj, const char *key)
+{
+    const cJSON *m = mote__get(obj, key);
+    if (!m)
+        return true;
+    int k = 0;
+    for (const cJSON *e = cJSON_IsArray(m) ? m->child : NULL; e; e = e->next, k++)
+        if (k >= 16 || !cJSON_IsNumber(e) || e->valuedouble != (k % 5 == 0 ? 1.0 : 0.0))
+            return false;
+    return k == 16;
+}
+
+/* A pivotMatrix or localMatrix (Babylon.js's pre-transform) moves the mesh
+ * in Babylon.js; mote does not read them: said once per scene. */
+static void mote__warn_unread_matrix(mote__ld *ld, const cJSON *mesh, const char *where)
+{
+    static const char *const keys[2] = {"pivotMatrix", "localMatrix"};
+    for (int k = 0; k < 2 && !ld->warned_matrix; k++)
+        if (!mote__absent_or_identity(mesh, keys[k])) {
+            mote__warn(ld, "%s.%s: pivot and local matrices are not read", where, keys[k]);
+            ld->warned_matrix = true;
+        }
+}
+
 /* One entry of meshes[] or transformNodes[]. */
 static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
 {
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
+    mote__warn_unread_matrix(ld, mesh, where);
     MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
+    MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
     const cJSON *verts, *pos;
     MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
@@ -1258,13 +1492,16 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
                               "%s.geometryId: \"%s\" names no geometries.vertexData entry",
                               where, mote__quote(geometry_id).s);
         mote__geometry *g = &ld->geometries[k];
-        if (g->owner >= 0) {      /* parsed once: meshes share it (no copies) */
+        /* parsed once: meshes share it (no copies), unless one draws it
+         * unindexed and the other by its indices */
+        if (g->owner >= 0 && ld->nodes[g->owner].unindexed == nd->unindexed) {
             mote__share_arrays(nd, &ld->nodes[g->owner]);
         } else {
             char gat[64];
             snprintf(gat, sizeof gat, "geometries.vertexData[%d]", k);
             MOTE__TRY(mote__current_geometry(ld, g->json, gat, nd));
-            g->owner = (int)(nd - ld->nodes);
+            if (g->owner < 0)
+                g->owner = (int)(nd - ld->nodes);
         }
     } else {
         /* an incremental (.incremental.babylon) or binary export keeps the
@@ -1587,21 +1824,20 @@ static R mote__parents(mote__ld *ld)
         nd->parent = -1;
         if (!nd->parent_id)
             continue;
-        if (nd->parent_by_unique) {
+        if (nd->parent_by_unique)
             nd->parent = mote__idmap_find(unique_map, nd->parent_id);
-            if (nd->parent < 0)
-                MOTE__TRY(mote__camera_light_parent(ld, nd));
-            if (nd->parent < 0)
-                return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: %s is the uniqueId of no "
-                                  "mesh or transform node", nd->where, nd->parent_id);
-            continue;
-        }
-        nd->parent = mote__idmap_find_last(ld->node_map, nd->parent_id);
+        else
+            nd->parent = mote__idmap_find_last(ld->node_map, nd->parent_id);
         if (nd->parent < 0)
             MOTE__TRY(mote__camera_light_parent(ld, nd));
-        if (nd->parent < 0)
-            return mote__fail(ld, MOTE_ERR_RANGE, "%s.parentId: \"%s\" names no mesh or "
-                              "transform node", nd->where, mote__quote(nd->parent_id).s);
+        /* Babylon.js leaves such a node without a parent (a partial export,
+         * "export selected"): it keeps its own transform */
+        if (nd->parent < 0 && nd->parent_by_unique)
+            mote__warn(ld, "%s.parentId: %s is the uniqueId of no node; loaded without a "
+                       "parent", nd->where, nd->parent_id);
+        else if (nd->parent < 0)
+            mote__warn(ld, "%s.parentId: \"%s\" names no node; loaded without a parent",
+                       nd->where, mote__quote(nd->parent_id).s);
     }
     for (int i = 0; i < ld->node_count; i++) {
         mote__node *nd = &ld->nodes[i];
@@ -1850,6 +2086,9 @@ static R mote__camera(mote__ld *ld)
     char at[48];
     snprintf(at, sizeof at, "cameras[%d]", index);
     MOTE__TRY(mote__obj_at(ld, cam, at));
+    const cJSON *mode = mote__get(cam, "mode");
+    if (cJSON_IsNumber(mode) && mode->valuedouble == 1.0)
+        mote__warn(ld, "%s.mode: 1 (orthographic) is drawn as a perspective camera", at);
     mote_camera *c = &ld->scene->camera;
     memset(c, 0, sizeof *c);
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
@@ -1887,6 +2126,9 @@ static R mote__camera(mote__ld *ld)
     MOTE__TRY(mote__num(ld, cam, "maxZ", at, &c->zfar));
     if (!(c->fov > 0.0f && c->fov < 3.14159f))
         return mote__fail(ld, MOTE_ERR_RANGE, "%s.fov: %g is not in (0, pi)", at, c->fov);
+    /* Babylon.js's FOVMODE_HORIZONTAL_FIXED: any fovMode but 0 (vertical);
+     * the aspect ratio is known only when framing (mote_scene_frame) */
+    MOTE__TRY(mote__flag(ld, cam, "fovMode", at, &ld->scene->camera_fov_is_horizontal));
     /* Babylon.js projects with minZ <= 0 as 0.1 */
     if (c->znear <= 0.0f)
         c->znear = 0.1f;
@@ -1917,7 +2159,7 @@ static R mote__lights(mote__ld *ld)
 {
     const cJSON *lights;
     MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
-    int i = 0;
+    int i = 0, ignored = 0, first_ignored = 0;
     mote_scene *sc = ld->scene;
     sc->has_lights = lights && lights->child;
     for (const cJSON *l = lights ? lights->child : NULL; l; l = l->next, i++) {
@@ -1984,12 +2226,19 @@ static R mote__lights(mote__ld *ld)
                 mote__transform(w, L.direction, false);
         }
         if (sc->light_count >= MOTE_MAX_LIGHTS) {
-            mote__warn(ld, "%s: more than %d lights; this one is ignored", at,
-                       MOTE_MAX_LIGHTS);
+            if (ignored++ == 0)
+                first_ignored = i;
             continue;
         }
         sc->lights[sc->light_count++] = L;
     }
+    /* one warning for them all, not one each */
+    if (ignored == 1)
+        mote__warn(ld, "lights[%d]: more than %d lights; this one is ignored", first_ignored,
+                   MOTE_MAX_LIGHTS);
+    else if (ignored > 1)
+        mote__warn(ld, "lights[%d]: more than %d lights; it and %d later ones are ignored",
+                   first_ignored, MOTE_MAX_LIGHTS, ignored - 1);
     return MOTE_OK;
 }
 
@@ -2076,6 +2325,11 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     cJSON *root;
     MOTE__TRY(mote__parse(ld, json, size, &root));
     ld->root = root;
+    /* Babylon.js draws such a scene right-handed; mote draws every scene
+     * left-handed, so the image is mirrored */
+    if (cJSON_IsTrue(mote__get(root, "useRightHandedSystem")))
+        mote__warn(ld, "useRightHandedSystem is not read: the image is mirrored from "
+                   "Babylon.js's");
     R r = mote__materials(ld);
     if (r == MOTE_OK) r = mote__multi_materials(ld);
     if (r == MOTE_OK) r = mote__nodes(ld);
@@ -2225,6 +2479,10 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
         radius = 1.0f;
     if (scene->has_camera) {
         frame->camera = scene->camera;
+        /* the horizontal field of view as the core's vertical one, as
+         * Babylon.js projects it: tan(v / 2) = tan(h / 2) / aspect */
+        if (scene->camera_fov_is_horizontal && aspect > 0.0f)
+            frame->camera.fov = 2.0f * atanf(tanf(0.5f * scene->camera.fov) / aspect);
     } else {
         /* front-top-right of the box, far enough that the bounding sphere
          * fits the narrower of the two fields of view, with a margin */

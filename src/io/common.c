@@ -11,6 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/stat.h>
+#endif
+
 static long mote__fail_after = -1;
 static long mote__live;
 
@@ -146,6 +150,36 @@ void mote__io_clean_name(char *dst, size_t n, const char *s)
         memcpy(dst + n - 4, "...", 4);
 }
 
+/* Refuses a path that names something other than a regular file, before
+ * it is opened: opening a FIFO waits for a writer that may never come, and
+ * a device such as /dev/zero reads on until the size limit. A path that
+ * cannot be examined is left to fopen to report. Plain C cannot tell;
+ * there the size limit is the only guard. */
+static mote_result mote__io_check_regular_file(const char *path, const char *name,
+                                               char *message, size_t message_size)
+{
+#if defined(__unix__) || defined(__APPLE__)
+    struct stat st;
+    if (stat(path, &st) != 0 || S_ISREG(st.st_mode))
+        return MOTE_OK;
+    const char *what = "something else";
+    if (S_ISDIR(st.st_mode))
+        what = "a directory";
+    else if (S_ISFIFO(st.st_mode))
+        what = "a FIFO";
+    else if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+        what = "a device";
+    return mote__io_error(message, message_size, MOTE_ERR_IO,
+                          "%s: cannot open: %s, not a regular file", name, what);
+#else
+    (void)path;
+    (void)name;
+    (void)message;
+    (void)message_size;
+    return MOTE_OK;
+#endif
+}
+
 mote_result mote__io_read_file(const char *path, size_t max_bytes, char **data,
                                size_t *size, char *message, size_t message_size)
 {
@@ -153,6 +187,9 @@ mote_result mote__io_read_file(const char *path, size_t max_bytes, char **data,
     *size = 0;
     char name[160];
     mote__io_clean_name(name, sizeof name, path);
+    mote_result checked = mote__io_check_regular_file(path, name, message, message_size);
+    if (checked != MOTE_OK)
+        return checked;
     FILE *f = fopen(path, "rb");
     if (!f)
         return mote__io_error(message, message_size, MOTE_ERR_IO, "%s: cannot open: %s",
