@@ -31,9 +31,8 @@
  *   material, with a warning. A parentId naming nothing leaves the node
  *   (mesh, camera or light) without a parent, with a warning, as Babylon.js
  *   loads it; a parentInstanceIndex past the parent's instances is an
- *   error. A parentId
- *   several nodes hold names the last of them (Babylon.js's
- *   getLastEntryById).
+ *   error. A parentId several nodes hold names the last of them
+ *   (Babylon.js's getLastEntryById).
  * - A mesh whose arrays are in another file (incremental or binary
  *   exports) loads without them, with a warning.
  * - Materials and multi-materials count against limits.max_meshes too, and
