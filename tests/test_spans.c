@@ -28,6 +28,15 @@ static uint32_t next_u32(void)
 static float frand(float lo, float hi) { return lo + (hi - lo) * (float)(next_u32() & 0xffffff) / 16777216.0f; }
 
 /* A w x h RGBA8888 texture of random texels in texels (4 w h bytes). */
+/* A W x H target over colour and depth, counting into *n (the two
+ * targets a comparison draws into share one count). */
+static mote__target whole_target(uint8_t *color, uint32_t *depth, mote_format format,
+                                 mote_depth_format depth_format, mote__counts *n)
+{
+    mote__target t = {color, W * 4, depth, W, 0, format, depth_format, n};
+    return t;
+}
+
 static mote_texture random_texture(uint8_t *texels, int w, int h)
 {
     for (int i = 0; i < 4 * w * h; i++)
@@ -134,9 +143,8 @@ void every_specialised_span_should_match_the_generic_span(void)
         memset(da, 0xff, sizeof da);
         memset(db, 0xff, sizeof db);
         mote__counts n = {0, 0};
-        mote__target ta = {ca, W * 4, da, W, 0, format, depthf, &n}, tb = ta;
-        tb.color = cb;
-        tb.depth = db;
+        mote__target ta = whole_target(ca, da, format, depthf, &n);
+        mote__target tb = whole_target(cb, db, format, depthf, &n);
         for (int t = 0; t < 40; t++) {
             mote__tri tri;
             if (!setup_random_triangle(&tri, &rs, sk, (t & 1) != 0, uv_range))
@@ -218,9 +226,8 @@ void subspan_pixels_should_not_depend_on_the_depth_rejected_pixels_before_them(v
     for (int specialised = 0; specialised < 2; specialised++) {
         mote__raster_state rs = subspan_state(&tex, 3, specialised);
         mote__counts n = {0, 0};
-        mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n}, tb = ta;
-        tb.color = cb;
-        tb.depth = db;
+        mote__target ta = whole_target(ca, da, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n);
+        mote__target tb = whole_target(cb, db, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n);
         for (int t = 0; t < 60; t++) {
             memset(ca, 0, sizeof ca);
             memset(cb, 0, sizeof cb);
@@ -284,9 +291,8 @@ void subspan_slivers_should_stay_close_to_the_exact_perspective(void)
             || mote__setup(&tb_tri, &exact, X, Y, area2, vp, 8, W, H) != MOTE__SETUP_DRAWN)
             continue;
         mote__counts n = {0, 0};
-        mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &n}, tb = ta;
-        tb.color = cb;
-        tb.depth = db;
+        mote__target ta = whole_target(ca, da, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &n);
+        mote__target tb = whole_target(cb, db, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_NONE, &n);
         mote__rect all = {0, 0, W, H};
         mote__raster_tri(&ta_tri, &ta, all, 8);
         mote__raster_tri(&tb_tri, &tb, all, 8);
@@ -314,9 +320,8 @@ void subspan_pixels_should_not_depend_on_the_region(void)
         /* long segments: where one is cut shows */
         mote__raster_state rs = subspan_state(&tex, 6, specialised);
         mote__counts n = {0, 0};
-        mote__target ta = {ca, W * 4, da, W, 0, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n}, tb = ta;
-        tb.color = cb;
-        tb.depth = db;
+        mote__target ta = whole_target(ca, da, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n);
+        mote__target tb = whole_target(cb, db, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, &n);
         memset(ca, 0, sizeof ca);
         memset(cb, 0, sizeof cb);
         memset(da, 0xff, sizeof da);
