@@ -2481,7 +2481,7 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
         /* the horizontal field of view as the core's vertical one, as
          * Babylon.js projects it: tan(v / 2) = tan(h / 2) / aspect */
         if (scene->camera_fov_is_horizontal && aspect > 0.0f)
-            frame->camera.fov = 2.0f * atanf(tanf(0.5f * scene->camera.fov) / aspect);
+            frame->camera.fov = 2.0f * atanf(mote_tanf(0.5f * scene->camera.fov) / aspect);
     } else {
         /* front-top-right of the box, far enough that the bounding sphere
          * fits the narrower of the two fields of view, with a margin */
