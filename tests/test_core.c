@@ -385,6 +385,72 @@ void flat_shading_should_use_the_face_normal_against_the_light(void)
     TEST_ASSERT_EQUAL_UINT8(0, color[4 * (H / 2 * W + W / 2)]);
 }
 
+/* The flat shade (red, 0..255) of a triangle at z = 5 facing the camera,
+ * whose centroid, where flat shading lights it, is on the view axis, lit
+ * by light alone (no ambient). */
+static int flat_shade_on_axis(const mote_light *light)
+{
+    static mote_vertex v[3];
+    static const uint32_t idx[3] = {0, 1, 2};
+    const float s = 0.6f, p[3][3] = {{0, 2 * s, 5}, {-s, -s, 5}, {s, -s, 5}};
+    memset(v, 0, sizeof v);
+    for (int i = 0; i < 3; i++) {
+        memcpy(v[i].position, p[i], sizeof p[i]);
+        v[i].normal[2] = -1.0f;   /* outside is toward the camera */
+    }
+    mote_mesh m = tu_mesh_of(v, 3, idx, 3);
+    frame.light_count = 1;
+    frame.lights[0] = *light;
+    mote_draw_desc dd = {0};
+    dd.mode = MOTE_MODE_FLAT;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &m, &dd));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_TRUE(mote_device_stats(&dev)->pixels_written > 0);
+    const int centre = H / 2 * W + W / 2;
+    TEST_ASSERT_TRUE(depth[centre] < 0xffffffu);   /* the triangle covers it */
+    return color[4 * centre];
+}
+
+/* Babylon.js's default falloff (StandardMaterial): a range fades a point or
+ * spot light linearly to nothing at that distance; a spot light lights
+ * only its cone, by cos(angle to its axis)^exponent. Expected shades
+ * worked out here: the triangle's centroid is 2 from a light at z = 3. */
+void spot_lights_and_ranges_should_fall_off_as_in_babylon(void)
+{
+    mote_light l;
+    memset(&l, 0, sizeof l);
+    l.type = MOTE_LIGHT_POINT;
+    l.position[2] = 3.0f;
+    TEST_ASSERT_INT_WITHIN(1, 255, flat_shade_on_axis(&l));
+    l.range = 4.0f;               /* 1 - 2/4 = 0.5: 127.5 */
+    TEST_ASSERT_INT_WITHIN(1, 128, flat_shade_on_axis(&l));
+    l.range = 1.5f;               /* beyond its range */
+    TEST_ASSERT_EQUAL_INT(0, flat_shade_on_axis(&l));
+    l.type = MOTE_LIGHT_SPOT;     /* straight down its axis */
+    l.range = 0.0f;
+    l.direction[2] = 1.0f;
+    l.spot_angle = 1.0f;
+    TEST_ASSERT_INT_WITHIN(1, 255, flat_shade_on_axis(&l));
+    l.range = 8.0f;               /* 0.75: 191.25 */
+    TEST_ASSERT_INT_WITHIN(1, 191, flat_shade_on_axis(&l));
+    /* from x = 1: the centroid atan(1/2) = 0.4636 off the axis, n.l =
+     * cos of that = 0.894427 */
+    l.range = 0.0f;
+    l.position[0] = 1.0f;
+    l.direction[2] = 3.0f;        /* not unit: only its direction counts */
+    l.spot_exponent = 2.0f;       /* 0.8 x 0.894427 x 255 = 182.46 */
+    TEST_ASSERT_INT_WITHIN(1, 182, flat_shade_on_axis(&l));
+    l.spot_exponent = 2.5f;       /* 0.8^1.25 x 0.894427 x 255 = 172.56 */
+    TEST_ASSERT_INT_WITHIN(1, 173, flat_shade_on_axis(&l));
+    l.spot_angle = 0.9f;          /* half angle 0.45: outside the cone */
+    TEST_ASSERT_EQUAL_INT(0, flat_shade_on_axis(&l));
+    l.spot_angle = 0.95f;         /* 0.475: inside again */
+    TEST_ASSERT_INT_WITHIN(1, 173, flat_shade_on_axis(&l));
+    l.direction[2] = -1.0f;       /* pointing away */
+    TEST_ASSERT_EQUAL_INT(0, flat_shade_on_axis(&l));
+}
+
 void gouraud_shading_should_interpolate_vertex_intensities(void)
 {
     /* one triangle with n.l = 1, 0.5, 0 at its vertices; check the values at
@@ -848,6 +914,7 @@ int main(void)
     RUN_TEST(the_depth_test_should_not_depend_on_draw_order);
     RUN_TEST(depth_rejected_pixels_should_be_tested_but_not_written);
     RUN_TEST(flat_shading_should_use_the_face_normal_against_the_light);
+    RUN_TEST(spot_lights_and_ranges_should_fall_off_as_in_babylon);
     RUN_TEST(gouraud_shading_should_interpolate_vertex_intensities);
     RUN_TEST(lighting_should_follow_the_mesh_rotation);
     RUN_TEST(vertex_colours_should_multiply_the_lit_material_colour_in_every_mode);

@@ -205,7 +205,8 @@ static const char current_scene[] =
     "\"activeCameraID\":\"c2\","
     "\"lights\":[{\"type\":1,\"direction\":[0,-1,0],\"diffuse\":[1,0.5,0.25],\"intensity\":0.5},"
     " {\"type\":3,\"direction\":[0,1,0],\"groundColor\":[0.1,0.2,0.3]},"
-    " {\"type\":2,\"position\":[5,6,7]}],"
+    " {\"type\":2,\"position\":[5,6,7],\"direction\":[0,-1,1],\"angle\":0.8,\"exponent\":3,"
+    "  \"range\":1.7976931348623157e+308}],"
     "\"materials\":[{\"id\":\"red\",\"diffuse\":[1,0,0]},"
     " {\"id\":\"pbr\",\"albedoColor\":[0,0.5,1]}],"
     "\"multiMaterials\":[{\"id\":\"multi\",\"materials\":[\"red\",\"pbr\"]}],"
@@ -280,7 +281,7 @@ void loader_should_read_the_current_layout_with_exact_fields(void)
     TEST_ASSERT_EQUAL_FLOAT(0.7f, s.camera.fov);
     TEST_ASSERT_EQUAL_FLOAT(0.2f, s.camera.znear);
     TEST_ASSERT_EQUAL_FLOAT(20.0f, s.camera.zfar);
-    /* lights: directional, hemispheric, spot as point */
+    /* lights: directional, hemispheric, spot (Number.MAX_VALUE range: none) */
     TEST_ASSERT_EQUAL(3, s.light_count);
     TEST_ASSERT_EQUAL(MOTE_LIGHT_DIRECTIONAL, s.lights[0].type);
     ASSERT_VEC3(0.0f, -1.0f, 0.0f, s.lights[0].direction, 0.0f);
@@ -290,8 +291,12 @@ void loader_should_read_the_current_layout_with_exact_fields(void)
     ASSERT_VEC3(0.0f, 1.0f, 0.0f, s.lights[1].direction, 0.0f);
     ASSERT_VEC3(0.1f, 0.2f, 0.3f, s.lights[1].ground_color, 0.0f);
     TEST_ASSERT_EQUAL_FLOAT(1.0f, s.lights[1].intensity);
-    TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, s.lights[2].type);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_SPOT, s.lights[2].type);
     ASSERT_VEC3(5.0f, 6.0f, 7.0f, s.lights[2].position, 0.0f);
+    ASSERT_VEC3(0.0f, -1.0f, 1.0f, s.lights[2].direction, 0.0f);
+    TEST_ASSERT_EQUAL_FLOAT(0.8f, s.lights[2].spot_angle);
+    TEST_ASSERT_EQUAL_FLOAT(3.0f, s.lights[2].spot_exponent);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, s.lights[2].range);
     ASSERT_VEC3(0.1f, 0.2f, 0.3f, s.ambient, 0.0f);
     TEST_ASSERT_EQUAL_UINT8(51, s.clear_color.r);
     TEST_ASSERT_EQUAL_UINT8(102, s.clear_color.g);
@@ -299,6 +304,40 @@ void loader_should_read_the_current_layout_with_exact_fields(void)
     TEST_ASSERT_EQUAL(0, s.texture_count);
     mote_scene_free(&s);
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* A light's range (point and spot; Babylon.js's default falloff) and a
+ * spot light's cone; a parent moves a spot light and turns its direction. */
+void loader_should_read_light_ranges_and_spot_cones(void)
+{
+    const char *j = "{\"transformNodes\":[{\"id\":\"t\",\"position\":[0,1,0],"
+                    "  \"rotation\":[0,1.5707963705062866,0]}],"
+                    "\"lights\":[{\"type\":0,\"position\":[1,2,3],\"range\":7.5},"
+                    " {\"type\":1,\"direction\":[0,-1,0],\"range\":3},"
+                    " {\"type\":2,\"parentId\":\"t\",\"position\":[0,0,2],\"direction\":[0,0,1],"
+                    "  \"angle\":1.2,\"exponent\":0.5,\"range\":20},"
+                    " {\"type\":2,\"position\":[0,0,0],\"range\":-2}]}";
+    mote_scene s;
+    load_json(j, "ranges.babylon", &s);
+    TEST_ASSERT_EQUAL(4, s.light_count);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, s.lights[0].type);
+    TEST_ASSERT_EQUAL_FLOAT(7.5f, s.lights[0].range);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_DIRECTIONAL, s.lights[1].type);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, s.lights[1].range);      /* directional: none */
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_SPOT, s.lights[2].type);
+    TEST_ASSERT_EQUAL_FLOAT(1.2f, s.lights[2].spot_angle);
+    TEST_ASSERT_EQUAL_FLOAT(0.5f, s.lights[2].spot_exponent);
+    TEST_ASSERT_EQUAL_FLOAT(20.0f, s.lights[2].range);
+    /* the parent turns +z to +x and lifts by 1 */
+    ASSERT_VEC3(2.0f, 1.0f, 0.0f, s.lights[2].position, 1e-5f);
+    ASSERT_VEC3(1.0f, 0.0f, 0.0f, s.lights[2].direction, 1e-5f);
+    /* Babylon.js's defaults: no angle (it lights nothing), exponent 0; a
+     * negative range is none */
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_SPOT, s.lights[3].type);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, s.lights[3].spot_angle);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, s.lights[3].spot_exponent);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, s.lights[3].range);
+    mote_scene_free(&s);
 }
 
 void loader_should_give_transform_nodes_a_mesh_to_be_parents(void)
@@ -1330,6 +1369,7 @@ int main(void)
     RUN_TEST(loader_should_read_the_tutorial_monkey);
     RUN_TEST(loader_should_keep_the_monkeys_first_vertex_exactly);
     RUN_TEST(loader_should_read_the_current_layout_with_exact_fields);
+    RUN_TEST(loader_should_read_light_ranges_and_spot_cones);
     RUN_TEST(loader_should_give_transform_nodes_a_mesh_to_be_parents);
     RUN_TEST(loader_should_resolve_a_numeric_parent_id_by_unique_id);
     RUN_TEST(loader_should_attach_a_child_to_the_instance_its_parent_index_names);

@@ -414,9 +414,9 @@ static mote_device_desc test_desc(uint8_t *color, uint32_t *depth, void *arena, 
     return d;
 }
 
-/* The camera in front of the scene and every type of light: binned draws
- * transform and light their vertices four at a time on SSE2 hosts
- * (geometry.c), direct ones and bands one by one. */
+/* The camera in front of the scene and every type of light, with falloff:
+ * binned draws transform and light their vertices four at a time on SSE2
+ * hosts (geometry.c), direct ones and bands one by one. */
 static void lit_frame(mote_frame_desc *f)
 {
     memset(f, 0, sizeof *f);
@@ -435,6 +435,21 @@ static void lit_frame(mote_frame_desc *f)
     f->lights[2].direction[1] = 1.0f;
     f->lights[2].intensity = 0.4f;
     f->lights[2].ground_color[2] = 0.5f;
+    /* Babylon's falloff: a range on the point light, a spot light with a
+     * range and a fractional exponent whose cone edge crosses the scene */
+    f->lights[0].range = 9.0f;
+    f->light_count = 4;
+    f->lights[3].type = MOTE_LIGHT_SPOT;
+    f->lights[3].position[0] = -1.0f;
+    f->lights[3].position[1] = 2.0f;
+    f->lights[3].position[2] = -3.0f;
+    f->lights[3].direction[0] = 0.4f;
+    f->lights[3].direction[1] = -0.8f;
+    f->lights[3].direction[2] = 1.0f;
+    f->lights[3].color[1] = 0.7f;
+    f->lights[3].spot_angle = 0.9f;
+    f->lights[3].spot_exponent = 2.5f;
+    f->lights[3].range = 7.0f;
 }
 
 /* Renders the scene with the given execution setup into out (RGBA). */

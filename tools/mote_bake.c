@@ -82,7 +82,7 @@ static const char *wrap_name(mote_wrap w)
 static const char *light_name(mote_light_type t)
 {
     static const char *const names[] = {"MOTE_LIGHT_NONE", "MOTE_LIGHT_POINT", "MOTE_LIGHT_DIRECTIONAL",
-                                        "MOTE_LIGHT_HEMISPHERIC"};
+                                        "MOTE_LIGHT_HEMISPHERIC", "MOTE_LIGHT_SPOT"};
     return (int)t >= 0 && t < MOTE_LIGHT_TYPE_COUNT ? names[t] : "MOTE_LIGHT_NONE";
 }
 
@@ -230,7 +230,10 @@ static void write_frame(baker *b, const mote_frame_desc *fr)
         put_floats(b, l->color, 3);
         fputs(",\n            .ground_color = ", f);
         put_floats(b, l->ground_color, 3);
-        fprintf(f, ",\n            .intensity = %s,\n        },\n", flt(buf, l->intensity));
+        fprintf(f, ",\n            .intensity = %s,\n", flt(buf, l->intensity));
+        fprintf(f, "            .range = %s,\n", flt(buf, l->range));
+        fprintf(f, "            .spot_angle = %s,\n", flt(buf, l->spot_angle));
+        fprintf(f, "            .spot_exponent = %s,\n        },\n", flt(buf, l->spot_exponent));
     }
     fprintf(f, "    },\n    .light_count = %d,\n    .ambient = ", fr->light_count);
     put_floats(b, fr->ambient, 3);
@@ -428,6 +431,14 @@ int main(int argc, char **argv)
     }
     if (scene.warning[0])
         fprintf(stderr, "mote-bake: warning: %s\n", scene.warning);
+    /* baked scenes go to small builds, which may leave the falloff out */
+    for (int i = 0; i < scene.light_count; i++)
+        if (scene.lights[i].type == MOTE_LIGHT_SPOT || scene.lights[i].range > 0.0f) {
+            fprintf(stderr, "mote-bake: warning: the scene's spot lights and light ranges need "
+                            "MOTE_ENABLE_LIGHT_FALLOFF; a build without it (the firmware profile) "
+                            "lights nothing by a spot light and ignores ranges\n");
+            break;
+        }
 
     int status = 1;
     size_t n = (size_t)(scene.mesh_count > 0 ? scene.mesh_count : 1);

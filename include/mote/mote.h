@@ -83,9 +83,12 @@
  *   Attributes: colour and UV are perspective-correct by default (Vulkan's
  *               formula); affine and "exact every 2^k pixels" on request.
  *               Depth is linear in screen space.
- *   Lighting:   per light, n.l clamped at 0 (point light: l from the surface
- *               point to the light; directional: l = -direction), times
- *               light colour and intensity, summed with the ambient colour,
+ *   Lighting:   per light, n.l clamped at 0 (point and spot light: l from
+ *               the surface point to the light; directional: l = -direction),
+ *               times light colour and intensity, times Babylon.js's default
+ *               falloff (point and spot light with a range: max(0, 1 -
+ *               distance / range); spot light: 0 outside its cone, else
+ *               cos(angle to the axis)^exponent), summed with the ambient colour,
  *               clamped to [0,1] per channel, times the material colour,
  *               times the vertex colour when the mesh has them
  *               (mote_mesh.colors). Flat: one value per triangle from its
@@ -181,7 +184,7 @@ extern "C" {
  * MOTE_ERR_UNSUPPORTED and draws nothing; everything else draws the same
  * bytes. On a Cortex-M0+ each saves about this much of the core's 22 KB
  * (-Os, one left out at a time; `make cross` prints the sizes of the
- * firmware profile, which turns all five off):
+ * firmware profile, which turns all six off):
  *   MOTE_ENABLE_LINES     ~0.8 KB  MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS
  *                                  (mote_draw refuses them)
  *   MOTE_ENABLE_BINNING   ~4.2 KB  desc.arena, tile binning and parallel
@@ -191,7 +194,14 @@ extern "C" {
  *                                  refuses it)
  *   MOTE_ENABLE_VERTEX_COLORS
  *                         ~0.2 KB  mote_mesh.colors (mote_draw refuses any
- *                                  draw of a mesh that has them) */
+ *                                  draw of a mesh that has them)
+ *   MOTE_ENABLE_LIGHT_FALLOFF
+ *                         ~0.7 KB  MOTE_LIGHT_SPOT and mote_light.range;
+ *                                  the one exception to the rule above:
+ *                                  left out, a spot light lights nothing
+ *                                  and a range is ignored (the check that
+ *                                  would refuse them costs 48 bytes, which
+ *                                  the Cortex-M0+ profile does not have) */
 #ifndef MOTE_ENABLE_LINES
 #define MOTE_ENABLE_LINES 1
 #endif
@@ -206,6 +216,9 @@ extern "C" {
 #endif
 #ifndef MOTE_ENABLE_VERTEX_COLORS
 #define MOTE_ENABLE_VERTEX_COLORS 1
+#endif
+#ifndef MOTE_ENABLE_LIGHT_FALLOFF
+#define MOTE_ENABLE_LIGHT_FALLOFF 1
 #endif
 
 /* ---- results ----------------------------------------------------------- */
@@ -360,6 +373,8 @@ typedef enum mote_light_type {
     MOTE_LIGHT_POINT,             /* the tutorial's light */
     MOTE_LIGHT_DIRECTIONAL,
     MOTE_LIGHT_HEMISPHERIC,       /* weight 0.5 + 0.5 n.direction, color..ground */
+    MOTE_LIGHT_SPOT,              /* a point light inside a cone along direction
+                                     (MOTE_ENABLE_LIGHT_FALLOFF) */
     MOTE_LIGHT_TYPE_COUNT
 } mote_light_type;
 
@@ -370,6 +385,12 @@ typedef struct mote_light {
     float color[3];               /* {0,0,0} = white */
     float ground_color[3];        /* hemispheric only */
     float intensity;              /* 0 = 1 */
+    /* Babylon.js's default falloff (MOTE_ENABLE_LIGHT_FALLOFF) */
+    float range;                  /* point, spot: 0 = unlimited; else the light
+                                     fades linearly to nothing at this distance */
+    float spot_angle;             /* spot: the cone's full angle, radians */
+    float spot_exponent;          /* spot: inside the cone, the light is scaled
+                                     by cos(angle to the axis)^spot_exponent */
 } mote_light;
 
 /* ---- frames and draws -------------------------------------------------- */

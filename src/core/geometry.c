@@ -55,6 +55,8 @@ typedef uint32_t mote__v4u __attribute__((vector_size(16)));
  * light (mote__light_terms), in order. */
 typedef struct mote__v4_light {
     mote_light_type type;
+    bool positional;              /* point or spot: shines from at */
+    const mote_light *source;     /* the frame's light (its falloff) */
     mote__v4f at[3];              /* point: its position; else the direction toward the light */
     mote__v4f kcol[3];            /* intensity x colour */
     mote__v4f k, col[3], ground[3];   /* hemispheric */
@@ -111,7 +113,8 @@ typedef struct mote__ctx {
  * lights nothing. */
 MOTE__VERTEX_INLINE bool mote__light_terms(const mote_light *l, float col[3], float *k, float *s)
 {
-    if (l->type != MOTE_LIGHT_POINT && l->type != MOTE_LIGHT_DIRECTIONAL && l->type != MOTE_LIGHT_HEMISPHERIC)
+    if (l->type != MOTE_LIGHT_POINT && l->type != MOTE_LIGHT_DIRECTIONAL && l->type != MOTE_LIGHT_HEMISPHERIC
+        && !(MOTE_ENABLE_LIGHT_FALLOFF && l->type == MOTE_LIGHT_SPOT))
         return false;
     memcpy(col, l->color, 3 * sizeof *col);
     if (mote__zero3(col))
@@ -120,6 +123,79 @@ MOTE__VERTEX_INLINE bool mote__light_terms(const mote_light *l, float col[3], fl
     *s = l->type == MOTE_LIGHT_DIRECTIONAL ? -1.0f : 1.0f;
     return true;
 }
+
+/* Whether a light shines from its position (else along its direction). */
+MOTE__VERTEX_INLINE bool mote__positional(const mote_light *l)
+{
+    return l->type == MOTE_LIGHT_POINT || (MOTE_ENABLE_LIGHT_FALLOFF && l->type == MOTE_LIGHT_SPOT);
+}
+
+#if MOTE_ENABLE_LIGHT_FALLOFF
+/* x^e for x in [0, 1] and e >= 0, as 2^(e log2 x), in float operations of
+ * a fixed order (libm's powf differs between targets); relative error
+ * about 1e-6. */
+static float mote__powf01(float x, float e)
+{
+    if (!(x > 0.0f))
+        return e > 0.0f ? 0.0f : 1.0f;
+    if (!(e > 0.0f) || x >= 1.0f)
+        return 1.0f;              /* e NaN: a cone without falloff */
+    /* x = m 2^ex with m in [sqrt(1/2), sqrt(2)); log2 m = 2 atanh(t) / ln 2,
+     * t = (m - 1) / (m + 1), |t| < 0.172 */
+    uint32_t b = mote__float_bits(x);
+    int ex = (int)(b >> 23) - 127;
+    if (ex == -127)               /* subnormal: as good as 0 for light */
+        return 0.0f;
+    union { float f; uint32_t u; } m;
+    m.u = (b & 0x007fffffu) | 0x3f800000u;
+    if (m.f > 1.41421356f) {
+        m.f *= 0.5f;
+        ex++;
+    }
+    float t = (m.f - 1.0f) / (m.f + 1.0f), t2 = t * t;
+    float series = 1.0f + t2 * (1.0f / 3 + t2 * (1.0f / 5 + t2 * (1.0f / 7 + t2 * (1.0f / 9))));
+    float y = e * ((float)ex + 2.88539008f * t * series);   /* e log2 x < 0, or -inf */
+    if (y < -126.0f)
+        return 0.0f;
+    /* 2^y = 2^i 2^f, i = round(y), |f| <= 1/2: e^(f ln 2) by its series */
+    int i = (int)(y - 0.5f);
+    i += (y - (float)i) >= 0.5f;
+    float g = (y - (float)i) * 0.693147181f;
+    float p = 1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6 + g * (1.0f / 24 + g * (1.0f / 120 + g * (1.0f / 720))))));
+    union { float f; uint32_t u; } scale;
+    scale.u = (uint32_t)(i + 127) << 23;
+    return p * scale.f;
+}
+
+/* Babylon.js's default falloff of a point or spot light (StandardMaterial:
+ * max(0, 1 - distance / range); a spot light's cos(angle to its axis),
+ * 0 outside the cone and raised to its exponent inside), for L from the
+ * surface point to the light and inv = 1 / |L| as the lighting took it.
+ * Scalar for both lighting paths (mote__light4 calls it per lane), so the
+ * two give the same bits. */
+static float mote__falloff(const mote_light *l, const float L[3], float inv)
+{
+    float att = 1.0f;
+    if (l->range > 0.0f) {
+        att = 1.0f - mote__dot3(L, L) * inv / l->range;
+        att = att > 0.0f ? att : 0.0f;
+    }
+    if (l->type == MOTE_LIGHT_SPOT) {
+        float axis = mote__rsqrtf(mote__dot3(l->direction, l->direction));
+        float c = -(mote__dot3(l->direction, L) * axis) * inv;
+        c = c > 0.0f ? c : 0.0f;
+        if (!(c >= mote_cosf(0.5f * l->spot_angle)))
+            return 0.0f;
+        att *= mote__powf01(c, l->spot_exponent);
+    }
+    return att;
+}
+
+static bool mote__has_falloff(const mote_light *l)
+{
+    return l->type == MOTE_LIGHT_SPOT || (l->type == MOTE_LIGHT_POINT && l->range > 0.0f);
+}
+#endif
 
 MOTE__VERTEX_INLINE void mote__light(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
 {
@@ -131,13 +207,21 @@ MOTE__VERTEX_INLINE void mote__light(const mote__ctx *cx, const float p[3], cons
         if (!mote__light_terms(l, col, &k, &s))
             continue;
         for (int c = 0; c < 3; c++)
-            L[c] = l->type == MOTE_LIGHT_POINT ? l->position[c] - p[c] : s * l->direction[c];
-        float ndl = mote__dot3(n, L) * mote__rsqrtf(mote__dot3(L, L));
+            L[c] = mote__positional(l) ? l->position[c] - p[c] : s * l->direction[c];
+        float inv = mote__rsqrtf(mote__dot3(L, L)), ndl = mote__dot3(n, L) * inv;
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             float w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
                 acc[c] += k * (col[c] * w + l->ground_color[c] * (1.0f - w));
         } else if (ndl > 0.0f) {
+#if MOTE_ENABLE_LIGHT_FALLOFF
+            if (mote__has_falloff(l)) {
+                float att = mote__falloff(l, L, inv);
+                for (int c = 0; c < 3; c++)
+                    acc[c] += k * col[c] * ndl * att;
+                continue;
+            }
+#endif
             for (int c = 0; c < 3; c++)
                 acc[c] += k * col[c] * ndl;
         }
@@ -520,14 +604,26 @@ static void mote__light4(const mote__ctx *cx, const mote__v4f p[3], const mote__
         const mote__v4_light *l = &v4->light[i];
         mote__v4f L[3];
         for (int c = 0; c < 3; c++)
-            L[c] = l->type == MOTE_LIGHT_POINT ? l->at[c] - p[c] : l->at[c];
-        mote__v4f ndl = mote__v4_dot3(n, L) * mote__v4_rsqrt(mote__v4_dot3(L, L));
+            L[c] = l->positional ? l->at[c] - p[c] : l->at[c];
+        mote__v4f inv = mote__v4_rsqrt(mote__v4_dot3(L, L)), ndl = mote__v4_dot3(n, L) * inv;
         if (l->type == MOTE_LIGHT_HEMISPHERIC) {
             mote__v4f w = 0.5f + 0.5f * ndl;
             for (int c = 0; c < 3; c++)
                 acc[c] += l->k * (l->col[c] * w + l->ground[c] * (1.0f - w));
         } else {
             const mote__v4i lit = ndl > 0.0f;
+#if MOTE_ENABLE_LIGHT_FALLOFF
+            if (mote__has_falloff(l->source)) {
+                mote__v4f att;
+                for (int j = 0; j < 4; j++) {
+                    const float Lj[3] = {L[0][j], L[1][j], L[2][j]};
+                    att[j] = mote__falloff(l->source, Lj, inv[j]);
+                }
+                for (int c = 0; c < 3; c++)
+                    acc[c] = mote__v4_select(lit, acc[c] + l->kcol[c] * ndl * att, acc[c]);
+                continue;
+            }
+#endif
             for (int c = 0; c < 3; c++)
                 acc[c] = mote__v4_select(lit, acc[c] + l->kcol[c] * ndl, acc[c]);
         }
@@ -818,9 +914,11 @@ static void mote__v4_light_init(mote__ctx *cx)
             continue;
         mote__v4_light *o = &v4->light[v4->lights++];
         o->type = l->type;
+        o->positional = mote__positional(l);
+        o->source = l;
         o->k = mote__v4_splat(k);
         for (int c = 0; c < 3; c++) {
-            o->at[c] = mote__v4_splat(l->type == MOTE_LIGHT_POINT ? l->position[c] : s * l->direction[c]);
+            o->at[c] = mote__v4_splat(o->positional ? l->position[c] : s * l->direction[c]);
             o->kcol[c] = mote__v4_splat(k * col[c]);
             o->col[c] = mote__v4_splat(col[c]);
             o->ground[c] = mote__v4_splat(l->ground_color[c]);

@@ -2154,6 +2154,21 @@ static R mote__camera(mote__ld *ld)
     return MOTE_OK;
 }
 
+/* A point or spot light's range: > 0 fades it to nothing at that distance
+ * (Babylon.js's default falloff). Babylon.js writes Number.MAX_VALUE, which
+ * no float holds, for a light without one; that, 0, and a negative range
+ * leave it unlimited (0). */
+static R mote__light_range(mote__ld *ld, const cJSON *light, const char *at, float *range)
+{
+    const cJSON *v = mote__get(light, "range");
+    if (cJSON_IsNumber(v) && v->valuedouble > (double)FLT_MAX)
+        return MOTE_OK;
+    MOTE__TRY(mote__num(ld, light, "range", at, range));
+    if (!(*range > 0.0f))
+        *range = 0.0f;
+    return MOTE_OK;
+}
+
 static R mote__lights(mote__ld *ld)
 {
     const cJSON *lights;
@@ -2172,10 +2187,16 @@ static R mote__lights(mote__ld *ld)
         float data[3] = {0, 0, 0};
         MOTE__TRY(mote__vec(ld, l, "data", at, 3, 0, data));
         bool has_data = mote__get(l, "data") != NULL;
-        if (t == 0 || t == 2) { /* spot lights are drawn as point lights */
-            L.type = MOTE_LIGHT_POINT;
+        if (t == 0 || t == 2) {
+            L.type = t == 0 ? MOTE_LIGHT_POINT : MOTE_LIGHT_SPOT;
             memcpy(L.position, data, sizeof data);
             MOTE__TRY(mote__vec(ld, l, "position", at, 3, 0, L.position));
+            MOTE__TRY(mote__light_range(ld, l, at, &L.range));
+            if (t == 2) {         /* Babylon.js makes a spot light of no angle and exponent 0 */
+                MOTE__TRY(mote__vec(ld, l, "direction", at, 3, 0, L.direction));
+                MOTE__TRY(mote__num(ld, l, "angle", at, &L.spot_angle));
+                MOTE__TRY(mote__num(ld, l, "exponent", at, &L.spot_exponent));
+            }
         } else if (t == 1) {
             L.type = MOTE_LIGHT_DIRECTIONAL;
             L.direction[1] = -1.0f;
@@ -2219,9 +2240,9 @@ static R mote__lights(mote__ld *ld)
          * hemispheric light keeps its direction (its node has no parent) */
         float w[16];
         if (mote__parent_world(ld, 1, i, w)) {
-            if (L.type == MOTE_LIGHT_POINT)
+            if (L.type != MOTE_LIGHT_DIRECTIONAL)   /* point or spot */
                 mote__transform(w, L.position, true);
-            else
+            if (L.type != MOTE_LIGHT_POINT)         /* directional or spot */
                 mote__transform(w, L.direction, false);
         }
         if (sc->light_count >= MOTE_MAX_LIGHTS) {

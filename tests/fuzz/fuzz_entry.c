@@ -382,6 +382,12 @@ static void fz_frame(fz_reader *r, mote_frame_desc *f)
             fz_vec3(r, l->ground_color);
         if (e & 4)
             l->intensity = fz_float(r);
+        if (e & 8)
+            l->range = fz_float(r);
+        if (e & 16) {
+            l->spot_angle = fz_float(r);
+            l->spot_exponent = fz_float(r);
+        }
     }
     if (lf & 8)
         fz_vec3(r, f->ambient);

@@ -125,6 +125,44 @@ void vertex_colours_should_need_their_option(void)
     check_feature(true, &d);
 }
 
+/* Left out, a spot light lights nothing and a range is ignored (mote.h:
+ * the one feature not refused, for want of flash). Lit by one light and
+ * no ambient, the scene is black where nothing lights it. */
+static uint64_t lit_channels(const mote_light *light)
+{
+    mote_frame_desc f = scene.frame;
+    f.light_count = 1;
+    f.lights[0] = *light;
+    f.ambient[0] = f.ambient[1] = f.ambient[2] = 0.0f;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    for (int i = 0; i < scene.mesh_count; i++)
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &scene.meshes[i], NULL));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_TRUE(mote_device_stats(&dev)->pixels_written > 0);
+    uint64_t lit = 0;
+    for (size_t i = 0; i < sizeof color; i += 4)
+        lit += color[i] > 0 || color[i + 1] > 0 || color[i + 2] > 0;
+    return lit;
+}
+
+void spot_lights_and_ranges_should_light_only_with_falloff(void)
+{
+    mote_light l;
+    memset(&l, 0, sizeof l);
+    l.type = MOTE_LIGHT_POINT;
+    l.position[1] = 20.0f;        /* high above the floor */
+    uint64_t plain = lit_channels(&l);
+    TEST_ASSERT_TRUE(plain > 0);
+    l.range = 1.0f;               /* reaches nothing */
+    TEST_ASSERT_EQUAL_UINT64(MOTE_ENABLE_LIGHT_FALLOFF ? 0 : plain, lit_channels(&l));
+    l.range = 0.0f;
+    l.type = MOTE_LIGHT_SPOT;     /* down onto the scene, a wide cone */
+    l.direction[1] = -1.0f;
+    l.spot_angle = 3.0f;
+    uint64_t spot = lit_channels(&l);
+    TEST_ASSERT_TRUE(MOTE_ENABLE_LIGHT_FALLOFF ? spot > 0 : spot == 0);
+}
+
 void an_arena_should_need_binning(void)
 {
     /* init_device checks the result: MOTE_ERR_UNSUPPORTED without binning */
@@ -145,6 +183,7 @@ int main(void)
     RUN_TEST(bilinear_filtering_should_need_its_option);
     RUN_TEST(subspan_perspective_should_need_its_option);
     RUN_TEST(vertex_colours_should_need_their_option);
+    RUN_TEST(spot_lights_and_ranges_should_light_only_with_falloff);
     RUN_TEST(an_arena_should_need_binning);
     return UNITY_END();
 }

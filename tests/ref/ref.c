@@ -462,6 +462,29 @@ static bool finite3(const double *v, int n)
     return true;
 }
 
+/* Babylon.js's default falloff (StandardMaterial's computeLighting and
+ * computeSpotLighting): max(0, 1 - distance / range) for a point or spot
+ * light with a range; a spot light's max(0, cos(angle to the axis)), 0
+ * outside the cone (cos below cos(angle / 2)), else to the power exponent.
+ * L runs from the surface point to the light, len = |L|. */
+static double falloff(const mote_light *l, const double L[3], double len)
+{
+    double att = 1.0;
+    if (l->type != MOTE_LIGHT_POINT && l->type != MOTE_LIGHT_SPOT)
+        return att;
+    if (l->range > 0.0f)
+        att = fmax(0.0, 1.0 - len / l->range);
+    if (l->type == MOTE_LIGHT_SPOT) {
+        const double *d = (const double[3]){l->direction[0], l->direction[1], l->direction[2]};
+        double dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        double c = fmax(0.0, -(d[0] * L[0] + d[1] * L[1] + d[2] * L[2]) / (dl * len));
+        if (!(c >= cos(0.5 * l->spot_angle)))
+            return 0.0;
+        att *= l->spot_exponent > 0.0f ? pow(c, l->spot_exponent) : 1.0;
+    }
+    return att;
+}
+
 static void light(const draw_ctx *c, const double p[3], const double nrm[3], double out[3])
 {
     const mote_frame_desc *f = &c->t->frame;
@@ -473,7 +496,7 @@ static void light(const draw_ctx *c, const double p[3], const double nrm[3], dou
             col[0] = col[1] = col[2] = 1.0;
         double k = l->intensity != 0.0f ? l->intensity : 1.0;
         double L[3];
-        if (l->type == MOTE_LIGHT_POINT) {
+        if (l->type == MOTE_LIGHT_POINT || l->type == MOTE_LIGHT_SPOT) {
             for (int j = 0; j < 3; j++)
                 L[j] = (double)l->position[j] - p[j];
         } else if (l->type == MOTE_LIGHT_DIRECTIONAL) {
@@ -492,8 +515,9 @@ static void light(const draw_ctx *c, const double p[3], const double nrm[3], dou
             for (int j = 0; j < 3; j++)
                 acc[j] += k * (col[j] * w + (double)l->ground_color[j] * (1.0 - w));
         } else if (ndl > 0.0) {
+            double att = falloff(l, L, len);
             for (int j = 0; j < 3; j++)
-                acc[j] += k * col[j] * ndl;
+                acc[j] += k * col[j] * ndl * att;
         }
     }
     for (int j = 0; j < 3; j++)
