@@ -385,6 +385,17 @@ int main(int argc, char **argv)
         goto done;
     }
 
+    /* the options speak of the file's coordinates; a right-handed file is
+     * loaded mirrored in z, so they are mirrored with it (rotations as the
+     * loader mirrors them: angles about x and y change sign) */
+    if (scene.mirrored_z) {
+        o.eye[2] = 0.0f - o.eye[2];
+        o.target[2] = 0.0f - o.target[2];
+        o.rotate[0] = 0.0f - o.rotate[0];
+        o.rotate[1] = 0.0f - o.rotate[1];
+        o.spin_degrees = 0.0f - o.spin_degrees;
+    }
+
     mote_frame_desc frame;
     memset(&frame, 0, sizeof frame);
     mote_scene_frame(&scene, (float)o.width / (float)o.height, &frame);

@@ -1296,8 +1296,9 @@ void loader_should_read_fov_mode_1_as_a_horizontal_field_of_view(void)
 }
 
 /* What mote does not read but that changes Babylon.js's image is said,
- * once per scene: a right-handed scene, pivot or local matrices, an
- * orthographic camera. An identity matrix changes nothing: no warning. */
+ * once per scene: pivot or local matrices, an orthographic camera. An
+ * identity matrix changes nothing: no warning; a right-handed scene is
+ * read (test_loader_transforms.c): no warning either. */
 void loader_should_warn_once_of_unread_features_that_change_the_image(void)
 {
     const char *j = "{\"useRightHandedSystem\":true,"
@@ -1307,10 +1308,9 @@ void loader_should_warn_once_of_unread_features_that_change_the_image(void)
                     "{\"id\":\"c\",\"localMatrix\":[2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]}";
     mote_scene s;
     load_json(j, "x", &s);
-    TEST_ASSERT_EQUAL_STRING("useRightHandedSystem is not read: the image is mirrored from "
-                             "Babylon.js's; meshes[1].pivotMatrix: pivot and local matrices "
-                             "are not read; cameras[0].mode: 1 (orthographic) is drawn as a "
-                             "perspective camera", s.warning);
+    TEST_ASSERT_EQUAL_STRING("meshes[1].pivotMatrix: pivot and local matrices are not read; "
+                             "cameras[0].mode: 1 (orthographic) is drawn as a perspective "
+                             "camera", s.warning);
     mote_scene_free(&s);
     load_json("{\"useRightHandedSystem\":false,\"cameras\":[{\"id\":\"c\",\"mode\":0}],"
               "\"transformNodes\":[{\"id\":\"t\",\"localMatrix\":[1,0,0,0, 0,1,0,0, "

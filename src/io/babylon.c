@@ -42,9 +42,12 @@
  *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
  * - With no base_dir (mote_scene_load_memory), embedded images are not
  *   loaded either: no textures at all, as documented.
- * - Not read, but warned of once per scene as they change the image:
- *   useRightHandedSystem true, a pivotMatrix or localMatrix other than the
- *   identity, an orthographic camera (mode 1).
+ * - Not read, but warned of once per scene as they change the image: a
+ *   pivotMatrix or localMatrix other than the identity, an orthographic
+ *   camera (mode 1).
+ * - useRightHandedSystem true: the scene is loaded mirrored in z, which
+ *   draws Babylon.js's image on mote's left-handed core (mote__mirror_point;
+ *   tested in tests/test_loader_transforms.c).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -136,6 +139,10 @@ typedef struct mote__multi {
 typedef struct mote__sub {
     uint32_t index_start, index_count;
     uint32_t material_index;
+    /* its own triangles, or NULL: the node's from index_start. An
+     * unindexed sub-mesh of a right-handed scene starting inside one of
+     * the node's flipped triangles needs its own (mote__submeshes) */
+    uint32_t *own_indices;
 } mote__sub;
 
 typedef struct mote__node {
@@ -237,6 +244,7 @@ typedef struct mote__ld {
     int texture_cap;
     const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
     bool warned_matrix;           /* a pivotMatrix or localMatrix was warned of */
+    bool right_handed;            /* useRightHandedSystem: loaded mirrored (mote__mirror_point) */
     mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
     int warning_count;
     unsigned warnings_dropped;    /* given after the list was full */
@@ -525,6 +533,55 @@ static R mote__obj_at(mote__ld *ld, const cJSON *v, const char *at)
         return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an object, found %s", at,
                           mote__type_name(v));
     return MOTE_OK;
+}
+
+/* ---- right-handed scenes ---------------------------------------------- */
+
+/* Babylon.js draws a scene saying useRightHandedSystem with right-handed
+ * view and projection matrices (LookAtRH, PerspectiveFovRH) and, as a
+ * mesh's default sideOrientation there is the other one, front faces
+ * turning the other way on screen. mote's core is left-handed only, so
+ * such a scene is loaded mirrored in z, S = diag(1, 1, -1): every point
+ * and direction p becomes S p and every transform M becomes S M S. Then
+ * P_LH V_LH(S eye, S target, S up) = P_RH V_RH(eye, target, up) S, so the
+ * mirrored scene through the mirrored camera lands on the same pixels as
+ * Babylon.js's; only the triangles' order is reversed (mote__flip_winding)
+ * so that what Babylon.js takes for a front face mote does too. */
+static void mote__mirror_point(float p[3])
+{
+    p[2] = 0.0f - p[2];   /* exactly -p[2], but a zero stays +0 */
+}
+
+/* S R S for a rotation R: a quaternion (x, y, z, w) becomes (-x, -y, z,
+ * w), Euler angles (rx, ry, rz), applied z, then x, then y, become (-rx,
+ * -ry, rz): S Ry(a) S = Ry(-a), S Rx(a) S = Rx(-a), S Rz(a) S = Rz(a). */
+static void mote__mirror_rotation(float euler[3], float quat[4])
+{
+    euler[0] = 0.0f - euler[0];
+    euler[1] = 0.0f - euler[1];
+    quat[0] = 0.0f - quat[0];
+    quat[1] = 0.0f - quat[1];
+}
+
+/* Swaps the last two corners of each whole triangle of idx[0..n). */
+static void mote__flip_winding(uint32_t *idx, uint32_t n)
+{
+    for (uint32_t t = 0; t + 2 < n; t += 3) {
+        uint32_t k = idx[t + 1];
+        idx[t + 1] = idx[t + 2];
+        idx[t + 2] = k;
+    }
+}
+
+/* The indices first, first + 1, ... (count of them: vertices drawn as
+ * triangles in their order), the triangles flipped in a right-handed
+ * scene. */
+static void mote__sequential_run(const mote__ld *ld, uint32_t *idx, uint32_t first, uint32_t count)
+{
+    for (uint32_t k = 0; k < count; k++)
+        idx[k] = first + k;
+    if (ld->right_handed)
+        mote__flip_winding(idx, count);
 }
 
 /* ---- id maps ----------------------------------------------------------- */
@@ -1060,6 +1117,8 @@ static R mote__indices(mote__ld *ld, const cJSON *arr, const char *at, mote__nod
         if (nd->idx[k] > *max_index)
             *max_index = nd->idx[k];
     }
+    if (ld->right_handed)
+        mote__flip_winding(nd->idx, nd->ni);
     return MOTE_OK;
 }
 
@@ -1082,6 +1141,18 @@ static R mote__alloc_vertices(mote__ld *ld, const char *at, size_t nv, mote__nod
         return mote__oom(ld, at);
     nd->nv = (uint32_t)nv;
     return MOTE_OK;
+}
+
+/* A right-handed scene's positions and normals, mirrored (their
+ * triangles are flipped as the indices are read: mote__indices). */
+static void mote__mirror_vertices(const mote__ld *ld, mote__node *nd)
+{
+    if (!ld->right_handed)
+        return;
+    for (uint32_t i = 0; i < nd->nv; i++) {
+        mote__mirror_point(nd->verts[i].position);
+        mote__mirror_point(nd->verts[i].normal);
+    }
 }
 
 /* Smooth normals where a file has none: the sum of the faces' normals as
@@ -1163,6 +1234,7 @@ static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *ver
             return mote__oom(ld, at);
     }
     MOTE__TRY(mote__fill(ld, verts, at, nd, MOTE__LEGACY, stride));
+    mote__mirror_vertices(ld, nd);
     nd->legacy = true;
     return mote__check_indices(ld, iat, nd);
 }
@@ -1279,8 +1351,7 @@ static R mote__sequential_indices(mote__ld *ld, const char *where, mote__node *n
     nd->idx = mote__store_alloc(ld->keep, nd->nv, sizeof *nd->idx);
     if (!nd->idx)
         return mote__oom(ld, where);
-    for (uint32_t k = 0; k < nd->nv; k++)
-        nd->idx[k] = k;
+    mote__sequential_run(ld, nd->idx, 0, nd->nv);
     nd->ni = nd->nv - nd->nv % 3;
     return MOTE_OK;
 }
@@ -1331,6 +1402,9 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
         MOTE__TRY(mote__colors(ld, colors, at, nd));
     }
     MOTE__TRY(mote__check_indices(ld, iat, nd));
+    /* mirrored before smooth normals are made: from mirrored positions and
+     * flipped triangles they come out as the file's, mirrored */
+    mote__mirror_vertices(ld, nd);
     if (!nrm)
         mote__smooth_normals(nd);
     return MOTE_OK;
@@ -1377,6 +1451,12 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
              * sequential indices from verticesStart, whole triangles only */
             nd->subs[k].index_start = v[1];
             nd->subs[k].index_count = v[2] - v[2] % 3;
+            if (ld->right_handed && v[1] % 3) {
+                nd->subs[k].own_indices = mote__store_alloc(ld->keep, v[2], sizeof(uint32_t));
+                if (!nd->subs[k].own_indices)
+                    return mote__oom(ld, at);
+                mote__sequential_run(ld, nd->subs[k].own_indices, v[1], v[2]);
+            }
             continue;
         }
         if ((uint64_t)v[3] + v[4] > nd->ni)
@@ -1435,6 +1515,10 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
     if (mote__get(mesh, "rotationQuaternion")) {
         MOTE__TRY(mote__vec(ld, mesh, "rotationQuaternion", where, 4, 0, nd->quat));
         nd->use_quat = true;
+    }
+    if (ld->right_handed) {
+        mote__mirror_point(nd->position);
+        mote__mirror_rotation(nd->rotation, nd->quat);
     }
     return MOTE_OK;
 }
@@ -1676,6 +1760,27 @@ static R mote__xlists(mote__ld *ld)
     return MOTE_OK;
 }
 
+/* A camera's turn: its rotation, or its rotationQuaternion (*use_quat)
+ * when it has one, mirrored in a right-handed scene. Without a rotation,
+ * TargetCamera's default: none, but in a right-handed scene a half turn
+ * about y, which keeps such a camera looking down +z (its forward is -z
+ * there) as Babylon.js's cameras did before they looked down -z. */
+static R mote__camera_turn(mote__ld *ld, const cJSON *cam, const char *at, float rotation[3],
+                           float quat[4], bool *use_quat)
+{
+    memset(rotation, 0, 3 * sizeof *rotation);
+    if (ld->right_handed && !mote__get(cam, "rotation"))
+        rotation[1] = 3.14159265f;
+    MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, rotation));
+    quat[0] = quat[1] = quat[2] = 0.0f;
+    quat[3] = 1.0f;
+    MOTE__TRY(mote__vec(ld, cam, "rotationQuaternion", at, 4, 0, quat));
+    *use_quat = mote__get(cam, "rotationQuaternion") != NULL;
+    if (ld->right_handed)
+        mote__mirror_rotation(rotation, quat);
+    return MOTE_OK;
+}
+
 /* The node standing for cameras[k] (list 0) or lights[k] (list 1), at
  * `where`, made on first use: in Babylon.js cameras and lights are nodes, so they may be parents
  * and have parents. It goes at the end of ld->nodes with no id in the node
@@ -1712,10 +1817,13 @@ static R mote__xnode(mote__ld *ld, int list, int k, const char *where, int *out)
         }
     } else {
         MOTE__TRY(mote__node_common(ld, json, where, nd));
+        MOTE__TRY(mote__camera_turn(ld, json, where, nd->rotation, nd->quat, &nd->use_quat));
         float target[3];
         if (mote__get(json, "target")) {
             /* setTarget: yaw and pitch that turn +z toward the target, no roll */
             MOTE__TRY(mote__vec(ld, json, "target", where, 3, 0, target));
+            if (ld->right_handed)
+                mote__mirror_point(target);
             float d[3] = {target[0] - nd->position[0], target[1] - nd->position[1],
                           target[2] - nd->position[2]};
             nd->rotation[0] = atan2f(-d[1], sqrtf(d[0] * d[0] + d[2] * d[2]));
@@ -1988,7 +2096,9 @@ static R mote__build_meshes(mote__ld *ld)
             m->index_count = nd->ni;
             uint32_t material_index = 0;
             if (nd->sub_count > 0) {
-                m->indices = nd->idx ? nd->idx + nd->subs[s].index_start : NULL;
+                m->indices = nd->subs[s].own_indices ? nd->subs[s].own_indices
+                             : nd->idx                ? nd->idx + nd->subs[s].index_start
+                                                      : NULL;
                 m->index_count = nd->subs[s].index_count;
                 material_index = nd->subs[s].material_index;
             }
@@ -2091,6 +2201,8 @@ static R mote__camera(mote__ld *ld)
     mote_camera *c = &ld->scene->camera;
     memset(c, 0, sizeof *c);
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
+    if (ld->right_handed)
+        mote__mirror_point(c->position);
     const char *locked;
     MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
     int target_node = mote__idmap_find_last(ld->node_map, locked);
@@ -2104,18 +2216,21 @@ static R mote__camera(mote__ld *ld)
         memcpy(c->target, &w[12], sizeof c->target);
     } else if (mote__get(cam, "target")) {
         MOTE__TRY(mote__vec(ld, cam, "target", at, 3, 0, c->target));
+        if (ld->right_handed)
+            mote__mirror_point(c->target);
     } else {
         /* target = position + forward (+z) turned by the rotation (yaw,
          * pitch, roll; rotationQuaternion overrides it), as meshes turn */
-        float rotation[3] = {0, 0, 0}, quat[4] = {0, 0, 0, 1}, fwd[3];
-        MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, rotation));
-        bool use_quat = mote__get(cam, "rotationQuaternion") != NULL;
-        MOTE__TRY(mote__vec(ld, cam, "rotationQuaternion", at, 4, 0, quat));
+        float rotation[3], quat[4], fwd[3];
+        bool use_quat;
+        MOTE__TRY(mote__camera_turn(ld, cam, at, rotation, quat, &use_quat));
         mote__forward(rotation, quat, use_quat, fwd);
         for (int k = 0; k < 3; k++)
             c->target[k] = c->position[k] + fwd[k];
     }
     MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
+    if (ld->right_handed)
+        mote__mirror_point(c->up);
     /* Babylon.js's Camera defaults */
     c->fov = 0.8f;
     c->znear = 1.0f;
@@ -2189,6 +2304,10 @@ static R mote__lights(mote__ld *ld)
                 memcpy(L.direction, data, sizeof data);
             MOTE__TRY(mote__vec(ld, l, "direction", at, 3, 0, L.direction));
             MOTE__TRY(mote__vec(ld, l, "groundColor", at, 3, 0, L.ground_color));
+        }
+        if (ld->right_handed) {
+            mote__mirror_point(L.position);
+            mote__mirror_point(L.direction);
         }
         float color[3] = {1, 1, 1}, intensity = 1.0f;
         MOTE__TRY(mote__vec(ld, l, "diffuse", at, 3, 0, color));
@@ -2324,12 +2443,10 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     cJSON *root;
     MOTE__TRY(mote__parse(ld, json, size, &root));
     ld->root = root;
-    /* Babylon.js draws such a scene right-handed; mote draws every scene
-     * left-handed, so the image is mirrored */
-    if (cJSON_IsTrue(mote__get(root, "useRightHandedSystem")))
-        mote__warn(ld, "useRightHandedSystem is not read: the image is mirrored from "
-                   "Babylon.js's");
-    R r = mote__materials(ld);
+    /* a right-handed scene is loaded mirrored (mote__mirror_point) */
+    R r = mote__flag(ld, root, "useRightHandedSystem", "scene", &ld->right_handed);
+    ld->scene->mirrored_z = ld->right_handed;
+    if (r == MOTE_OK) r = mote__materials(ld);
     if (r == MOTE_OK) r = mote__multi_materials(ld);
     if (r == MOTE_OK) r = mote__nodes(ld);
     if (r == MOTE_OK) r = mote__camera_light_nodes(ld);
