@@ -1296,9 +1296,8 @@ void loader_should_read_fov_mode_1_as_a_horizontal_field_of_view(void)
 }
 
 /* What mote does not read but that changes Babylon.js's image is said,
- * once per scene: pivot or local matrices, an orthographic camera. An
- * identity matrix changes nothing: no warning; a right-handed scene is
- * read (test_loader_transforms.c): no warning either. */
+ * once per scene: an orthographic camera. A right-handed scene and pivot
+ * or local matrices are read (test_loader_transforms.c): no warning. */
 void loader_should_warn_once_of_unread_features_that_change_the_image(void)
 {
     const char *j = "{\"useRightHandedSystem\":true,"
@@ -1308,8 +1307,7 @@ void loader_should_warn_once_of_unread_features_that_change_the_image(void)
                     "{\"id\":\"c\",\"localMatrix\":[2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]}";
     mote_scene s;
     load_json(j, "x", &s);
-    TEST_ASSERT_EQUAL_STRING("meshes[1].pivotMatrix: pivot and local matrices are not read; "
-                             "cameras[0].mode: 1 (orthographic) is drawn as a perspective "
+    TEST_ASSERT_EQUAL_STRING("cameras[0].mode: 1 (orthographic) is drawn as a perspective "
                              "camera", s.warning);
     mote_scene_free(&s);
     load_json("{\"useRightHandedSystem\":false,\"cameras\":[{\"id\":\"c\",\"mode\":0}],"

@@ -49,8 +49,10 @@ void mote_texture_free(mote_texture *texture);
 /* ---- scenes ------------------------------------------------------------ */
 
 /* A loaded scene: meshes ready for mote_draw (one mesh per sub-mesh, sharing
- * vertex and vertex colour arrays), their textures, the active camera and
- * the lights. */
+ * vertex and vertex colour arrays; after the file's meshes, transform
+ * nodes and instances, hidden 0-vertex meshes may follow: cameras and
+ * lights in the parent tree, and stand-ins for sheared pivot or local
+ * matrices), their textures, the active camera and the lights. */
 typedef struct mote_scene {
     mote_mesh *meshes;
     int mesh_count;
