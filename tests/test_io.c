@@ -1317,6 +1317,35 @@ void loader_should_warn_once_of_unread_features_that_change_the_image(void)
     mote_scene_free(&s);
 }
 
+/* Keys written twice: the last counts, as JSON.parse (which Babylon.js
+ * reads .babylon files with) keeps it; cJSON's lookup alone would find the
+ * first. At the top level, in a mesh, a material, a camera and a
+ * geometries.vertexData entry. */
+void loader_should_take_the_last_of_keys_written_twice(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"first\"}],"
+                    "\"materials\":[{\"id\":\"m\",\"diffuse\":[1,0,0],\"diffuse\":[0,0,1]}],"
+                    "\"geometries\":{\"vertexData\":[{\"id\":\"x\",\"id\":\"g\","
+                    "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]}]},"
+                    "\"cameras\":[{\"id\":\"one\",\"id\":\"c\",\"position\":[0,0,-3],"
+                    "\"target\":[0,0,0]}],\"activeCameraID\":\"c\","
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m\",\"geometryId\":\"g\","
+                    "\"position\":[1,2,3],\"position\":[4,5,6],\"isVisible\":false,"
+                    "\"isVisible\":null}]}";
+    mote_scene s;
+    load_json(j, "dup", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    ASSERT_VEC3(4.0f, 5.0f, 6.0f, s.meshes[0].position, 0.0f);
+    TEST_ASSERT_FALSE(s.meshes[0].hidden);    /* null: as if not written */
+    TEST_ASSERT_EQUAL_UINT8(0, s.meshes[0].material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(255, s.meshes[0].material.color.b);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[0].index_count);
+    TEST_ASSERT_TRUE(s.has_camera);
+    ASSERT_VEC3(0.0f, 0.0f, -3.0f, s.camera.position, 0.0f);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/mote-test-io-XXXXXX");
@@ -1366,6 +1395,7 @@ int main(void)
     RUN_TEST(file_reading_should_refuse_a_fifo_a_directory_and_a_device);
     RUN_TEST(loader_should_read_fov_mode_1_as_a_horizontal_field_of_view);
     RUN_TEST(loader_should_warn_once_of_unread_features_that_change_the_image);
+    RUN_TEST(loader_should_take_the_last_of_keys_written_twice);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

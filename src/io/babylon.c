@@ -19,6 +19,8 @@
  * second store released at the end of every load, failed or not.
  *
  * Decisions (tested in tests/test_loader_errors.c):
+ * - Of a key written twice in an object the last counts, as with
+ *   JSON.parse (mote__member; tested in tests/test_io.c).
  * - A mesh with no vertex data loads as a 0-vertex mesh (it may be a
  *   parent); empty arrays are fine and give 0 triangles. Positions with
  *   no indices give 0 triangles too, with a warning, unless the mesh says
@@ -368,10 +370,24 @@ static const char *mote__type_name(const cJSON *v)
     return "something else";
 }
 
+/* obj[key], or NULL. Of keys written twice the last counts, as with
+ * JSON.parse, which Babylon.js reads files with (cJSON's own lookup
+ * finds the first). Every lookup of the loader goes through here. */
+static const cJSON *mote__member(const cJSON *obj, const char *key)
+{
+    const cJSON *last = NULL;
+    if (!cJSON_IsObject(obj))
+        return NULL;
+    for (const cJSON *e = obj->child; e; e = e->next)
+        if (e->string && strcmp(e->string, key) == 0)
+            last = e;
+    return last;
+}
+
 /* An optional member of an object; NULL when absent or null. */
 static const cJSON *mote__get(const cJSON *obj, const char *key)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    const cJSON *v = mote__member(obj, key);
     return cJSON_IsNull(v) ? NULL : v;
 }
 
@@ -1664,7 +1680,7 @@ static R mote__nodes(mote__ld *ld)
         if (!ld->geometries)
             return mote__oom(ld, "geometries");
         for (const cJSON *g = vertex_data ? vertex_data->child : NULL; g; g = g->next) {
-            const cJSON *gid = cJSON_GetObjectItemCaseSensitive(g, "id");
+            const cJSON *gid = mote__member(g, "id");
             mote__geometry *e = &ld->geometries[ld->geometry_count++];
             e->id = cJSON_IsString(gid) ? gid->valuestring : NULL;
             e->json = g;
@@ -1769,9 +1785,9 @@ static R mote__light_type(mote__ld *ld, const cJSON *l, const char *at, uint32_t
  * id (Babylon.js gives a node without an id its name); NULL: neither. */
 static const char *mote__entry_key(const cJSON *e)
 {
-    const cJSON *id = cJSON_GetObjectItemCaseSensitive(e, "id");
+    const cJSON *id = mote__member(e, "id");
     if (!cJSON_IsString(id))
-        id = cJSON_GetObjectItemCaseSensitive(e, "name");
+        id = mote__member(e, "name");
     return cJSON_IsString(id) ? id->valuestring : NULL;
 }
 
