@@ -47,6 +47,41 @@ else
     fail $name "exit status $?: $(cat "$tmp/out")"
 fi
 
+# ---- --allow-missing-textures ---------------------------------------------------
+# A red material whose texture file is not there: the load fails, naming the
+# file; with --allow-missing-textures the quad is drawn in the material's
+# red (no texture to modulate it), with the loader's warning.
+cat >"$tmp/missing.babylon" <<'JSON'
+{"materials":[{"id":"red","diffuse":[1,0,0],"diffuseTexture":{"name":"no-such-image.png"}}],
+ "cameras":[{"id":"c","position":[0,0,-3],"target":[0,0,0]}],
+ "lights":[{"type":3,"id":"sky","direction":[0,0,-1],"groundColor":[1,1,1]}],
+ "meshes":[{"id":"q","materialId":"red",
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0, -1,1,0],"normals":[0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1],
+  "uvs":[0,0, 1,0, 1,1, 0,1],"indices":[0,1,2, 0,2,3]}]}
+JSON
+name=a_missing_texture_should_fail_the_load_by_default
+if "$R" "$tmp/missing.babylon" -o "$tmp/missing.ppm" --size 16x16 --threads 1 >"$tmp/out" 2>&1; then
+    fail $name "exit status 0, expected an error"
+elif ! grep -q "no-such-image.png" "$tmp/out"; then
+    fail $name "the message does not name the file: $(cat "$tmp/out")"
+else
+    pass $name
+fi
+name=allow_missing_textures_should_draw_the_material_colour_with_a_warning
+if "$R" "$tmp/missing.babylon" -o "$tmp/missing.ppm" --size 16x16 --threads 1 \
+        --allow-missing-textures >"$tmp/out" 2>&1; then
+    centre=$(pixel "$tmp/missing.ppm" 8 8)
+    if ! grep -q "warning: .*no-such-image.png.*(drawn untextured)" "$tmp/out"; then
+        fail $name "no warning naming the file: $(cat "$tmp/out")"
+    elif [ "$centre" != "255 0 0" ]; then
+        fail $name "the centre pixel is \"$centre\", expected the material's \"255 0 0\""
+    else
+        pass $name
+    fi
+else
+    fail $name "exit status $?: $(cat "$tmp/out")"
+fi
+
 echo
 echo "-----------------------"
 echo "$tests Tests $failures Failures 0 Ignored"
