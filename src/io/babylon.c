@@ -166,10 +166,11 @@ typedef struct mote__node {
     bool use_quat;
     /* localMatrix or pivotMatrix (Babylon.js's array order, which is
      * mote's column-major one), folded into the transform by
-     * mote__node_matrices; has_matrix false: none, or the identity */
+     * mote__fold_matrix; has_matrix false: none, or the identity */
     float matrix[16];
     bool has_matrix;
     bool matrix_undone;           /* a pivot: its inverse applied after the turn and scale */
+    const char *matrix_name;      /* for messages: "pivotMatrix", "source's localMatrix"... */
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
@@ -1604,6 +1605,7 @@ static R mote__read_matrix(mote__ld *ld, const cJSON *node, const char *where, m
     if (ld->right_handed)
         mote__mirror_matrix(nd->matrix);
     nd->has_matrix = true;
+    nd->matrix_name = key;
     nd->matrix_undone = key[0] == 'p';
     return MOTE_OK;
 }
@@ -1692,7 +1694,7 @@ static R mote__nodes(mote__ld *ld)
         if (!ld->geometry_map)
             return mote__oom(ld, "geometries");
     }
-    /* nh: nodes that may need a helper node (mote__node_matrices) */
+    /* nh: nodes that may need a helper node (mote__fold_matrix) */
     size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0, nh = 0;
     int i = 0;
     for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
@@ -1750,6 +1752,7 @@ static R mote__nodes(mote__ld *ld)
              * undoes even a localMatrix (a pre-transform of its source) */
             memcpy(in->matrix, nd->matrix, sizeof in->matrix);
             in->has_matrix = nd->has_matrix;
+            in->matrix_name = nd->matrix_undone ? "source's pivotMatrix" : "source's localMatrix";
             in->matrix_undone = true;
             mote__share_arrays(in, nd);
             in->subs = nd->subs;
@@ -2240,8 +2243,8 @@ static R mote__fold_matrix(mote__ld *ld, int index)
     if (nd->matrix_undone) {
         /* T P^-1 (R S) P: the position taken out, put back last */
         if (!mote__affine_inverse(p, undo))
-            return mote__fail(ld, MOTE_ERR_RANGE, "%s.pivotMatrix: not invertible (a pivot "
-                              "is undone by its inverse)", nd->where);
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: its %s is not invertible (as a pivot "
+                              "it is undone by its inverse)", nd->where, nd->matrix_name);
         double position[3] = {l[12], l[13], l[14]};
         l[12] = l[13] = l[14] = 0.0;
         mote__mul4(undo, l, l);
