@@ -5,7 +5,7 @@
  *               [--camera ex,ey,ez:tx,ty,tz] [--fov RADIANS] [--rotate rx,ry,rz]
  *               [--frames N] [--threads T] [--spin DEGREES]
  *               [--perspective correct|affine|subspan] [--filter nearest|bilinear]
- *               [--subpixel-bits N] [--full-clear]
+ *               [--subpixel-bits N] [--full-clear] [--allow-missing-textures]
  *
  * The device bins triangles into an arena and rasterises the tiles on OpenMP
  * threads (mote_parallel_openmp; with --threads 1 on the calling thread, the
@@ -15,7 +15,10 @@
  * prints "ms/frame: median X (min Y, max Z)". The image written is always
  * the unturned frame, so it does not depend on --frames or --spin. Frames
  * clear only the tiles drawn into since their last clear (the tool is the
- * only writer of its buffers); --full-clear clears the whole frame.
+ * only writer of its buffers); --full-clear clears the whole frame. A
+ * texture file that is missing or cannot be read fails the load, unless
+ * --allow-missing-textures: its material is then drawn in its colour, and
+ * the loader's warning says which file it was.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -43,6 +46,7 @@ typedef struct options {
     float spin_degrees;
     int subpixel_bits;            /* 0: default */
     bool full_clear;              /* clear every tile, not only those drawn into */
+    bool allow_missing_textures;  /* draw in the material's colour, warn */
 } options;
 
 static void usage(FILE *out)
@@ -65,6 +69,9 @@ static void usage(FILE *out)
             "  --subpixel-bits N       snapping grid, 4..8 (default 8)\n"
             "  --full-clear            clear the whole frame each time (default: only the tiles\n"
             "                          drawn into since their last clear)\n"
+            "  --allow-missing-textures  draw a material whose texture file is missing or\n"
+            "                          unreadable in its colour, with a warning (default:\n"
+            "                          such a scene fails to load)\n"
             "  --help                  this text\n");
 }
 
@@ -164,6 +171,10 @@ static int parse_args(int argc, char **argv, options *o)
         }
         if (strcmp(a, "--full-clear") == 0) {
             o->full_clear = true;
+            continue;
+        }
+        if (strcmp(a, "--allow-missing-textures") == 0) {
+            o->allow_missing_textures = true;
             continue;
         }
         if (a[0] != '-' || a[1] == '\0') {
@@ -336,7 +347,9 @@ int main(int argc, char **argv)
 
     char message[512] = "";
     mote_scene scene;
-    mote_result r = mote_scene_load(o.scene_path, NULL, &scene, message, sizeof message);
+    mote_limits limits = mote_limits_default();
+    limits.missing_texture_is_warning = o.allow_missing_textures;
+    mote_result r = mote_scene_load(o.scene_path, &limits, &scene, message, sizeof message);
     if (r != MOTE_OK) {
         fprintf(stderr, "mote-render: %s\n", message[0] ? message : mote_result_string(r));
         return 1;
@@ -383,6 +396,17 @@ int main(int argc, char **argv)
     if (r != MOTE_OK) {
         fprintf(stderr, "mote-render: cannot set up the device: %s\n", mote_result_string(r));
         goto done;
+    }
+
+    /* the options speak of the file's coordinates; a right-handed file is
+     * loaded mirrored in z, so they are mirrored with it (rotations as the
+     * loader mirrors them: angles about x and y change sign) */
+    if (scene.mirrored_z) {
+        o.eye[2] = 0.0f - o.eye[2];
+        o.target[2] = 0.0f - o.target[2];
+        o.rotate[0] = 0.0f - o.rotate[0];
+        o.rotate[1] = 0.0f - o.rotate[1];
+        o.spin_degrees = 0.0f - o.spin_degrees;
     }
 
     mote_frame_desc frame;

@@ -1335,8 +1335,8 @@ void loader_should_read_fov_mode_1_as_a_horizontal_field_of_view(void)
 }
 
 /* What mote does not read but that changes Babylon.js's image is said,
- * once per scene: a right-handed scene, pivot or local matrices, an
- * orthographic camera. An identity matrix changes nothing: no warning. */
+ * once per scene: an orthographic camera. A right-handed scene and pivot
+ * or local matrices are read (test_loader_transforms.c): no warning. */
 void loader_should_warn_once_of_unread_features_that_change_the_image(void)
 {
     const char *j = "{\"useRightHandedSystem\":true,"
@@ -1346,15 +1346,42 @@ void loader_should_warn_once_of_unread_features_that_change_the_image(void)
                     "{\"id\":\"c\",\"localMatrix\":[2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]}";
     mote_scene s;
     load_json(j, "x", &s);
-    TEST_ASSERT_EQUAL_STRING("useRightHandedSystem is not read: the image is mirrored from "
-                             "Babylon.js's; meshes[1].pivotMatrix: pivot and local matrices "
-                             "are not read; cameras[0].mode: 1 (orthographic) is drawn as a "
-                             "perspective camera", s.warning);
+    TEST_ASSERT_EQUAL_STRING("cameras[0].mode: 1 (orthographic) is drawn as a perspective "
+                             "camera", s.warning);
     mote_scene_free(&s);
     load_json("{\"useRightHandedSystem\":false,\"cameras\":[{\"id\":\"c\",\"mode\":0}],"
               "\"transformNodes\":[{\"id\":\"t\",\"localMatrix\":[1,0,0,0, 0,1,0,0, "
               "0,0,1,0, 0,0,0,1]}]}", "x", &s);
     TEST_ASSERT_EQUAL_STRING("", s.warning);
+    mote_scene_free(&s);
+}
+
+/* Keys written twice: the last counts, as JSON.parse (which Babylon.js
+ * reads .babylon files with) keeps it; cJSON's lookup alone would find the
+ * first. At the top level, in a mesh, a material, a camera and a
+ * geometries.vertexData entry. */
+void loader_should_take_the_last_of_keys_written_twice(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"first\"}],"
+                    "\"materials\":[{\"id\":\"m\",\"diffuse\":[1,0,0],\"diffuse\":[0,0,1]}],"
+                    "\"geometries\":{\"vertexData\":[{\"id\":\"x\",\"id\":\"g\","
+                    "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]}]},"
+                    "\"cameras\":[{\"id\":\"one\",\"id\":\"c\",\"position\":[0,0,-3],"
+                    "\"target\":[0,0,0]}],\"activeCameraID\":\"c\","
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m\",\"geometryId\":\"g\","
+                    "\"position\":[1,2,3],\"position\":[4,5,6],\"isVisible\":false,"
+                    "\"isVisible\":null}]}";
+    mote_scene s;
+    load_json(j, "dup", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    ASSERT_VEC3(4.0f, 5.0f, 6.0f, s.meshes[0].position, 0.0f);
+    TEST_ASSERT_FALSE(s.meshes[0].hidden);    /* null: as if not written */
+    TEST_ASSERT_EQUAL_UINT8(0, s.meshes[0].material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(255, s.meshes[0].material.color.b);
+    TEST_ASSERT_EQUAL_UINT32(3, s.meshes[0].index_count);
+    TEST_ASSERT_TRUE(s.has_camera);
+    ASSERT_VEC3(0.0f, 0.0f, -3.0f, s.camera.position, 0.0f);
     mote_scene_free(&s);
 }
 
@@ -1408,6 +1435,7 @@ int main(void)
     RUN_TEST(file_reading_should_refuse_a_fifo_a_directory_and_a_device);
     RUN_TEST(loader_should_read_fov_mode_1_as_a_horizontal_field_of_view);
     RUN_TEST(loader_should_warn_once_of_unread_features_that_change_the_image);
+    RUN_TEST(loader_should_take_the_last_of_keys_written_twice);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
     if (system(cmd) != 0)

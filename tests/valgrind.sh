@@ -92,6 +92,9 @@ else
     ignore mote_render_should_render_the_monkey_clean "../shared/assets/monkey.babylon is absent"
 fi
 check mote_render_should_print_help_clean ok "$R" --help
+check mote_render_should_draw_a_scene_missing_a_texture_when_allowed_clean ok \
+    "$R" tests/data/bad/texture_missing.babylon -o "$tmp/missing.png" --size 16x12 --threads 1 \
+    --allow-missing-textures
 
 # ---- error paths -------------------------------------------------------------
 check mote_render_should_refuse_a_missing_file_clean fail \

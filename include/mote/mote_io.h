@@ -49,8 +49,10 @@ void mote_texture_free(mote_texture *texture);
 /* ---- scenes ------------------------------------------------------------ */
 
 /* A loaded scene: meshes ready for mote_draw (one mesh per sub-mesh, sharing
- * vertex and vertex colour arrays), their textures, the active camera and
- * the lights. */
+ * vertex and vertex colour arrays; after the file's meshes, transform
+ * nodes and instances, hidden 0-vertex meshes may follow: cameras and
+ * lights in the parent tree, and stand-ins for sheared pivot or local
+ * matrices), their textures, the active camera and the lights. */
 typedef struct mote_scene {
     mote_mesh *meshes;
     int mesh_count;
@@ -68,6 +70,13 @@ typedef struct mote_scene {
     float ambient[3];
     mote_rgba clear_color;
     float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
+    /* The file says useRightHandedSystem: Babylon.js draws it right-handed,
+     * and mote's core is left-handed, so it was loaded mirrored in z: a
+     * point (x, y, z) of the file is (x, y, -z) here (meshes, camera and
+     * lights alike, triangles' winding reversed to keep their front faces),
+     * which draws the image Babylon.js draws. A camera of the caller's,
+     * given in the file's coordinates, needs its z negated too. */
+    bool mirrored_z;
     /* Non-fatal notes (downgraded textures, ...), "; " between them: each
      * distinct one once, " (x12)" after one given 12 times, and "; N more
      * warnings" for those that do not fit. */
@@ -93,7 +102,8 @@ typedef struct mote_scene {
  * by materialUniqueId, then materialId (the last of equal ids); a texture
  * with coordinatesIndex 1 samples uvs2; backFaceCulling false fills
  * two_sided; images may be embedded as base64 data: URLs (base64String,
- * or name). */
+ * or name). A right-handed file (useRightHandedSystem) loads mirrored in
+ * z (mirrored_z). */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures

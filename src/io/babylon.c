@@ -19,6 +19,8 @@
  * second store released at the end of every load, failed or not.
  *
  * Decisions (tested in tests/test_loader_errors.c):
+ * - Of a key written twice in an object the last counts, as with
+ *   JSON.parse (mote__member; tested in tests/test_io.c).
  * - A mesh with no vertex data loads as a 0-vertex mesh (it may be a
  *   parent); empty arrays are fine and give 0 triangles. Positions with
  *   no indices give 0 triangles too, with a warning, unless the mesh says
@@ -42,9 +44,14 @@
  *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
  * - With no base_dir (mote_scene_load_memory), embedded images are not
  *   loaded either: no textures at all, as documented.
- * - Not read, but warned of once per scene as they change the image:
- *   useRightHandedSystem true, a pivotMatrix or localMatrix other than the
- *   identity, an orthographic camera (mode 1).
+ * - Not read, but warned of once per scene as it changes the image: an
+ *   orthographic camera (mode 1).
+ * - A localMatrix or pivotMatrix is folded into its node's transform, a
+ *   sheared one with a hidden helper node (mote__fold_matrix); one not
+ *   affine, or a pivot with no inverse, is an error.
+ * - useRightHandedSystem true: the scene is loaded mirrored in z, which
+ *   draws Babylon.js's image on mote's left-handed core (mote__mirror_point;
+ *   tested in tests/test_loader_transforms.c).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -136,6 +143,10 @@ typedef struct mote__multi {
 typedef struct mote__sub {
     uint32_t index_start, index_count;
     uint32_t material_index;
+    /* its own triangles, or NULL: the node's from index_start. An
+     * unindexed sub-mesh of a right-handed scene starting inside one of
+     * the node's flipped triangles needs its own (mote__submeshes) */
+    uint32_t *own_indices;
 } mote__sub;
 
 typedef struct mote__node {
@@ -153,6 +164,13 @@ typedef struct mote__node {
     int first_mesh, mesh_count;
     float position[3], rotation[3], quat[4], scaling[3];
     bool use_quat;
+    /* localMatrix or pivotMatrix (Babylon.js's array order, which is
+     * mote's column-major one), folded into the transform by
+     * mote__fold_matrix; has_matrix false: none, or the identity */
+    float matrix[16];
+    bool has_matrix;
+    bool matrix_undone;           /* a pivot: its inverse applied after the turn and scale */
+    const char *matrix_name;      /* for messages: "pivotMatrix", "source's localMatrix"... */
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
@@ -236,7 +254,7 @@ typedef struct mote__ld {
     bool any_uv2;                 /* a material samples uvs2: keep them while loading */
     int texture_cap;
     const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
-    bool warned_matrix;           /* a pivotMatrix or localMatrix was warned of */
+    bool right_handed;            /* useRightHandedSystem: loaded mirrored (mote__mirror_point) */
     mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
     int warning_count;
     unsigned warnings_dropped;    /* given after the list was full */
@@ -353,10 +371,24 @@ static const char *mote__type_name(const cJSON *v)
     return "something else";
 }
 
+/* obj[key], or NULL. Of keys written twice the last counts, as with
+ * JSON.parse, which Babylon.js reads files with (cJSON's own lookup
+ * finds the first). Every lookup of the loader goes through here. */
+static const cJSON *mote__member(const cJSON *obj, const char *key)
+{
+    const cJSON *last = NULL;
+    if (!cJSON_IsObject(obj))
+        return NULL;
+    for (const cJSON *e = obj->child; e; e = e->next)
+        if (e->string && strcmp(e->string, key) == 0)
+            last = e;
+    return last;
+}
+
 /* An optional member of an object; NULL when absent or null. */
 static const cJSON *mote__get(const cJSON *obj, const char *key)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    const cJSON *v = mote__member(obj, key);
     return cJSON_IsNull(v) ? NULL : v;
 }
 
@@ -525,6 +557,64 @@ static R mote__obj_at(mote__ld *ld, const cJSON *v, const char *at)
         return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an object, found %s", at,
                           mote__type_name(v));
     return MOTE_OK;
+}
+
+/* ---- right-handed scenes ---------------------------------------------- */
+
+/* Babylon.js draws a scene saying useRightHandedSystem with right-handed
+ * view and projection matrices (LookAtRH, PerspectiveFovRH) and, as a
+ * mesh's default sideOrientation there is the other one, front faces
+ * turning the other way on screen. mote's core is left-handed only, so
+ * such a scene is loaded mirrored in z, S = diag(1, 1, -1): every point
+ * and direction p becomes S p and every transform M becomes S M S. Then
+ * P_LH V_LH(S eye, S target, S up) = P_RH V_RH(eye, target, up) S, so the
+ * mirrored scene through the mirrored camera lands on the same pixels as
+ * Babylon.js's; only the triangles' order is reversed (mote__flip_winding)
+ * so that what Babylon.js takes for a front face mote does too. */
+static void mote__mirror_point(float p[3])
+{
+    p[2] = 0.0f - p[2];   /* exactly -p[2], but a zero stays +0 */
+}
+
+/* S R S for a rotation R: a quaternion (x, y, z, w) becomes (-x, -y, z,
+ * w), Euler angles (rx, ry, rz), applied z, then x, then y, become (-rx,
+ * -ry, rz): S Ry(a) S = Ry(-a), S Rx(a) S = Rx(-a), S Rz(a) S = Rz(a). */
+static void mote__mirror_rotation(float euler[3], float quat[4])
+{
+    euler[0] = 0.0f - euler[0];
+    euler[1] = 0.0f - euler[1];
+    quat[0] = 0.0f - quat[0];
+    quat[1] = 0.0f - quat[1];
+}
+
+/* S M S for a column-major 4x4 M: the elements of row 2 and of column 2,
+ * but not both, change sign. */
+static void mote__mirror_matrix(float m[16])
+{
+    static const int row_or_column_2[6] = {2, 6, 14, 8, 9, 11};
+    for (int k = 0; k < 6; k++)
+        m[row_or_column_2[k]] = 0.0f - m[row_or_column_2[k]];
+}
+
+/* Swaps the last two corners of each whole triangle of idx[0..n). */
+static void mote__flip_winding(uint32_t *idx, uint32_t n)
+{
+    for (uint32_t t = 0; t + 2 < n; t += 3) {
+        uint32_t k = idx[t + 1];
+        idx[t + 1] = idx[t + 2];
+        idx[t + 2] = k;
+    }
+}
+
+/* The indices first, first + 1, ... (count of them: vertices drawn as
+ * triangles in their order), the triangles flipped in a right-handed
+ * scene. */
+static void mote__sequential_run(const mote__ld *ld, uint32_t *idx, uint32_t first, uint32_t count)
+{
+    for (uint32_t k = 0; k < count; k++)
+        idx[k] = first + k;
+    if (ld->right_handed)
+        mote__flip_winding(idx, count);
 }
 
 /* ---- id maps ----------------------------------------------------------- */
@@ -1060,6 +1150,8 @@ static R mote__indices(mote__ld *ld, const cJSON *arr, const char *at, mote__nod
         if (nd->idx[k] > *max_index)
             *max_index = nd->idx[k];
     }
+    if (ld->right_handed)
+        mote__flip_winding(nd->idx, nd->ni);
     return MOTE_OK;
 }
 
@@ -1082,6 +1174,18 @@ static R mote__alloc_vertices(mote__ld *ld, const char *at, size_t nv, mote__nod
         return mote__oom(ld, at);
     nd->nv = (uint32_t)nv;
     return MOTE_OK;
+}
+
+/* A right-handed scene's positions and normals, mirrored (their
+ * triangles are flipped as the indices are read: mote__indices). */
+static void mote__mirror_vertices(const mote__ld *ld, mote__node *nd)
+{
+    if (!ld->right_handed)
+        return;
+    for (uint32_t i = 0; i < nd->nv; i++) {
+        mote__mirror_point(nd->verts[i].position);
+        mote__mirror_point(nd->verts[i].normal);
+    }
 }
 
 /* Smooth normals where a file has none: the sum of the faces' normals as
@@ -1163,6 +1267,7 @@ static R mote__legacy_geometry(mote__ld *ld, const cJSON *mesh, const cJSON *ver
             return mote__oom(ld, at);
     }
     MOTE__TRY(mote__fill(ld, verts, at, nd, MOTE__LEGACY, stride));
+    mote__mirror_vertices(ld, nd);
     nd->legacy = true;
     return mote__check_indices(ld, iat, nd);
 }
@@ -1279,8 +1384,7 @@ static R mote__sequential_indices(mote__ld *ld, const char *where, mote__node *n
     nd->idx = mote__store_alloc(ld->keep, nd->nv, sizeof *nd->idx);
     if (!nd->idx)
         return mote__oom(ld, where);
-    for (uint32_t k = 0; k < nd->nv; k++)
-        nd->idx[k] = k;
+    mote__sequential_run(ld, nd->idx, 0, nd->nv);
     nd->ni = nd->nv - nd->nv % 3;
     return MOTE_OK;
 }
@@ -1331,6 +1435,9 @@ static R mote__current_geometry(mote__ld *ld, const cJSON *src, const char *wher
         MOTE__TRY(mote__colors(ld, colors, at, nd));
     }
     MOTE__TRY(mote__check_indices(ld, iat, nd));
+    /* mirrored before smooth normals are made: from mirrored positions and
+     * flipped triangles they come out as the file's, mirrored */
+    mote__mirror_vertices(ld, nd);
     if (!nrm)
         mote__smooth_normals(nd);
     return MOTE_OK;
@@ -1377,6 +1484,12 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
              * sequential indices from verticesStart, whole triangles only */
             nd->subs[k].index_start = v[1];
             nd->subs[k].index_count = v[2] - v[2] % 3;
+            if (ld->right_handed && v[1] % 3) {
+                nd->subs[k].own_indices = mote__store_alloc(ld->keep, v[2], sizeof(uint32_t));
+                if (!nd->subs[k].own_indices)
+                    return mote__oom(ld, at);
+                mote__sequential_run(ld, nd->subs[k].own_indices, v[1], v[2]);
+            }
             continue;
         }
         if ((uint64_t)v[3] + v[4] > nd->ni)
@@ -1436,6 +1549,10 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
         MOTE__TRY(mote__vec(ld, mesh, "rotationQuaternion", where, 4, 0, nd->quat));
         nd->use_quat = true;
     }
+    if (ld->right_handed) {
+        mote__mirror_point(nd->position);
+        mote__mirror_rotation(nd->rotation, nd->quat);
+    }
     return MOTE_OK;
 }
 
@@ -1452,23 +1569,52 @@ static bool mote__absent_or_identity(const cJSON *obj, const char *key)
     return k == 16;
 }
 
-/* A pivotMatrix or localMatrix (Babylon.js's pre-transform) moves the mesh
- * in Babylon.js; mote does not read them: said once per scene. */
-static void mote__warn_unread_matrix(mote__ld *ld, const cJSON *mesh, const char *where)
+/* Whether a mesh or transform node has a matrix mote__read_matrix keeps
+ * (one it refuses fails the load anyway): room for a helper node. */
+static bool mote__may_have_matrix(const cJSON *node)
 {
-    static const char *const keys[2] = {"pivotMatrix", "localMatrix"};
-    for (int k = 0; k < 2 && !ld->warned_matrix; k++)
-        if (!mote__absent_or_identity(mesh, keys[k])) {
-            mote__warn(ld, "%s.%s: pivot and local matrices are not read", where, keys[k]);
-            ld->warned_matrix = true;
-        }
+    return !mote__absent_or_identity(node, "localMatrix") ||
+           !mote__absent_or_identity(node, "pivotMatrix");
+}
+
+/* The matrix Babylon.js's Mesh.Parse and TransformNode.Parse give a node:
+ * localMatrix, as a pre-transform (setPreTransformMatrix: applied before
+ * scale, turn and position), else pivotMatrix, as a pivot
+ * (setPivotMatrix's default postMultiplyPivotMatrix: its inverse applied
+ * again after scale and turn, so that they happen about the pivot). The
+ * identity changes nothing (_usePivotMatrix is false). It must be affine:
+ * the core's transforms are. */
+static R mote__read_matrix(mote__ld *ld, const cJSON *node, const char *where, mote__node *nd)
+{
+    const char *key = mote__get(node, "localMatrix") ? "localMatrix" : "pivotMatrix";
+    const cJSON *m;
+    MOTE__TRY(mote__arr(ld, node, key, where, &m));
+    if (!m || mote__absent_or_identity(node, key))
+        return MOTE_OK;
+    char at[96];
+    snprintf(at, sizeof at, "%s.%s", where, key);
+    if (mote__array_len(m) != 16)
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers", at);
+    size_t k = 0;
+    for (const cJSON *e = m->child; e; e = e->next, k++)
+        MOTE__TRY(mote__element_float(ld, e, at, k, &nd->matrix[k]));
+    const float *f = nd->matrix;
+    if (f[3] != 0.0f || f[7] != 0.0f || f[11] != 0.0f || f[15] != 1.0f)
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: not an affine transform (elements 3, 7, "
+                          "11 and 15 must be 0, 0, 0 and 1)", at);
+    if (ld->right_handed)
+        mote__mirror_matrix(nd->matrix);
+    nd->has_matrix = true;
+    nd->matrix_name = key;
+    nd->matrix_undone = key[0] == 'p';
+    return MOTE_OK;
 }
 
 /* One entry of meshes[] or transformNodes[]. */
 static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
 {
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
-    mote__warn_unread_matrix(ld, mesh, where);
+    MOTE__TRY(mote__read_matrix(ld, mesh, where, nd));
     MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
@@ -1536,7 +1682,7 @@ static R mote__nodes(mote__ld *ld)
         if (!ld->geometries)
             return mote__oom(ld, "geometries");
         for (const cJSON *g = vertex_data ? vertex_data->child : NULL; g; g = g->next) {
-            const cJSON *gid = cJSON_GetObjectItemCaseSensitive(g, "id");
+            const cJSON *gid = mote__member(g, "id");
             mote__geometry *e = &ld->geometries[ld->geometry_count++];
             e->id = cJSON_IsString(gid) ? gid->valuestring : NULL;
             e->json = g;
@@ -1548,7 +1694,8 @@ static R mote__nodes(mote__ld *ld)
         if (!ld->geometry_map)
             return mote__oom(ld, "geometries");
     }
-    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0;
+    /* nh: nodes that may need a helper node (mote__fold_matrix) */
+    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0, nh = 0;
     int i = 0;
     for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
         char at[32];
@@ -1557,17 +1704,22 @@ static R mote__nodes(mote__ld *ld)
         if (cJSON_IsObject(m))
             MOTE__TRY(mote__arr(ld, m, "instances", at, &inst));
         ni += mote__array_len(inst);
+        if (mote__may_have_matrix(m))
+            nh += 1 + mote__array_len(inst);
     }
+    for (const cJSON *t = tnodes ? tnodes->child : NULL; t; t = t->next)
+        nh += mote__may_have_matrix(t);
     if (nm + nt + ni > ld->lim.max_meshes)
         return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u "
                           "(transform nodes and instances count)", nm + nt + ni,
                           (unsigned)ld->lim.max_meshes);
-    /* cameras and lights may join the tree (mote__xnode); each becomes a
-     * mesh, so no more than the mesh limit leaves room for */
+    /* cameras and lights may join the tree (mote__xnode), and helpers of
+     * nodes with a matrix; each becomes a mesh, so no more than the mesh
+     * limit leaves room for */
     const cJSON *cams, *lights;
     MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
     MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
-    size_t nx = mote__array_len(cams) + mote__array_len(lights);
+    size_t nx = mote__array_len(cams) + mote__array_len(lights) + nh;
     if (nx > ld->lim.max_meshes - (nm + nt + ni))
         nx = ld->lim.max_meshes - (nm + nt + ni);
     ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni + nx, sizeof *ld->nodes);
@@ -1595,6 +1747,13 @@ static R mote__nodes(mote__ld *ld)
             in->material_id = nd->material_id;
             in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
+            /* InstancedMesh's constructor: setPivotMatrix(source's matrix),
+             * with the default postMultiplyPivotMatrix, so an instance
+             * undoes even a localMatrix (a pre-transform of its source) */
+            memcpy(in->matrix, nd->matrix, sizeof in->matrix);
+            in->has_matrix = nd->has_matrix;
+            in->matrix_name = nd->matrix_undone ? "source's pivotMatrix" : "source's localMatrix";
+            in->matrix_undone = true;
             mote__share_arrays(in, nd);
             in->subs = nd->subs;
             in->sub_count = nd->sub_count;
@@ -1629,9 +1788,9 @@ static R mote__light_type(mote__ld *ld, const cJSON *l, const char *at, uint32_t
  * id (Babylon.js gives a node without an id its name); NULL: neither. */
 static const char *mote__entry_key(const cJSON *e)
 {
-    const cJSON *id = cJSON_GetObjectItemCaseSensitive(e, "id");
+    const cJSON *id = mote__member(e, "id");
     if (!cJSON_IsString(id))
-        id = cJSON_GetObjectItemCaseSensitive(e, "name");
+        id = mote__member(e, "name");
     return cJSON_IsString(id) ? id->valuestring : NULL;
 }
 
@@ -1676,6 +1835,27 @@ static R mote__xlists(mote__ld *ld)
     return MOTE_OK;
 }
 
+/* A camera's turn: its rotation, or its rotationQuaternion (*use_quat)
+ * when it has one, mirrored in a right-handed scene. Without a rotation,
+ * TargetCamera's default: none, but in a right-handed scene a half turn
+ * about y, which keeps such a camera looking down +z (its forward is -z
+ * there) as Babylon.js's cameras did before they looked down -z. */
+static R mote__camera_turn(mote__ld *ld, const cJSON *cam, const char *at, float rotation[3],
+                           float quat[4], bool *use_quat)
+{
+    memset(rotation, 0, 3 * sizeof *rotation);
+    if (ld->right_handed && !mote__get(cam, "rotation"))
+        rotation[1] = 3.14159265f;
+    MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, rotation));
+    quat[0] = quat[1] = quat[2] = 0.0f;
+    quat[3] = 1.0f;
+    MOTE__TRY(mote__vec(ld, cam, "rotationQuaternion", at, 4, 0, quat));
+    *use_quat = mote__get(cam, "rotationQuaternion") != NULL;
+    if (ld->right_handed)
+        mote__mirror_rotation(rotation, quat);
+    return MOTE_OK;
+}
+
 /* The node standing for cameras[k] (list 0) or lights[k] (list 1), at
  * `where`, made on first use: in Babylon.js cameras and lights are nodes, so they may be parents
  * and have parents. It goes at the end of ld->nodes with no id in the node
@@ -1712,10 +1892,13 @@ static R mote__xnode(mote__ld *ld, int list, int k, const char *where, int *out)
         }
     } else {
         MOTE__TRY(mote__node_common(ld, json, where, nd));
+        MOTE__TRY(mote__camera_turn(ld, json, where, nd->rotation, nd->quat, &nd->use_quat));
         float target[3];
         if (mote__get(json, "target")) {
             /* setTarget: yaw and pitch that turn +z toward the target, no roll */
             MOTE__TRY(mote__vec(ld, json, "target", where, 3, 0, target));
+            if (ld->right_handed)
+                mote__mirror_point(target);
             float d[3] = {target[0] - nd->position[0], target[1] - nd->position[1],
                           target[2] - nd->position[2]};
             nd->rotation[0] = atan2f(-d[1], sqrtf(d[0] * d[0] + d[2] * d[2]));
@@ -1807,6 +1990,299 @@ static R mote__camera_light_nodes(mote__ld *ld)
     return MOTE_OK;
 }
 
+/* ---- pivot and local matrices ----------------------------------------- */
+
+/* translate(position) * rotate * scale(scaling) as the core makes a mesh's
+ * (mote_mesh_world_matrix, no parent); NULL position: none, NULL scaling:
+ * 1. */
+static void mote__transform_matrix(const float position[3], const float rotation[3],
+                                   const float quat[4], bool use_quat, const float scaling[3],
+                                   float w[16])
+{
+    mote_mesh m;
+    memset(&m, 0, sizeof m);
+    if (position)
+        memcpy(m.position, position, sizeof m.position);
+    memcpy(m.rotation, rotation, sizeof m.rotation);
+    memcpy(m.rotation_quaternion, quat, sizeof m.rotation_quaternion);
+    m.use_quaternion = use_quat;
+    if (scaling)
+        memcpy(m.scaling, scaling, sizeof m.scaling);
+    mote_mesh_world_matrix(&m, w);
+}
+
+/* out = a b, column-major 4x4 (out may be a or b). */
+static void mote__mul4(const double a[16], const double b[16], double out[16])
+{
+    double r[16];
+    for (int c = 0; c < 4; c++)
+        for (int row = 0; row < 4; row++) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; k++)
+                sum += a[k * 4 + row] * b[c * 4 + k];
+            r[c * 4 + row] = sum;
+        }
+    memcpy(out, r, sizeof r);
+}
+
+/* The inverse of the affine m; false when it has none. The 3x3 part's
+ * inverse is its adjugate over the determinant (cofactors with indices
+ * taken cyclically carry their own signs), the translation -inverse t. */
+static bool mote__affine_inverse(const double m[16], double out[16])
+{
+#define M(r, c) m[(c) * 4 + (r)]
+    double cof[3][3];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+            cof[r][c] = M(r1, c1) * M(r2, c2) - M(r1, c2) * M(r2, c1);
+        }
+    double det = M(0, 0) * cof[0][0] + M(0, 1) * cof[0][1] + M(0, 2) * cof[0][2];
+    if (!(fabs(det) > 0.0) || !isfinite(1.0 / det))
+        return false;
+    memset(out, 0, 16 * sizeof *out);
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++)
+            out[c * 4 + r] = cof[c][r] / det;
+        out[12 + r] = -(out[r] * M(0, 3) + out[4 + r] * M(1, 3) + out[8 + r] * M(2, 3));
+    }
+    out[15] = 1.0;
+#undef M
+    return true;
+}
+
+/* Eigenvalues w and eigenvectors (the columns of v, a rotation) of the
+ * symmetric a, by cyclic Jacobi rotations (each zeroes one off-diagonal
+ * element; a few sweeps leave them at rounding). a is consumed. */
+static void mote__symmetric_eigen3(double a[3][3], double w[3], double v[3][3])
+{
+    static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    memset(v, 0, 9 * sizeof **v);
+    v[0][0] = v[1][1] = v[2][2] = 1.0;
+    for (int sweep = 0; sweep < 50; sweep++) {
+        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+        if (!(off > 1e-32 * diag))
+            break;
+        for (int k = 0; k < 3; k++) {
+            int p = pairs[k][0], q = pairs[k][1];
+            if (a[p][q] == 0.0)
+                continue;
+            /* the rotation J in the (p, q) plane with (J^T a J)[p][q] = 0 */
+            double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+            double t = (theta >= 0.0 ? 1.0 : -1.0) / (fabs(theta) + sqrt(theta * theta + 1.0));
+            double c = 1.0 / sqrt(t * t + 1.0), s = t * c;
+            for (int i = 0; i < 3; i++) {   /* a J, and v J */
+                double aip = a[i][p], aiq = a[i][q], vip = v[i][p], viq = v[i][q];
+                a[i][p] = c * aip - s * aiq;
+                a[i][q] = s * aip + c * aiq;
+                v[i][p] = c * vip - s * viq;
+                v[i][q] = s * vip + c * viq;
+            }
+            for (int j = 0; j < 3; j++) {   /* J^T (a J) */
+                double apj = a[p][j], aqj = a[q][j];
+                a[p][j] = c * apj - s * aqj;
+                a[q][j] = s * apj + c * aqj;
+            }
+        }
+    }
+    for (int i = 0; i < 3; i++)
+        w[i] = a[i][i];
+}
+
+static void mote__cross3d(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* a = U diag(sigma) V^T, U and V rotations, given as the arrays
+ * mote__rotation_quat takes for U and for V^T: ut, whose rows are U's
+ * columns, and v, whose rows are V^T's. V holds the eigenvectors of a^T a,
+ * sigma the roots of its eigenvalues, U's columns a V / sigma; a negative
+ * sigma where a mirrors. A sigma of 0 (a flattened axis) gets a U column
+ * that completes the rotation. */
+static void mote__svd3(double a[3][3], double ut[3][3], double sigma[3], double v[3][3])
+{
+    double ata[3][3], most = 0.0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            ata[i][j] = a[0][i] * a[0][j] + a[1][i] * a[1][j] + a[2][i] * a[2][j];
+    /* columns of a orthogonal but for float rounding (the cosine of their
+     * angle within 1e-6) are taken as orthogonal: V stays the identity,
+     * where rounding would turn it as it pleases between equal sigmas */
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (fabs(ata[i][j]) <= 1e-6 * sqrt(ata[i][i] * ata[j][j]))
+                ata[i][j] = ata[j][i] = 0.0;
+    mote__symmetric_eigen3(ata, sigma, v);
+    for (int j = 0; j < 3; j++) {
+        sigma[j] = sigma[j] > 0.0 ? sqrt(sigma[j]) : 0.0;
+        most = sigma[j] > most ? sigma[j] : most;
+    }
+    int flat = 0, kept = 0;
+    for (int j = 0; j < 3; j++) {
+        if (!(sigma[j] > 1e-12 * most)) {
+            flat++;
+            memset(ut[j], 0, sizeof ut[j]);
+            continue;
+        }
+        kept = j;
+        for (int i = 0; i < 3; i++)
+            ut[j][i] = (a[i][0] * v[0][j] + a[i][1] * v[1][j] + a[i][2] * v[2][j]) / sigma[j];
+    }
+    if (flat == 3) {
+        memset(ut, 0, 9 * sizeof **ut);
+        ut[0][0] = ut[1][1] = ut[2][2] = 1.0;
+    } else if (flat == 2) {
+        /* the one kept column, then any unit vector across it */
+        int j1 = (kept + 1) % 3, j2 = (kept + 2) % 3, axis = 0;
+        for (int i = 1; i < 3; i++)
+            if (fabs(ut[kept][i]) < fabs(ut[kept][axis]))
+                axis = i;
+        double e[3] = {0.0, 0.0, 0.0};
+        e[axis] = 1.0;
+        mote__cross3d(ut[kept], e, ut[j1]);
+        double len = sqrt(ut[j1][0] * ut[j1][0] + ut[j1][1] * ut[j1][1] + ut[j1][2] * ut[j1][2]);
+        for (int i = 0; i < 3; i++)
+            ut[j1][i] /= len;
+        mote__cross3d(ut[kept], ut[j1], ut[j2]);
+    } else if (flat == 1) {
+        for (int j = 0; j < 3; j++)
+            if (!(sigma[j] > 1e-12 * most))
+                mote__cross3d(ut[(j + 1) % 3], ut[(j + 2) % 3], ut[j]);
+    }
+    double c[3];
+    mote__cross3d(ut[1], ut[2], c);
+    if (ut[0][0] * c[0] + ut[0][1] * c[1] + ut[0][2] * c[2] < 0.0) {
+        /* a mirrors: the core's transform takes it as a negative scale */
+        sigma[0] = -sigma[0];
+        for (int i = 0; i < 3; i++)
+            ut[0][i] = -ut[0][i];
+    }
+}
+
+/* The quaternion (x, y, z, w) of the rotation whose columns are the rows
+ * of rt (Shepperd's method: divides by the largest of 4w^2, 4x^2, 4y^2,
+ * 4z^2). */
+static void mote__rotation_quat(double rt[3][3], float q[4])
+{
+#define R(i, j) rt[j][i]
+    double tr = R(0, 0) + R(1, 1) + R(2, 2), x, y, z, w, s;
+    if (tr > 0.0) {
+        s = 2.0 * sqrt(tr + 1.0);
+        w = 0.25 * s;
+        x = (R(2, 1) - R(1, 2)) / s;
+        y = (R(0, 2) - R(2, 0)) / s;
+        z = (R(1, 0) - R(0, 1)) / s;
+    } else if (R(0, 0) > R(1, 1) && R(0, 0) > R(2, 2)) {
+        s = 2.0 * sqrt(1.0 + R(0, 0) - R(1, 1) - R(2, 2));
+        w = (R(2, 1) - R(1, 2)) / s;
+        x = 0.25 * s;
+        y = (R(0, 1) + R(1, 0)) / s;
+        z = (R(0, 2) + R(2, 0)) / s;
+    } else if (R(1, 1) > R(2, 2)) {
+        s = 2.0 * sqrt(1.0 + R(1, 1) - R(0, 0) - R(2, 2));
+        w = (R(0, 2) - R(2, 0)) / s;
+        x = (R(0, 1) + R(1, 0)) / s;
+        y = 0.25 * s;
+        z = (R(1, 2) + R(2, 1)) / s;
+    } else {
+        s = 2.0 * sqrt(1.0 + R(2, 2) - R(0, 0) - R(1, 1));
+        w = (R(1, 0) - R(0, 1)) / s;
+        x = (R(0, 2) + R(2, 0)) / s;
+        y = (R(1, 2) + R(2, 1)) / s;
+        z = 0.25 * s;
+    }
+#undef R
+    q[0] = (float)x;
+    q[1] = (float)y;
+    q[2] = (float)z;
+    q[3] = (float)w;
+}
+
+/* A node's transform set to a turn, scale and position (the scale of a
+ * flattened node never all 0, which the core reads as 1). */
+static void mote__set_transform(mote__node *nd, const double position[3], double rt[3][3],
+                                const double scaling[3])
+{
+    for (int k = 0; k < 3; k++) {
+        nd->position[k] = (float)position[k];
+        nd->scaling[k] = (float)scaling[k];
+        nd->rotation[k] = 0.0f;
+    }
+    if (nd->scaling[0] == 0.0f && nd->scaling[1] == 0.0f && nd->scaling[2] == 0.0f)
+        nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1e-30f;
+    mote__rotation_quat(rt, nd->quat);
+    nd->use_quat = true;
+}
+
+/* nodes[index]'s localMatrix or pivotMatrix P folded into its transform.
+ * Its local matrix, as Babylon.js's TransformNode.computeWorldMatrix
+ * composes it (in mote's column vectors; Babylon.js's row-vector product
+ * P S R [P^-1], then the position added), is L = T R S P for a
+ * pre-transform and L = T P^-1 R S P for a pivot. The core's transforms
+ * are T R S only: L = T U S' V^T (mote__svd3) is one when V^T is the
+ * identity (L has no shear: the common case, a pivot that only moves, or
+ * turns with an even scale); else a hidden helper node takes T U S', in
+ * the node's place under its parent, and the node keeps only the turn V^T.
+ * Either way its vertices and children land where Babylon.js puts them
+ * (normals too: the core's normal matrix is the chain's inverse transpose),
+ * and no vertex array, perhaps shared, is touched. */
+static R mote__fold_matrix(mote__ld *ld, int index)
+{
+    mote__node *nd = &ld->nodes[index];
+    float f[16];
+    double l[16], p[16], undo[16];
+    mote__transform_matrix(nd->position, nd->rotation, nd->quat, nd->use_quat, nd->scaling, f);
+    for (int k = 0; k < 16; k++) {
+        l[k] = f[k];
+        p[k] = nd->matrix[k];
+    }
+    if (nd->matrix_undone) {
+        /* T P^-1 (R S) P: the position taken out, put back last */
+        if (!mote__affine_inverse(p, undo))
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: its %s is not invertible (as a pivot "
+                              "it is undone by its inverse)", nd->where, nd->matrix_name);
+        double position[3] = {l[12], l[13], l[14]};
+        l[12] = l[13] = l[14] = 0.0;
+        mote__mul4(undo, l, l);
+        for (int k = 0; k < 3; k++)
+            l[12 + k] += position[k];
+    }
+    mote__mul4(l, p, l);
+    double a[3][3], ut[3][3], sigma[3], v[3][3];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            a[r][c] = l[c * 4 + r];
+    mote__svd3(a, ut, sigma, v);
+    bool sheared = false;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            sheared = sheared || fabs(v[r][c] - (r == c ? 1.0 : 0.0)) > 1e-6;
+    if (!sheared) {
+        mote__set_transform(nd, &l[12], ut, sigma);
+        return MOTE_OK;
+    }
+    if (ld->node_count >= ld->node_cap)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than the limit of %u meshes (nodes "
+                          "with a sheared pivot or local matrix take two)", nd->where,
+                          (unsigned)ld->lim.max_meshes);
+    int h = ld->node_count++;
+    mote__node *helper = &ld->nodes[h];
+    memcpy(helper->where, nd->where, sizeof helper->where);
+    helper->parent = nd->parent;
+    helper->parent_id = nd->parent_id;   /* for messages: it stands in the node's place */
+    helper->parent_instance = -1;
+    helper->invisible = true;
+    mote__set_transform(helper, &l[12], ut, sigma);
+    static const double origin[3] = {0.0, 0.0, 0.0}, unit[3] = {1.0, 1.0, 1.0};
+    mote__set_transform(nd, origin, v, unit);
+    nd->parent = h;
+    return MOTE_OK;
+}
+
 /* parentId -> node index; then every chain must end (no cycle) within the
  * depth the core follows. */
 static R mote__parents(mote__ld *ld)
@@ -1849,6 +2325,10 @@ static R mote__parents(mote__ld *ld)
                               p->instance_count);
         nd->parent = p->first_instance + nd->parent_instance;
     }
+    /* the matrices, now that the parents are known (helpers take them) */
+    for (int i = 0, n = ld->node_count; i < n; i++)
+        if (ld->nodes[i].has_matrix)
+            MOTE__TRY(mote__fold_matrix(ld, i));
     for (int i = 0; i < ld->node_count; i++) {
         /* walk up marking the path; meeting the path again is a cycle */
         int j = i;
@@ -1988,7 +2468,9 @@ static R mote__build_meshes(mote__ld *ld)
             m->index_count = nd->ni;
             uint32_t material_index = 0;
             if (nd->sub_count > 0) {
-                m->indices = nd->idx ? nd->idx + nd->subs[s].index_start : NULL;
+                m->indices = nd->subs[s].own_indices ? nd->subs[s].own_indices
+                             : nd->idx                ? nd->idx + nd->subs[s].index_start
+                                                      : NULL;
                 m->index_count = nd->subs[s].index_count;
                 material_index = nd->subs[s].material_index;
             }
@@ -2065,13 +2547,8 @@ static void mote__transform(const float w[16], float p[3], bool point)
 static void mote__forward(const float rotation[3], const float quat[4], bool use_quat,
                           float out[3])
 {
-    mote_mesh turn;
-    memset(&turn, 0, sizeof turn);
-    memcpy(turn.rotation, rotation, sizeof turn.rotation);
-    memcpy(turn.rotation_quaternion, quat, sizeof turn.rotation_quaternion);
-    turn.use_quaternion = use_quat;
     float w[16];
-    mote_mesh_world_matrix(&turn, w);
+    mote__transform_matrix(NULL, rotation, quat, use_quat, NULL, w);
     memcpy(out, &w[8], 3 * sizeof *out);
 }
 
@@ -2091,6 +2568,8 @@ static R mote__camera(mote__ld *ld)
     mote_camera *c = &ld->scene->camera;
     memset(c, 0, sizeof *c);
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
+    if (ld->right_handed)
+        mote__mirror_point(c->position);
     const char *locked;
     MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
     int target_node = mote__idmap_find_last(ld->node_map, locked);
@@ -2104,18 +2583,21 @@ static R mote__camera(mote__ld *ld)
         memcpy(c->target, &w[12], sizeof c->target);
     } else if (mote__get(cam, "target")) {
         MOTE__TRY(mote__vec(ld, cam, "target", at, 3, 0, c->target));
+        if (ld->right_handed)
+            mote__mirror_point(c->target);
     } else {
         /* target = position + forward (+z) turned by the rotation (yaw,
          * pitch, roll; rotationQuaternion overrides it), as meshes turn */
-        float rotation[3] = {0, 0, 0}, quat[4] = {0, 0, 0, 1}, fwd[3];
-        MOTE__TRY(mote__vec(ld, cam, "rotation", at, 3, 0, rotation));
-        bool use_quat = mote__get(cam, "rotationQuaternion") != NULL;
-        MOTE__TRY(mote__vec(ld, cam, "rotationQuaternion", at, 4, 0, quat));
+        float rotation[3], quat[4], fwd[3];
+        bool use_quat;
+        MOTE__TRY(mote__camera_turn(ld, cam, at, rotation, quat, &use_quat));
         mote__forward(rotation, quat, use_quat, fwd);
         for (int k = 0; k < 3; k++)
             c->target[k] = c->position[k] + fwd[k];
     }
     MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
+    if (ld->right_handed)
+        mote__mirror_point(c->up);
     /* Babylon.js's Camera defaults */
     c->fov = 0.8f;
     c->znear = 1.0f;
@@ -2210,6 +2692,10 @@ static R mote__lights(mote__ld *ld)
                 memcpy(L.direction, data, sizeof data);
             MOTE__TRY(mote__vec(ld, l, "direction", at, 3, 0, L.direction));
             MOTE__TRY(mote__vec(ld, l, "groundColor", at, 3, 0, L.ground_color));
+        }
+        if (ld->right_handed) {
+            mote__mirror_point(L.position);
+            mote__mirror_point(L.direction);
         }
         float color[3] = {1, 1, 1}, intensity = 1.0f;
         MOTE__TRY(mote__vec(ld, l, "diffuse", at, 3, 0, color));
@@ -2345,12 +2831,10 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     cJSON *root;
     MOTE__TRY(mote__parse(ld, json, size, &root));
     ld->root = root;
-    /* Babylon.js draws such a scene right-handed; mote draws every scene
-     * left-handed, so the image is mirrored */
-    if (cJSON_IsTrue(mote__get(root, "useRightHandedSystem")))
-        mote__warn(ld, "useRightHandedSystem is not read: the image is mirrored from "
-                   "Babylon.js's");
-    R r = mote__materials(ld);
+    /* a right-handed scene is loaded mirrored (mote__mirror_point) */
+    R r = mote__flag(ld, root, "useRightHandedSystem", "scene", &ld->right_handed);
+    ld->scene->mirrored_z = ld->right_handed;
+    if (r == MOTE_OK) r = mote__materials(ld);
     if (r == MOTE_OK) r = mote__multi_materials(ld);
     if (r == MOTE_OK) r = mote__nodes(ld);
     if (r == MOTE_OK) r = mote__camera_light_nodes(ld);

@@ -1,0 +1,88 @@
+#!/bin/sh
+# mote-render's options, checked on what the tool writes and says: each case
+# runs it on a small scene written here and looks at its exit status, its
+# messages and the pixels of the PPM it wrote. Ends with a Unity-style line
+# "N Tests F Failures I Ignored" for tests/run.sh.
+#
+#   BIN=build/bin sh tests/tools/mote_render.sh      (make test does this)
+set -u
+R=${BIN:-build/bin}/mote-render
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT INT TERM
+tests=0; failures=0
+
+pass() { tests=$((tests + 1)); echo "tests/tools/mote_render.sh:0:$1:PASS"; }
+fail() { tests=$((tests + 1)); failures=$((failures + 1)); echo "tests/tools/mote_render.sh:0:$1:FAIL: $2"; }
+
+# pixel FILE X Y: "r g b" of a binary PPM (P6) as mote writes it: a
+# three-line header "P6", "W H", "255", then rows of RGB
+pixel() {
+    w=$(sed -n 2p "$1" | cut -d' ' -f1)
+    header=$(head -n 3 "$1" | wc -c)
+    od -An -tu1 -j $((header + ($3 * w + $2) * 3)) -N3 "$1" | tr -s ' ' | sed 's/^ //'
+}
+
+# ---- --camera in a right-handed scene ---------------------------------------
+# A right-handed scene is loaded mirrored in z; --camera is given in the
+# file's coordinates and mirrored with it. A red quad at x = +2 seen from
+# (0, 0, 5): Babylon.js's LookAtRH puts it in the right half.
+cat >"$tmp/rh.babylon" <<'JSON'
+{"useRightHandedSystem":true,
+ "materials":[{"id":"red","diffuse":[1,0,0],"backFaceCulling":false}],
+ "lights":[{"type":3,"id":"sky","direction":[0,0,1],"groundColor":[1,1,1]}],
+ "meshes":[{"id":"q","materialId":"red","position":[2,0,0],
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0, -1,1,0],"normals":[0,0,1, 0,0,1, 0,0,1, 0,0,1],
+  "indices":[0,2,1, 0,3,2]}]}
+JSON
+name=camera_should_be_read_in_a_right_handed_files_coordinates
+if "$R" "$tmp/rh.babylon" -o "$tmp/rh.ppm" --size 32x16 --camera 0,0,5:0,0,0 --threads 1 \
+        >"$tmp/out" 2>&1; then
+    right=$(pixel "$tmp/rh.ppm" 24 8); left=$(pixel "$tmp/rh.ppm" 8 8)
+    if [ "${right%% *}" -gt 0 ] && [ "$left" = "0 0 0" ]; then
+        pass $name
+    else
+        fail $name "expected red on the right and black on the left, got \"$right\" and \"$left\""
+    fi
+else
+    fail $name "exit status $?: $(cat "$tmp/out")"
+fi
+
+# ---- --allow-missing-textures ---------------------------------------------------
+# A red material whose texture file is not there: the load fails, naming the
+# file; with --allow-missing-textures the quad is drawn in the material's
+# red (no texture to modulate it), with the loader's warning.
+cat >"$tmp/missing.babylon" <<'JSON'
+{"materials":[{"id":"red","diffuse":[1,0,0],"diffuseTexture":{"name":"no-such-image.png"}}],
+ "cameras":[{"id":"c","position":[0,0,-3],"target":[0,0,0]}],
+ "lights":[{"type":3,"id":"sky","direction":[0,0,-1],"groundColor":[1,1,1]}],
+ "meshes":[{"id":"q","materialId":"red",
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0, -1,1,0],"normals":[0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1],
+  "uvs":[0,0, 1,0, 1,1, 0,1],"indices":[0,1,2, 0,2,3]}]}
+JSON
+name=a_missing_texture_should_fail_the_load_by_default
+if "$R" "$tmp/missing.babylon" -o "$tmp/missing.ppm" --size 16x16 --threads 1 >"$tmp/out" 2>&1; then
+    fail $name "exit status 0, expected an error"
+elif ! grep -q "no-such-image.png" "$tmp/out"; then
+    fail $name "the message does not name the file: $(cat "$tmp/out")"
+else
+    pass $name
+fi
+name=allow_missing_textures_should_draw_the_material_colour_with_a_warning
+if "$R" "$tmp/missing.babylon" -o "$tmp/missing.ppm" --size 16x16 --threads 1 \
+        --allow-missing-textures >"$tmp/out" 2>&1; then
+    centre=$(pixel "$tmp/missing.ppm" 8 8)
+    if ! grep -q "warning: .*no-such-image.png.*(drawn untextured)" "$tmp/out"; then
+        fail $name "no warning naming the file: $(cat "$tmp/out")"
+    elif [ "$centre" != "255 0 0" ]; then
+        fail $name "the centre pixel is \"$centre\", expected the material's \"255 0 0\""
+    else
+        pass $name
+    fi
+else
+    fail $name "exit status $?: $(cat "$tmp/out")"
+fi
+
+echo
+echo "-----------------------"
+echo "$tests Tests $failures Failures 0 Ignored"
+[ "$failures" -eq 0 ]
