@@ -274,6 +274,50 @@ void right_handed_scene_should_flip_unindexed_triangles_of_every_sub_mesh(void)
     mote_scene_free(&s);
 }
 
+/* Sub-meshes that start at the same vertex modulo 3 share one flipped run
+ * of the node's: a copy each grew as sub-meshes x vertices (a 2 MB file of
+ * 2,000 sub-meshes over 300,000 vertices took 2.4 GB). */
+void unindexed_sub_meshes_of_a_right_handed_scene_should_share_their_runs(void)
+{
+    mote_scene s;
+    load_json("{\"useRightHandedSystem\":true,\"meshes\":[{\"id\":\"u\",\"isUnIndexed\":true,"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0, 1,1,0, 2,0,0, 2,1,0, 3,0,0, 3,1,0, 4,0,0],"
+              "\"subMeshes\":[{\"materialIndex\":0,\"verticesStart\":1,\"verticesCount\":6},"
+              "{\"materialIndex\":0,\"verticesStart\":4,\"verticesCount\":3},"
+              "{\"materialIndex\":0,\"verticesStart\":2,\"verticesCount\":6},"
+              "{\"materialIndex\":0,\"verticesStart\":5,\"verticesCount\":3}]}]}",
+              &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
+    static const uint32_t from1[6] = {1, 3, 2, 4, 6, 5}, from4[3] = {4, 6, 5}, from2[6] = {2, 4, 3, 5, 7, 6},
+                          from5[3] = {5, 7, 6};
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(from1, s.meshes[0].indices, 6);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(from4, s.meshes[1].indices, 3);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(from2, s.meshes[2].indices, 6);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(from5, s.meshes[3].indices, 3);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].indices + 3, s.meshes[1].indices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[2].indices + 3, s.meshes[3].indices);
+    mote_scene_free(&s);
+}
+
+/* Messages name an index where the file has it, though a right-handed
+ * scene's triangles are flipped as they are read. */
+void an_index_out_of_range_should_be_named_where_the_file_has_it(void)
+{
+    static const char *const files[2] = {
+        "{\"useRightHandedSystem\":true,\"meshes\":[{\"id\":\"a\",\"positions\":[0,0,0,1,0,0,0,1,0],"
+        "\"indices\":[0,1,9]}]}",
+        "{\"useRightHandedSystem\":true,\"meshes\":[{\"id\":\"a\",\"positions\":[0,0,0,1,0,0,0,1,0],"
+        "\"indices\":[0,1,2, 2,7,0]}]}"};
+    static const char *const expected[2] = {"t: meshes[0].indices[2]: 9 is out of range (3 vertices)",
+                                            "t: meshes[0].indices[4]: 7 is out of range (3 vertices)"};
+    for (int i = 0; i < 2; i++) {
+        mote_scene s;
+        TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote_scene_load_memory(files[i], strlen(files[i]), "t", NULL, NULL,
+                                                                 &s, msg, sizeof msg));
+        TEST_ASSERT_EQUAL_STRING(expected[i], msg);
+    }
+}
+
 /* ---- pivotMatrix and localMatrix --------------------------------------- */
 
 /* The world position of mesh m's vertex v. */
@@ -471,6 +515,26 @@ void loader_should_count_helper_nodes_against_the_mesh_limit(void)
     TEST_ASSERT_EQUAL(0, s.mesh_count);
 }
 
+/* A chain deeper than MOTE_MAX_PARENTS only by the hidden helpers of its
+ * sheared matrices says so. */
+void a_chain_too_deep_by_its_helpers_should_say_why(void)
+{
+    enum { N = MOTE_MAX_PARENTS / 2 + 2 };
+    static const char sheared[] = "\"scaling\":[2,1,1],\"pivotMatrix\":[0.6,0.8,0,0, -1.6,1.2,0,0, 0,0,1,0, 0,1,0,1]";
+    static char json[N * 160];
+    size_t at = (size_t)snprintf(json, sizeof json, "{\"meshes\":[{\"id\":\"n0\",%s}", sheared);
+    for (int i = 1; i < N; i++)
+        at += (size_t)snprintf(json + at, sizeof json - at, ",{\"id\":\"n%d\",\"parentId\":\"n%d\",%s}", i,
+                               i - 1, sheared);
+    snprintf(json + at, sizeof json - at, "]}");
+    mote_scene s;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_scene_load_memory(json, strlen(json), "t", NULL, NULL, &s, msg,
+                                                             sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "parents (MOTE_MAX_PARENTS), counting one for each sheared "
+                                             "pivotMatrix or localMatrix above it"),
+                                 msg);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -478,9 +542,12 @@ int main(void)
     RUN_TEST(right_handed_scene_should_put_plus_x_where_babylon_does);
     RUN_TEST(right_handed_scene_should_keep_its_front_faces_front);
     RUN_TEST(right_handed_scene_should_flip_unindexed_triangles_of_every_sub_mesh);
+    RUN_TEST(unindexed_sub_meshes_of_a_right_handed_scene_should_share_their_runs);
+    RUN_TEST(an_index_out_of_range_should_be_named_where_the_file_has_it);
     RUN_TEST(loader_should_apply_pivot_and_local_matrices_as_babylon_does);
     RUN_TEST(loader_should_fold_a_pivot_without_shear_into_the_node_alone);
     RUN_TEST(loader_should_light_a_sheared_mesh_by_its_turned_normals);
     RUN_TEST(loader_should_count_helper_nodes_against_the_mesh_limit);
+    RUN_TEST(a_chain_too_deep_by_its_helpers_should_say_why);
     return UNITY_END();
 }

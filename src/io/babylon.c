@@ -145,7 +145,8 @@ typedef struct mote__sub {
     uint32_t material_index;
     /* its own triangles, or NULL: the node's from index_start. An
      * unindexed sub-mesh of a right-handed scene starting inside one of
-     * the node's flipped triangles needs its own (mote__submeshes) */
+     * the node's flipped triangles takes them from the node's run that
+     * starts where it does, modulo 3 (mote__submeshes) */
     uint32_t *own_indices;
 } mote__sub;
 
@@ -174,6 +175,7 @@ typedef struct mote__node {
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
+    bool is_helper;               /* a sheared matrix's hidden stand-in (mote__fold_matrix) */
     mote_vertex *verts;
     uint32_t nv;
     /* uvs2, 2 floats per vertex, in the temporary store; read only when a
@@ -187,6 +189,9 @@ typedef struct mote__node {
     struct mote__node *arrays;    /* the node whose arrays this one shares, or NULL */
     mote_rgba *colors;            /* one per vertex, or NULL */
     uint32_t *idx;
+    /* unindexed, right-handed: the flipped sequential runs from vertex 1
+     * and 2, made for the sub-meshes that start there (modulo 3) */
+    uint32_t *shifted_runs[2];
     uint32_t ni;
     mote__sub *subs;
     int sub_count;
@@ -1158,9 +1163,15 @@ static R mote__indices(mote__ld *ld, const cJSON *arr, const char *at, mote__nod
 static R mote__check_indices(mote__ld *ld, const char *at, const mote__node *nd)
 {
     for (uint32_t k = 0; k < nd->ni; k++)
-        if (nd->idx[k] >= nd->nv)
+        if (nd->idx[k] >= nd->nv) {
+            /* where the file has it: a right-handed scene's triangles are
+             * flipped already (mote__flip_winding swaps corners 1 and 2) */
+            uint32_t in_file = k;
+            if (ld->right_handed && k % 3 && k - k % 3 + 2 < nd->ni)
+                in_file = k % 3 == 1 ? k + 1 : k - 1;
             return mote__fail(ld, MOTE_ERR_RANGE, "%s[%u]: %u is out of range (%u vertices)",
-                              at, (unsigned)k, (unsigned)nd->idx[k], (unsigned)nd->nv);
+                              at, (unsigned)in_file, (unsigned)nd->idx[k], (unsigned)nd->nv);
+        }
     return MOTE_OK;
 }
 
@@ -1485,10 +1496,16 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
             nd->subs[k].index_start = v[1];
             nd->subs[k].index_count = v[2] - v[2] % 3;
             if (ld->right_handed && v[1] % 3) {
-                nd->subs[k].own_indices = mote__store_alloc(ld->keep, v[2], sizeof(uint32_t));
-                if (!nd->subs[k].own_indices)
-                    return mote__oom(ld, at);
-                mote__sequential_run(ld, nd->subs[k].own_indices, v[1], v[2]);
+                /* one run per start modulo 3, shared: a copy per
+                 * sub-mesh grew as sub-meshes x vertices */
+                uint32_t r = v[1] % 3, **run = &nd->shifted_runs[r - 1];
+                if (!*run) {
+                    *run = mote__store_alloc(ld->keep, nd->nv - r, sizeof(uint32_t));
+                    if (!*run)
+                        return mote__oom(ld, at);
+                    mote__sequential_run(ld, *run, r, nd->nv - r);
+                }
+                nd->subs[k].own_indices = *run + (v[1] - r);
             }
             continue;
         }
@@ -1569,8 +1586,10 @@ static bool mote__absent_or_identity(const cJSON *obj, const char *key)
     return k == 16;
 }
 
-/* Whether a mesh or transform node has a matrix mote__read_matrix keeps
- * (one it refuses fails the load anyway): room for a helper node. */
+/* Whether a mesh or transform node may have a matrix mote__read_matrix
+ * keeps: room for a helper node, counted generously (an identity
+ * localMatrix beside a pivotMatrix counts, though neither is kept; one it
+ * refuses fails the load anyway). */
 static bool mote__may_have_matrix(const cJSON *node)
 {
     return !mote__absent_or_identity(node, "localMatrix") ||
@@ -2276,6 +2295,7 @@ static R mote__fold_matrix(mote__ld *ld, int index)
     helper->parent_id = nd->parent_id;   /* for messages: it stands in the node's place */
     helper->parent_instance = -1;
     helper->invisible = true;
+    helper->is_helper = true;
     mote__set_transform(helper, &l[12], ut, sigma);
     static const double origin[3] = {0.0, 0.0, 0.0}, unit[3] = {1.0, 1.0, 1.0};
     mote__set_transform(nd, origin, v, unit);
@@ -2342,13 +2362,18 @@ static R mote__parents(mote__ld *ld)
         for (j = i; j >= 0 && ld->nodes[j].state == 1; j = ld->nodes[j].parent)
             ld->nodes[j].state = 2;
     }
-    /* the core follows at most MOTE_MAX_PARENTS parents */
+    /* the core follows at most MOTE_MAX_PARENTS parents, hidden helpers
+     * (mote__fold_matrix) among them */
     for (int i = 0; i < ld->node_count; i++) {
-        int depth = 0;
-        for (int j = ld->nodes[i].parent; j >= 0; j = ld->nodes[j].parent)
+        int depth = 0, helpers = 0;
+        for (int j = ld->nodes[i].parent; j >= 0; j = ld->nodes[j].parent) {
+            helpers += ld->nodes[j].is_helper;
             if (++depth > MOTE_MAX_PARENTS)
-                return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than %d parents (MOTE_MAX_PARENTS)",
-                                  ld->nodes[i].where, MOTE_MAX_PARENTS);
+                return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than %d parents (MOTE_MAX_PARENTS)%s",
+                                  ld->nodes[i].where, MOTE_MAX_PARENTS,
+                                  helpers ? ", counting one for each sheared pivotMatrix or localMatrix above it"
+                                          : "");
+        }
     }
     return MOTE_OK;
 }
