@@ -196,7 +196,7 @@ extern "C" {
  *                         ~0.2 KB  mote_mesh.colors (mote_draw refuses any
  *                                  draw of a mesh that has them)
  *   MOTE_ENABLE_LIGHT_FALLOFF
- *                         ~0.7 KB  MOTE_LIGHT_SPOT and mote_light.range;
+ *                         ~0.8 KB  MOTE_LIGHT_SPOT and mote_light.range;
  *                                  the one exception to the rule above:
  *                                  left out, a spot light lights nothing
  *                                  and a range is ignored (the check that
@@ -543,6 +543,11 @@ typedef struct mote_device {
     mote_frame_desc frame;
     float view_proj[16];          /* column-major, as cglm's mat4 */
     float view[16];
+#if MOTE_ENABLE_LIGHT_FALLOFF
+    /* per light of the frame, for a spot light's cone: 1 / |direction|
+     * and cos(spot_angle / 2) (geometry.c's mote__falloff) */
+    float spot_cone[MOTE_MAX_LIGHTS][2];
+#endif
     mote_stats stats;
     /* recorded draws: band mode, and binned mode with parallel_for */
     int draw_count;

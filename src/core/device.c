@@ -283,6 +283,15 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
         dev->frame.light_count = 0;
     if (dev->frame.light_count > MOTE_MAX_LIGHTS)
         dev->frame.light_count = MOTE_MAX_LIGHTS;
+#if MOTE_ENABLE_LIGHT_FALLOFF
+    /* once a frame, not per vertex: what geometry.c's mote__falloff takes
+     * of a spot light's cone */
+    for (int i = 0; i < dev->frame.light_count; i++) {
+        const mote_light *l = &dev->frame.lights[i];
+        dev->spot_cone[i][0] = mote__rsqrtf(mote__dot3(l->direction, l->direction));
+        dev->spot_cone[i][1] = mote_cosf(0.5f * l->spot_angle);
+    }
+#endif
     float proj[16];
     mote_camera_view_matrix(&frame->camera, dev->view);
     mote_camera_projection_matrix(&frame->camera, (float)dev->desc.width / (float)dev->desc.height, proj);

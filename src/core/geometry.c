@@ -56,7 +56,7 @@ typedef uint32_t mote__v4u __attribute__((vector_size(16)));
 typedef struct mote__v4_light {
     mote_light_type type;
     bool positional;              /* point or spot: shines from at */
-    const mote_light *source;     /* the frame's light (its falloff) */
+    int index;                    /* in the frame's lights (its falloff) */
     mote__v4f at[3];              /* point: its position; else the direction toward the light */
     mote__v4f kcol[3];            /* intensity x colour */
     mote__v4f k, col[3], ground[3];   /* hemispheric */
@@ -167,24 +167,25 @@ static float mote__powf01(float x, float e)
     return p * scale.f;
 }
 
-/* Babylon.js's default falloff of a point or spot light (StandardMaterial:
- * max(0, 1 - distance / range); a spot light's cos(angle to its axis),
- * 0 outside the cone and raised to its exponent inside), for L from the
- * surface point to the light and inv = 1 / |L| as the lighting took it.
- * Scalar for both lighting paths (mote__light4 calls it per lane), so the
- * two give the same bits. */
-static float mote__falloff(const mote_light *l, const float L[3], float inv)
+/* Babylon.js's default falloff of the frame's light i, a point or spot
+ * light (StandardMaterial: max(0, 1 - distance / range); a spot light's
+ * cos(angle to its axis), 0 outside the cone and raised to its exponent
+ * inside), for L from the surface point to the light and inv = 1 / |L| as
+ * the lighting took it. Scalar for both lighting paths (mote__light4 calls
+ * it per lane), so the two give the same bits. */
+static float mote__falloff(const mote_device *dev, int i, const float L[3], float inv)
 {
+    const mote_light *l = &dev->frame.lights[i];
+    const float *cone = dev->spot_cone[i];   /* mote_begin's */
     float att = 1.0f;
     if (l->range > 0.0f) {
         att = 1.0f - mote__dot3(L, L) * inv / l->range;
         att = att > 0.0f ? att : 0.0f;
     }
     if (l->type == MOTE_LIGHT_SPOT) {
-        float axis = mote__rsqrtf(mote__dot3(l->direction, l->direction));
-        float c = -(mote__dot3(l->direction, L) * axis) * inv;
+        float c = -(mote__dot3(l->direction, L) * cone[0]) * inv;
         c = c > 0.0f ? c : 0.0f;
-        if (!(c >= mote_cosf(0.5f * l->spot_angle)))
+        if (!(c >= cone[1]))
             return 0.0f;
         att *= mote__powf01(c, l->spot_exponent);
     }
@@ -214,16 +215,13 @@ MOTE__VERTEX_INLINE void mote__light(const mote__ctx *cx, const float p[3], cons
             for (int c = 0; c < 3; c++)
                 acc[c] += k * (col[c] * w + l->ground_color[c] * (1.0f - w));
         } else if (ndl > 0.0f) {
+            float att = 1.0f;     /* times 1: the same bits as without */
 #if MOTE_ENABLE_LIGHT_FALLOFF
-            if (mote__has_falloff(l)) {
-                float att = mote__falloff(l, L, inv);
-                for (int c = 0; c < 3; c++)
-                    acc[c] += k * col[c] * ndl * att;
-                continue;
-            }
+            if (mote__has_falloff(l))
+                att = mote__falloff(cx->dev, i, L, inv);
 #endif
             for (int c = 0; c < 3; c++)
-                acc[c] += k * col[c] * ndl;
+                acc[c] += k * col[c] * ndl * att;
         }
     }
     for (int c = 0; c < 3; c++) {
@@ -612,20 +610,16 @@ static void mote__light4(const mote__ctx *cx, const mote__v4f p[3], const mote__
                 acc[c] += l->k * (l->col[c] * w + l->ground[c] * (1.0f - w));
         } else {
             const mote__v4i lit = ndl > 0.0f;
+            mote__v4f att = mote__v4_splat(1.0f);
 #if MOTE_ENABLE_LIGHT_FALLOFF
-            if (mote__has_falloff(l->source)) {
-                mote__v4f att;
+            if (mote__has_falloff(&cx->dev->frame.lights[l->index]))
                 for (int j = 0; j < 4; j++) {
                     const float Lj[3] = {L[0][j], L[1][j], L[2][j]};
-                    att[j] = mote__falloff(l->source, Lj, inv[j]);
+                    att[j] = mote__falloff(cx->dev, l->index, Lj, inv[j]);
                 }
-                for (int c = 0; c < 3; c++)
-                    acc[c] = mote__v4_select(lit, acc[c] + l->kcol[c] * ndl * att, acc[c]);
-                continue;
-            }
 #endif
             for (int c = 0; c < 3; c++)
-                acc[c] = mote__v4_select(lit, acc[c] + l->kcol[c] * ndl, acc[c]);
+                acc[c] = mote__v4_select(lit, acc[c] + l->kcol[c] * ndl * att, acc[c]);
         }
     }
     for (int c = 0; c < 3; c++) {
@@ -915,7 +909,7 @@ static void mote__v4_light_init(mote__ctx *cx)
         mote__v4_light *o = &v4->light[v4->lights++];
         o->type = l->type;
         o->positional = mote__positional(l);
-        o->source = l;
+        o->index = i;
         o->k = mote__v4_splat(k);
         for (int c = 0; c < 3; c++) {
             o->at[c] = mote__v4_splat(o->positional ? l->position[c] : s * l->direction[c]);
