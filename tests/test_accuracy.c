@@ -109,6 +109,31 @@ void gouraud_shading_should_be_within_1_lsb_of_the_reference(void)
     assert_close("Gouraud, 4 sub-pixel bits", &r);
 }
 
+/* An orthographic camera, its box off centre and its near plane behind
+ * its position: every w is 1, so the perspective-correct weights are the
+ * screen-linear ones, as the reference's double-precision weights are.
+ * Textured (nearest and bilinear) and Gouraud. */
+void orthographic_cameras_should_be_within_1_lsb_of_the_reference(void)
+{
+    for (int k = 0; k < 3; k++) {
+        tu_scene s;
+        tu_scene_build(k == 2 ? TU_SCENE_GOURAUD : TU_SCENE_TEXTURED, MOTE_WRAP_REPEAT, &s);
+        mote_camera *c = &s.frame.camera;
+        c->projection = MOTE_PROJECTION_ORTHOGRAPHIC;
+        const float box[4] = {-3.3f, 4.1f, -2.4f, 3.1f};
+        for (int i = 0; i < 4; i++)   /* the Gouraud scene is smaller */
+            c->ortho[i] = k == 2 ? 0.4f * box[i] : box[i];
+        c->znear = -1.5f;
+        mote_draw_desc d = draw_desc(k == 2 ? MOTE_MODE_GOURAUD : MOTE_MODE_TEXTURED,
+                                     k == 1 ? MOTE_FILTER_BILINEAR : MOTE_FILTER_NEAREST,
+                                     MOTE_PERSPECTIVE_CORRECT);
+        const char *what = k == 0 ? "orthographic, textured nearest"
+                         : k == 1 ? "orthographic, textured bilinear" : "orthographic, Gouraud";
+        tu_vs_result r = run(what, &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+        assert_close(what, &r);
+    }
+}
+
 /* Babylon's falloff: the point light given a range that ends inside the
  * scene, and a spot light whose cone edge crosses the spheres, with a
  * fractional exponent; each against the reference's double-precision
@@ -307,6 +332,7 @@ int main(void)
     RUN_TEST(unlit_textures_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(gouraud_shading_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(spot_lights_and_ranges_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(orthographic_cameras_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(mirrored_meshes_should_cull_and_light_like_their_mirror_images);
     RUN_TEST(vertex_colours_should_be_within_1_lsb_of_the_reference_in_every_mode);
     RUN_TEST(approximate_perspective_modes_should_report_their_error);

@@ -135,8 +135,7 @@ void projection_should_follow_the_left_handed_look_at(void)
     TEST_ASSERT_TRUE(x > W / 2.0f);
 }
 
-/* ---- lines ------------------------------------------------------------- */
-
+/* pixels with some red */
 static int count_lit(const uint8_t *buf, int w, int h)
 {
     int n = 0;
@@ -144,6 +143,82 @@ static int count_lit(const uint8_t *buf, int w, int h)
         n += buf[4 * i] != 0;
     return n;
 }
+
+/* An orthographic camera maps its box's edges to the image's edges and
+ * near..far to depth 0..1, whatever the distance; a near plane behind the
+ * camera's position is allowed; an empty box is 2 units high, centred. */
+void orthographic_projection_should_map_its_box_to_the_image(void)
+{
+    frame.camera.projection = MOTE_PROJECTION_ORTHOGRAPHIC;
+    const float box[4] = {-3.0f, 5.0f, -1.0f, 2.0f};   /* off centre */
+    memcpy(frame.camera.ortho, box, sizeof box);
+    frame.camera.znear = -2.0f;
+    frame.camera.zfar = 8.0f;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    float x, y, z;
+    for (int d = 0; d < 3; d++) {
+        const float at = d == 0 ? -2.0f : d == 1 ? 3.0f : 8.0f;   /* near, between, far */
+        float corner[3] = {-3.0f, 2.0f, at}, other[3] = {5.0f, -1.0f, at};
+        TEST_ASSERT_TRUE(mote_project(&dev, corner, &x, &y, &z));
+        TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.0f, x);
+        TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.0f, y);
+        TEST_ASSERT_FLOAT_WITHIN(1e-6f, (at + 2.0f) / 10.0f, z);
+        TEST_ASSERT_TRUE(mote_project(&dev, other, &x, &y, &z));
+        TEST_ASSERT_FLOAT_WITHIN(1e-4f, (float)W, x);
+        TEST_ASSERT_FLOAT_WITHIN(1e-4f, (float)H, y);
+    }
+    float beyond[3] = {0.0f, 0.0f, 8.5f}, behind[3] = {0.0f, 0.0f, -2.5f};
+    TEST_ASSERT_TRUE(mote_project(&dev, beyond, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.05f, z);
+    TEST_ASSERT_FALSE(mote_project(&dev, behind, &x, &y, &z));
+    /* an empty box: 2 units high, of the image's aspect */
+    frame.camera.ortho[1] = frame.camera.ortho[0];
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    float top_right[3] = {(float)W / H, 1.0f, 0.0f};
+    TEST_ASSERT_TRUE(mote_project(&dev, top_right, &x, &y, &z));
+    TEST_ASSERT_FLOAT_WITHIN(1e-4f, (float)W, x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.0f, y);
+}
+
+/* No foreshortening: the same square drawn near and far covers the same
+ * pixels (perspective would shrink the far one to a quarter), and the
+ * nearer one wins the depth test, also behind the camera's position. */
+void orthographic_cameras_should_draw_sizes_independent_of_distance(void)
+{
+    frame.camera.projection = MOTE_PROJECTION_ORTHOGRAPHIC;
+    const float box[4] = {-4.0f, 4.0f, -3.0f, 3.0f};   /* 64 x 48 px: 8 px a unit */
+    memcpy(frame.camera.ortho, box, sizeof box);
+    frame.camera.znear = -5.0f;
+    mote_draw_desc d;
+    memset(&d, 0, sizeof d);
+    d.mode = MOTE_MODE_FLAT;
+    d.unlit = true;
+    int count[2];
+    for (int k = 0; k < 2; k++) {
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+        mote_mesh q = make_quad(-1.0f, -1.0f, 1.5f, 2.0f, k ? 80.0f : 2.0f);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &q, &d));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+        count[k] = count_lit(color, W, H);
+    }
+    TEST_ASSERT_EQUAL_INT(20 * 24, count[0]);
+    TEST_ASSERT_EQUAL_INT(count[0], count[1]);
+    /* behind the camera (z = -3, inside znear = -5) in front of a square
+     * at z = 4 (a device without arena draws at once: quad_v is free again) */
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    mote_mesh back = make_quad(-4.0f, -3.0f, 4.0f, 3.0f, 4.0f);
+    back.material.color = (mote_rgba){0, 0, 255, 255};
+    back.material.color_set = true;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &back, &d));
+    mote_mesh front = make_quad(-1.0f, -1.0f, 1.5f, 2.0f, -3.0f);
+    front.material.color = (mote_rgba){255, 0, 0, 255};
+    front.material.color_set = true;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &front, &d));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_EQUAL_INT(20 * 24, count_lit(color, W, H));
+}
+
+/* ---- lines ------------------------------------------------------------- */
 
 void bresenham_lines_should_hit_both_endpoints_and_stay_connected(void)
 {
@@ -907,6 +982,8 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(projection_should_map_known_points_to_pixels);
     RUN_TEST(projection_should_follow_the_left_handed_look_at);
+    RUN_TEST(orthographic_projection_should_map_its_box_to_the_image);
+    RUN_TEST(orthographic_cameras_should_draw_sizes_independent_of_distance);
     RUN_TEST(bresenham_lines_should_hit_both_endpoints_and_stay_connected);
     RUN_TEST(lines_clipped_to_a_region_should_draw_the_same_pixels_inside_it);
     RUN_TEST(a_triangulated_square_should_cover_every_pixel_exactly_once);

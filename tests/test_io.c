@@ -1334,26 +1334,55 @@ void loader_should_read_fov_mode_1_as_a_horizontal_field_of_view(void)
     mote_scene_free(&s);
 }
 
-/* What mote does not read but that changes Babylon.js's image is said,
- * once per scene: an orthographic camera. A right-handed scene and pivot
- * or local matrices are read (test_loader_transforms.c): no warning. */
-void loader_should_warn_once_of_unread_features_that_change_the_image(void)
+/* An orthographic camera (mode 1): its box as written, right-handed files
+ * too (the mirror in z leaves x and y alone), minZ as given, 0 or
+ * negative, and no fov needed. A box missing an edge (or null), which
+ * Babylon.js sizes by the canvas in pixels, is the core's default with a
+ * warning; an empty one is an error. */
+void loader_should_read_orthographic_cameras(void)
 {
     const char *j = "{\"useRightHandedSystem\":true,"
-                    "\"cameras\":[{\"id\":\"c\",\"mode\":1,\"orthoLeft\":-4}],"
-                    "\"meshes\":[{\"id\":\"a\",\"pivotMatrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]},"
-                    "{\"id\":\"b\",\"pivotMatrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 2,0,0,1]},"
-                    "{\"id\":\"c\",\"localMatrix\":[2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]}";
+                    "\"cameras\":[{\"id\":\"c\",\"mode\":1,\"position\":[0,0,-10],\"target\":[0,0,0],"
+                    "\"fov\":0,\"minZ\":-2.5,\"maxZ\":40,\"orthoLeft\":-4,\"orthoRight\":6,"
+                    "\"orthoBottom\":-1.5,\"orthoTop\":3}],"
+                    "\"meshes\":[{\"id\":\"a\",\"pivotMatrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 2,0,0,1]}]}";
     mote_scene s;
     load_json(j, "x", &s);
-    TEST_ASSERT_EQUAL_STRING("cameras[0].mode: 1 (orthographic) is drawn as a perspective "
-                             "camera", s.warning);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);   /* pivots and right-handed files are read too */
+    TEST_ASSERT_EQUAL(MOTE_PROJECTION_ORTHOGRAPHIC, s.camera.projection);
+    TEST_ASSERT_EQUAL_FLOAT(-4.0f, s.camera.ortho[0]);
+    TEST_ASSERT_EQUAL_FLOAT(6.0f, s.camera.ortho[1]);
+    TEST_ASSERT_EQUAL_FLOAT(-1.5f, s.camera.ortho[2]);
+    TEST_ASSERT_EQUAL_FLOAT(3.0f, s.camera.ortho[3]);
+    TEST_ASSERT_EQUAL_FLOAT(-2.5f, s.camera.znear);
+    TEST_ASSERT_EQUAL_FLOAT(40.0f, s.camera.zfar);
     mote_scene_free(&s);
-    load_json("{\"useRightHandedSystem\":false,\"cameras\":[{\"id\":\"c\",\"mode\":0}],"
-              "\"transformNodes\":[{\"id\":\"t\",\"localMatrix\":[1,0,0,0, 0,1,0,0, "
-              "0,0,1,0, 0,0,0,1]}]}", "x", &s);
+    load_json("{\"cameras\":[{\"id\":\"c\",\"mode\":1,\"minZ\":0,\"orthoLeft\":-4,"
+              "\"orthoRight\":4,\"orthoBottom\":null,\"orthoTop\":3}]}", "x", &s);
+    TEST_ASSERT_EQUAL_STRING("cameras[0]: an orthographic camera without all of orthoLeft, orthoRight, "
+                             "orthoBottom and orthoTop (Babylon.js sizes it by the canvas, in pixels) is "
+                             "drawn 2 units high", s.warning);
+    TEST_ASSERT_EQUAL(MOTE_PROJECTION_ORTHOGRAPHIC, s.camera.projection);
+    for (int k = 0; k < 4; k++)
+        TEST_ASSERT_EQUAL_FLOAT(0.0f, s.camera.ortho[k]);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, s.camera.znear);
+    mote_scene_free(&s);
+    /* mode 0, or none: perspective, minZ 0 as 0.1 */
+    load_json("{\"cameras\":[{\"id\":\"c\",\"mode\":0,\"minZ\":0,\"orthoLeft\":-4}]}", "x", &s);
     TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(MOTE_PROJECTION_PERSPECTIVE, s.camera.projection);
+    TEST_ASSERT_EQUAL_FLOAT(0.1f, s.camera.znear);
     mote_scene_free(&s);
+    const char *empty = "{\"cameras\":[{\"id\":\"c\",\"mode\":1,\"orthoLeft\":2,\"orthoRight\":2,"
+                        "\"orthoBottom\":-1,\"orthoTop\":1}]}";
+    TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote_scene_load_memory(empty, strlen(empty), "e", NULL, NULL, &s, msg,
+                                                             sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("e: cameras[0]: orthoLeft 2, orthoRight 2, orthoBottom -1 and orthoTop 1 "
+                             "enclose nothing", msg);
+    const char *flat = "{\"cameras\":[{\"id\":\"c\",\"mode\":1,\"minZ\":5,\"maxZ\":0}]}";
+    TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote_scene_load_memory(flat, strlen(flat), "f", NULL, NULL, &s, msg,
+                                                             sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("f: cameras[0]: minZ 5 and maxZ 0 need minZ < maxZ", msg);
 }
 
 /* Keys written twice: the last counts, as JSON.parse (which Babylon.js
@@ -1434,7 +1463,7 @@ int main(void)
     RUN_TEST(loader_should_show_each_distinct_warning_once_with_its_count);
     RUN_TEST(file_reading_should_refuse_a_fifo_a_directory_and_a_device);
     RUN_TEST(loader_should_read_fov_mode_1_as_a_horizontal_field_of_view);
-    RUN_TEST(loader_should_warn_once_of_unread_features_that_change_the_image);
+    RUN_TEST(loader_should_read_orthographic_cameras);
     RUN_TEST(loader_should_take_the_last_of_keys_written_twice);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);

@@ -219,7 +219,13 @@ static void write_frame(baker *b, const mote_frame_desc *fr)
     put_floats(b, fr->camera.up, 3);
     fprintf(f, ",\n        .fov = %s,\n", flt(buf, fr->camera.fov));
     fprintf(f, "        .znear = %s,\n", flt(buf, fr->camera.znear));
-    fprintf(f, "        .zfar = %s,\n    },\n    .lights = {\n", flt(buf, fr->camera.zfar));
+    fprintf(f, "        .zfar = %s,\n", flt(buf, fr->camera.zfar));
+    if (fr->camera.projection == MOTE_PROJECTION_ORTHOGRAPHIC) {
+        fputs("        .projection = MOTE_PROJECTION_ORTHOGRAPHIC,\n        .ortho = ", f);
+        put_floats(b, fr->camera.ortho, 4);
+        fputs(",\n", f);
+    }
+    fputs("    },\n    .lights = {\n", f);
     for (int i = 0; i < fr->light_count && i < MOTE_MAX_LIGHTS; i++) {
         const mote_light *l = &fr->lights[i];
         fprintf(f, "        {\n            .type = %s,\n            .position = ", light_name(l->type));
@@ -439,6 +445,10 @@ int main(int argc, char **argv)
                             "lights nothing by a spot light and ignores ranges\n");
             break;
         }
+    if (scene.has_camera && scene.camera.projection == MOTE_PROJECTION_ORTHOGRAPHIC)
+        fprintf(stderr, "mote-bake: warning: the scene's orthographic camera needs "
+                        "MOTE_ENABLE_ORTHOGRAPHIC; mote_begin refuses it in a build without it "
+                        "(the firmware profile)\n");
 
     int status = 1;
     size_t n = (size_t)(scene.mesh_count > 0 ? scene.mesh_count : 1);

@@ -184,7 +184,7 @@ extern "C" {
  * MOTE_ERR_UNSUPPORTED and draws nothing; everything else draws the same
  * bytes. On a Cortex-M0+ each saves about this much of the core's 22 KB
  * (-Os, one left out at a time; `make cross` prints the sizes of the
- * firmware profile, which turns all six off):
+ * firmware profile, which turns all seven off):
  *   MOTE_ENABLE_LINES     ~0.8 KB  MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS
  *                                  (mote_draw refuses them)
  *   MOTE_ENABLE_BINNING   ~4.2 KB  desc.arena, tile binning and parallel
@@ -201,7 +201,10 @@ extern "C" {
  *                                  left out, a spot light lights nothing
  *                                  and a range is ignored (the check that
  *                                  would refuse them costs 48 bytes, which
- *                                  the Cortex-M0+ profile does not have) */
+ *                                  the Cortex-M0+ profile does not have)
+ *   MOTE_ENABLE_ORTHOGRAPHIC
+ *                         ~0.3 KB  MOTE_PROJECTION_ORTHOGRAPHIC (mote_begin
+ *                                  refuses it) */
 #ifndef MOTE_ENABLE_LINES
 #define MOTE_ENABLE_LINES 1
 #endif
@@ -219,6 +222,9 @@ extern "C" {
 #endif
 #ifndef MOTE_ENABLE_LIGHT_FALLOFF
 #define MOTE_ENABLE_LIGHT_FALLOFF 1
+#endif
+#ifndef MOTE_ENABLE_ORTHOGRAPHIC
+#define MOTE_ENABLE_ORTHOGRAPHIC 1
 #endif
 
 /* ---- results ----------------------------------------------------------- */
@@ -360,12 +366,28 @@ void mote_mesh_update_bounds(mote_mesh *mesh);
 
 /* ---- camera and lights ------------------------------------------------- */
 
+typedef enum mote_projection {
+    MOTE_PROJECTION_PERSPECTIVE = 0,
+    MOTE_PROJECTION_ORTHOGRAPHIC, /* parallel rays: no foreshortening (isometric views,
+                                     Babylon.js's ORTHOGRAPHIC_CAMERA) */
+    MOTE_PROJECTION_COUNT
+} mote_projection;
+
 typedef struct mote_camera {
     float position[3];
     float target[3];
     float up[3];                  /* {0,0,0} = {0,1,0} */
-    float fov;                    /* vertical, radians; 0 = 0.8 */
-    float znear, zfar;            /* 0 = 0.1, 100 */
+    float fov;                    /* perspective: vertical, radians; 0 = 0.8 */
+    float znear, zfar;            /* 0 = 0.1, 100 (an orthographic camera takes znear
+                                     as given: 0, or negative to see behind
+                                     its position) */
+    mote_projection projection;   /* perspective but for MOTE_PROJECTION_ORTHOGRAPHIC */
+    /* orthographic: the view's left, right, bottom and top edges, in world
+     * units about the line of sight (Babylon.js's orthoLeft, orthoRight,
+     * orthoBottom, orthoTop: stretched when not of the image's aspect);
+     * an empty box (left == right or bottom == top) is 2 units high,
+     * centred, of the image's aspect */
+    float ortho[4];
 } mote_camera;
 
 typedef enum mote_light_type {

@@ -270,6 +270,8 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
         return MOTE_ERR_INVALID_ARGUMENT;
     if (!dev->ready)
         return MOTE_ERR_STATE;
+    if (!MOTE_ENABLE_ORTHOGRAPHIC && frame->camera.projection == MOTE_PROJECTION_ORTHOGRAPHIC)
+        return MOTE_ERR_UNSUPPORTED;
     /* a frame begun again before its mote_end is abandoned, but the clear
      * it put off is owed: the marks of the tiles it was to clear are about
      * to be replaced */

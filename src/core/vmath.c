@@ -243,18 +243,45 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16])
 
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect, float proj[16])
 {
-    /* PerspectiveFovLH, depth 0 at near and 1 at far. Defaults for zeros. */
-    float fov = camera->fov > 0.0f ? camera->fov : 0.8f;
+    /* Depth 0 at near and 1 at far. Defaults for zeros. */
     float n = camera->znear > 0.0f ? camera->znear : 0.1f;
     float f = camera->zfar > 0.0f ? camera->zfar : 100.0f;
+    if (aspect <= 0.0f)
+        aspect = 1.0f;
+    memset(proj, 0, 16 * sizeof(float));
+#if MOTE_ENABLE_ORTHOGRAPHIC
+    if (camera->projection == MOTE_PROJECTION_ORTHOGRAPHIC) {
+        /* OrthoOffCenterLH: the box's edges to -1..1, w stays 1; near
+         * as given (0 or behind the camera: no division by z here) */
+        n = camera->znear;
+        if (f <= n)
+            f = n + 1.0f;
+        float l = -aspect, r = aspect, b = -1.0f, t = 1.0f;
+        const float *o = camera->ortho;
+        if (o[0] != o[1] && o[2] != o[3]) {
+            l = o[0];
+            r = o[1];
+            b = o[2];
+            t = o[3];
+        }
+        proj[0] = 2.0f / (r - l);
+        proj[5] = 2.0f / (t - b);
+        proj[10] = 1.0f / (f - n);
+        proj[12] = (l + r) / (l - r);
+        proj[13] = (b + t) / (b - t);
+        proj[14] = -n / (f - n);
+        proj[15] = 1.0f;
+        return;
+    }
+#endif
+    /* PerspectiveFovLH */
+    float fov = camera->fov > 0.0f ? camera->fov : 0.8f;
     if (fov > 3.1f)
         fov = 3.1f;
     if (f <= n)
         f = n * 2.0f;
     float ys = 1.0f / mote_tanf(fov * 0.5f);
-    float xs = ys / (aspect > 0.0f ? aspect : 1.0f);
-    memset(proj, 0, 16 * sizeof(float));
-    proj[0] = xs;
+    proj[0] = ys / aspect;
     proj[5] = ys;
     proj[10] = f / (f - n);
     proj[11] = 1.0f;

@@ -44,8 +44,9 @@
  *   its uvs, with a warning; coordinatesIndex 2..5 (uvs3...) warns too.
  * - With no base_dir (mote_scene_load_memory), embedded images are not
  *   loaded either: no textures at all, as documented.
- * - Not read, but warned of once per scene as it changes the image: an
- *   orthographic camera (mode 1).
+ * - An orthographic camera (mode 1) keeps its box (orthoLeft...); one
+ *   that lacks an edge, which Babylon.js sizes by the canvas in pixels,
+ *   is drawn 2 units high, with a warning.
  * - A localMatrix or pivotMatrix is folded into its node's transform, a
  *   sheared one with a hidden helper node (mote__fold_matrix); one not
  *   affine, or a pivot with no inverse, is an error.
@@ -2577,6 +2578,34 @@ static void mote__forward(const float rotation[3], const float quat[4], bool use
     memcpy(out, &w[8], 3 * sizeof *out);
 }
 
+/* An orthographic camera's box (orthoLeft, orthoRight, orthoBottom,
+ * orthoTop). Babylon.js sizes a missing or null edge by the canvas, half
+ * its width or height in pixels, which a file does not know: then the
+ * core's default box, 2 units high, with a warning. */
+static R mote__ortho_box(mote__ld *ld, const cJSON *cam, const char *at, mote_camera *c)
+{
+    static const char *const keys[4] = {"orthoLeft", "orthoRight", "orthoBottom", "orthoTop"};
+    c->projection = MOTE_PROJECTION_ORTHOGRAPHIC;
+    int given = 0;
+    for (int k = 0; k < 4; k++) {
+        const cJSON *v = mote__get(cam, keys[k]);
+        if (v && !cJSON_IsNull(v)) {
+            MOTE__TRY(mote__num(ld, cam, keys[k], at, &c->ortho[k]));
+            given++;
+        }
+    }
+    if (given < 4) {
+        memset(c->ortho, 0, sizeof c->ortho);
+        mote__warn(ld, "%s: an orthographic camera without all of orthoLeft, orthoRight, orthoBottom "
+                   "and orthoTop (Babylon.js sizes it by the canvas, in pixels) is drawn 2 units high", at);
+    } else if (!(c->ortho[0] != c->ortho[1] && c->ortho[2] != c->ortho[3])) {
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: orthoLeft %g, orthoRight %g, orthoBottom %g and "
+                          "orthoTop %g enclose nothing", at, c->ortho[0], c->ortho[1], c->ortho[2],
+                          c->ortho[3]);
+    }
+    return MOTE_OK;
+}
+
 static R mote__camera(mote__ld *ld)
 {
     const cJSON *cam;
@@ -2588,10 +2617,11 @@ static R mote__camera(mote__ld *ld)
     snprintf(at, sizeof at, "cameras[%d]", index);
     MOTE__TRY(mote__obj_at(ld, cam, at));
     const cJSON *mode = mote__get(cam, "mode");
-    if (cJSON_IsNumber(mode) && mode->valuedouble == 1.0)
-        mote__warn(ld, "%s.mode: 1 (orthographic) is drawn as a perspective camera", at);
+    const bool ortho = cJSON_IsNumber(mode) && mode->valuedouble == 1.0;   /* ORTHOGRAPHIC_CAMERA */
     mote_camera *c = &ld->scene->camera;
     memset(c, 0, sizeof *c);
+    if (ortho)
+        MOTE__TRY(mote__ortho_box(ld, cam, at, c));
     MOTE__TRY(mote__vec(ld, cam, "position", at, 3, 0, c->position));
     if (ld->right_handed)
         mote__mirror_point(c->position);
@@ -2630,23 +2660,24 @@ static R mote__camera(mote__ld *ld)
     MOTE__TRY(mote__num(ld, cam, "fov", at, &c->fov));
     MOTE__TRY(mote__num(ld, cam, "minZ", at, &c->znear));
     MOTE__TRY(mote__num(ld, cam, "maxZ", at, &c->zfar));
-    if (!(c->fov > 0.0f && c->fov < 3.14159f))
+    if (!ortho && !(c->fov > 0.0f && c->fov < 3.14159f))   /* unused by an orthographic one */
         return mote__fail(ld, MOTE_ERR_RANGE, "%s.fov: %g is not in (0, pi)", at, c->fov);
     /* Babylon.js's FOVMODE_HORIZONTAL_FIXED: any fovMode but 0 (vertical);
      * the aspect ratio is known only when framing (mote_scene_frame) */
     MOTE__TRY(mote__flag(ld, cam, "fovMode", at, &ld->scene->camera_fov_is_horizontal));
-    /* Babylon.js projects with minZ <= 0 as 0.1 */
-    if (c->znear <= 0.0f)
+    /* an orthographic camera takes minZ as given, 0 or negative too; a
+     * perspective one, as Babylon.js projects it, minZ <= 0 as 0.1 */
+    if (!ortho && c->znear <= 0.0f)
         c->znear = 0.1f;
-    /* maxZ 0: an infinite far plane. 2^24 times the near distance instead:
-     * there far / (far - near), the factor depth differs by from an
-     * infinite projection's, is 1 within half a float epsilon, so depths
-     * match the infinite projection's to float rounding */
-    if (c->zfar == 0.0f)
+    /* maxZ 0: an infinite far plane (perspective). 2^24 times the near
+     * distance instead: there far / (far - near), the factor depth differs
+     * by from an infinite projection's, is 1 within half a float epsilon,
+     * so depths match the infinite projection's to float rounding */
+    if (!ortho && c->zfar == 0.0f)
         c->zfar = c->znear * 16777216.0f;
     if (!(c->zfar > c->znear))
-        return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need minZ < maxZ "
-                          "(maxZ 0: no far plane)", at, c->znear, c->zfar);
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: minZ %g and maxZ %g need minZ < maxZ%s", at, c->znear,
+                          c->zfar, ortho ? "" : " (maxZ 0: no far plane)");
     /* a parent (3ds Max rigs) moves and turns the whole view: the view
      * matrix is the parent's world matrix after the camera's own */
     float w[16];

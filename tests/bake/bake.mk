@@ -10,9 +10,17 @@ $(BAKE_TEST_DIR)/baked.h: $(BAKE_SCENE) $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
 	$(BIN)/mote-bake $(BAKE_SCENE) -o $@ --name baked --format rgba8888 --size 64x48
 
-$(BAKE_TEST_DIR)/test_bake: tests/bake/test_bake.c $(BAKE_TEST_DIR)/baked.h $(BUILD)/tests/obj/unity.o \
-        $(LIB) | $(DEPS_OK)
-	$(CC) $(TEST_CFLAGS) -I$(BAKE_TEST_DIR) -DMOTE_BAKE_SCENE=\"$(CURDIR)/$(BAKE_SCENE)\" $< \
+# and an orthographic camera's scene, with names of its own
+BAKE_ORTHO    := tests/data/ortho_camera.babylon
+
+$(BAKE_TEST_DIR)/ortho.h: $(BAKE_ORTHO) $(BIN)/mote-bake
+	@mkdir -p $(dir $@)
+	$(BIN)/mote-bake $(BAKE_ORTHO) -o $@ --name ortho --format rgba8888 --size 64x48
+
+$(BAKE_TEST_DIR)/test_bake: tests/bake/test_bake.c $(BAKE_TEST_DIR)/baked.h $(BAKE_TEST_DIR)/ortho.h \
+        $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
+	$(CC) $(TEST_CFLAGS) -I$(BAKE_TEST_DIR) -DMOTE_BAKE_SCENE=\"$(CURDIR)/$(BAKE_SCENE)\" \
+	    -DMOTE_BAKE_ORTHO=\"$(CURDIR)/$(BAKE_ORTHO)\" $< \
 	    $(BUILD)/tests/obj/unity.o $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
 test-build: $(BAKE_TEST_DIR)/test_bake

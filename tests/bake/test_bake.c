@@ -3,13 +3,15 @@
  * header baked from tests/data/vertex_colors.babylon (tests/bake/bake.mk)
  * against the same file loaded with mote_scene_load, field by field, with
  * its vertex colours (one array per vertex array, shared by sub-meshes),
- * and rendered to the same bytes.
+ * and rendered to the same bytes; and a scene seen by an orthographic
+ * camera (tests/data/ortho_camera.babylon), baked as "ortho".
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
 #include "unity.h"
 
 #include "baked.h"
+#include "ortho.h"
 
 #include <string.h>
 
@@ -82,6 +84,30 @@ void a_baked_scene_should_render_the_same_bytes_as_the_loaded_one(void)
     }
 }
 
+/* The orthographic camera's projection and box are baked: the same
+ * bytes as the loaded scene, and not those of a perspective camera. */
+void a_baked_orthographic_camera_should_render_as_loaded(void)
+{
+    mote_scene iso;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_ORTHO, NULL, &iso, msg, sizeof msg), msg);
+    mote_frame_desc frame;
+    mote_scene_frame(&iso, (float)W / (float)H, &frame);
+    TEST_ASSERT_EQUAL(MOTE_PROJECTION_ORTHOGRAPHIC, ortho_frame.camera.projection);
+    TEST_ASSERT_EQUAL_MEMORY(frame.camera.ortho, ortho_frame.camera.ortho, sizeof frame.camera.ortho);
+    static uint8_t loaded[W * H * 4], baked[W * H * 4];
+    mote_draw_desc d;
+    memset(&d, 0, sizeof d);
+    d.mode = MOTE_MODE_GOURAUD;
+    render(iso.meshes, iso.mesh_count, &frame, iso.clear_color, d, loaded);
+    render(ortho_meshes, ORTHO_MESH_COUNT, &ortho_frame, ortho_clear_color, d, baked);
+    TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
+    mote_frame_desc seen_in_perspective = ortho_frame;
+    seen_in_perspective.camera.projection = MOTE_PROJECTION_PERSPECTIVE;
+    render(ortho_meshes, ORTHO_MESH_COUNT, &seen_in_perspective, ortho_clear_color, d, baked);
+    TEST_ASSERT_TRUE(memcmp(loaded, baked, sizeof loaded) != 0);
+    mote_scene_free(&iso);
+}
+
 /* A mesh whose material has backFaceCulling false is baked as two-sided
  * (the scene's grey material says so, for the sub-mesh drawn with it). */
 void baked_meshes_should_keep_which_are_two_sided(void)
@@ -101,5 +127,6 @@ int main(void)
     RUN_TEST(baked_meshes_should_hold_the_loaded_arrays_and_vertex_colours);
     RUN_TEST(a_baked_scene_should_render_the_same_bytes_as_the_loaded_one);
     RUN_TEST(baked_meshes_should_keep_which_are_two_sided);
+    RUN_TEST(a_baked_orthographic_camera_should_render_as_loaded);
     return UNITY_END();
 }

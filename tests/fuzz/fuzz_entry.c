@@ -368,6 +368,11 @@ static void fz_frame(fz_reader *r, mote_frame_desc *f)
     }
     f->keep_color = (cf & 32) != 0;
     f->keep_depth = (cf & 64) != 0;
+    if (cf & 128) {               /* orthographic, any box (empty, inverted, NaN) */
+        c->projection = MOTE_PROJECTION_ORTHOGRAPHIC;
+        for (int k = 0; k < 4; k++)
+            c->ortho[k] = fz_float(r);
+    }
     uint8_t lf = fz_u8(r);
     f->light_count = (int)(lf % 8) - 1;           /* -1..6: out of range both ways */
     for (int i = 0; i < MOTE_MAX_LIGHTS && i < f->light_count; i++) {

@@ -163,6 +163,21 @@ void spot_lights_and_ranges_should_light_only_with_falloff(void)
     TEST_ASSERT_TRUE(MOTE_ENABLE_LIGHT_FALLOFF ? spot > 0 : spot == 0);
 }
 
+void orthographic_cameras_should_need_their_option(void)
+{
+    mote_frame_desc f = scene.frame;
+    f.camera.projection = MOTE_PROJECTION_ORTHOGRAPHIC;
+    if (!MOTE_ENABLE_ORTHOGRAPHIC) {
+        TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_begin(&dev, &f));
+        return;
+    }
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    for (int i = 0; i < scene.mesh_count; i++)
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &scene.meshes[i], NULL));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_TRUE(mote_device_stats(&dev)->pixels_written > 0);
+}
+
 void an_arena_should_need_binning(void)
 {
     /* init_device checks the result: MOTE_ERR_UNSUPPORTED without binning */
@@ -184,6 +199,7 @@ int main(void)
     RUN_TEST(subspan_perspective_should_need_its_option);
     RUN_TEST(vertex_colours_should_need_their_option);
     RUN_TEST(spot_lights_and_ranges_should_light_only_with_falloff);
+    RUN_TEST(orthographic_cameras_should_need_their_option);
     RUN_TEST(an_arena_should_need_binning);
     return UNITY_END();
 }

@@ -405,22 +405,46 @@ void ref_begin(ref_target *t, const mote_frame_desc *frame, mote_rgba clear_colo
     view[13] = -(y[0] * e[0] + y[1] * e[1] + y[2] * e[2]);
     view[14] = -(z[0] * e[0] + z[1] * e[1] + z[2] * e[2]);
     view[15] = 1.0;
-    /* PerspectiveFovLH with mote's documented defaults (and its fov cap) */
-    double fov = cam->fov > 0.0f ? cam->fov : 0.8;
+    /* mote's documented defaults */
     double n = cam->znear > 0.0f ? cam->znear : 0.1;
     double f = cam->zfar > 0.0f ? cam->zfar : 100.0;
-    if (fov > 3.1)
-        fov = 3.1;
-    if (f <= n)
-        f = n * 2.0;
-    double ys = 1.0 / tan(fov * 0.5);
-    double xs = ys / ((double)t->width / (double)t->height);
+    double aspect = (double)t->width / (double)t->height;
     double proj[16] = {0};
-    proj[0] = xs;
-    proj[5] = ys;
-    proj[10] = f / (f - n);
-    proj[11] = 1.0;
-    proj[14] = -n * f / (f - n);
+    if (cam->projection == MOTE_PROJECTION_ORTHOGRAPHIC) {
+        /* OrthoOffCenterLH: the box's edges to -1..1, depth 0..1 from
+         * near (as given, 0 or behind the camera too) to far */
+        n = cam->znear;
+        if (f <= n)
+            f = n + 1.0;
+        double l = -aspect, r = aspect, b = -1.0, top = 1.0;
+        const float *o = cam->ortho;
+        if (o[0] != o[1] && o[2] != o[3]) {
+            l = o[0];
+            r = o[1];
+            b = o[2];
+            top = o[3];
+        }
+        proj[0] = 2.0 / (r - l);
+        proj[5] = 2.0 / (top - b);
+        proj[10] = 1.0 / (f - n);
+        proj[12] = (l + r) / (l - r);
+        proj[13] = (b + top) / (b - top);
+        proj[14] = -n / (f - n);
+        proj[15] = 1.0;
+    } else {
+        /* PerspectiveFovLH, with mote's fov cap */
+        double fov = cam->fov > 0.0f ? cam->fov : 0.8;
+        if (fov > 3.1)
+            fov = 3.1;
+        if (f <= n)
+            f = n * 2.0;
+        double ys = 1.0 / tan(fov * 0.5);
+        proj[0] = ys / aspect;
+        proj[5] = ys;
+        proj[10] = f / (f - n);
+        proj[11] = 1.0;
+        proj[14] = -n * f / (f - n);
+    }
     mat_mul(proj, view, t->view_proj);
     bool keep_c = frame->keep_color, keep_d = frame->keep_depth;
     size_t count = (size_t)t->width * (size_t)t->height;
