@@ -2,7 +2,8 @@
  * mote-render - renders a .babylon scene to a PNG or PPM image, and times it.
  *
  *   mote-render SCENE -o OUT.png|OUT.ppm [--size WxH] [--mode MODE] [--no-cull]
- *               [--camera ex,ey,ez:tx,ty,tz] [--fov RADIANS] [--rotate rx,ry,rz]
+ *               [--camera ex,ey,ez:tx,ty,tz] [--fov RADIANS | --ortho HEIGHT]
+ *               [--rotate rx,ry,rz]
  *               [--frames N] [--threads T] [--spin DEGREES]
  *               [--perspective correct|affine|subspan] [--filter nearest|bilinear]
  *               [--subpixel-bits N] [--full-clear] [--allow-missing-textures]
@@ -40,6 +41,7 @@ typedef struct options {
     bool has_camera;
     float eye[3], target[3];
     float fov;                    /* 0: the scene's (or the default) */
+    float ortho_height;           /* > 0: an orthographic view this many units high */
     float rotate[3];
     int frames;                   /* 0: no timing */
     int threads;                  /* 0: all */
@@ -59,7 +61,10 @@ static void usage(FILE *out)
             "  --no-cull               draw back faces too\n"
             "  --camera EX,EY,EZ:TX,TY,TZ  eye and target (default: the scene's camera,\n"
             "                          else one that frames the scene)\n"
-            "  --fov RADIANS           vertical field of view (whatever the file's fovMode)\n"
+            "  --fov RADIANS           vertical field of view (whatever the file's fovMode;\n"
+            "                          a perspective view also of an orthographic camera)\n"
+            "  --ortho HEIGHT          an orthographic view, HEIGHT world units high and\n"
+            "                          centred (of a perspective camera too)\n"
             "  --rotate RX,RY,RZ       add to every mesh's rotation (radians)\n"
             "  --frames N              time N frames after a warm-up and print ms/frame\n"
             "  --spin DEGREES          turn the scene about y by this much per timed frame\n"
@@ -211,6 +216,9 @@ static int parse_args(int argc, char **argv, options *o)
         } else if (strcmp(a, "--fov") == 0) {
             if (!parse_floats(v, &o->fov, 1) || !(o->fov > 0.0f && o->fov < 3.14159f))
                 return fail("--fov \"%s\": expected radians in (0, pi)", v);
+        } else if (strcmp(a, "--ortho") == 0) {
+            if (!parse_floats(v, &o->ortho_height, 1) || !(o->ortho_height > 0.0f && o->ortho_height < 1e30f))
+                return fail("--ortho \"%s\": expected a height above 0", v);
         } else if (strcmp(a, "--rotate") == 0) {
             if (!parse_floats(v, o->rotate, 3))
                 return fail("--rotate \"%s\": expected rx,ry,rz in radians", v);
@@ -240,6 +248,8 @@ static int parse_args(int argc, char **argv, options *o)
     }
     if (!o->scene_path)
         return fail("no scene given; see --help");
+    if (o->fov > 0.0f && o->ortho_height > 0.0f)
+        return fail("--fov and --ortho: one view or the other");
     if (!o->out_path)
         return fail("no output given (-o OUT.png or OUT.ppm); see --help");
     if (!has_suffix(o->out_path, ".png") && !has_suffix(o->out_path, ".ppm"))
@@ -417,8 +427,16 @@ int main(int argc, char **argv)
         memcpy(frame.camera.target, o.target, sizeof o.target);
         memset(frame.camera.up, 0, sizeof frame.camera.up);
     }
-    if (o.fov > 0.0f)
+    if (o.fov > 0.0f) {
         frame.camera.fov = o.fov;
+        frame.camera.projection = MOTE_PROJECTION_PERSPECTIVE;
+    }
+    if (o.ortho_height > 0.0f) {
+        const float h = 0.5f * o.ortho_height, w = h * (float)o.width / (float)o.height;
+        const float box[4] = {-w, w, -h, h};
+        frame.camera.projection = MOTE_PROJECTION_ORTHOGRAPHIC;
+        memcpy(frame.camera.ortho, box, sizeof box);
+    }
 
     if (o.frames > 0) {
         const float spin = o.spin_degrees * 3.14159265358979f / 180.0f;

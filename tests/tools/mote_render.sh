@@ -82,6 +82,38 @@ else
     fail $name "exit status $?: $(cat "$tmp/out")"
 fi
 
+# ---- --ortho -------------------------------------------------------------------
+# A 2 x 2 red quad 20 units ahead: --ortho 4 draws it half the image wide,
+# whatever its distance (from the scene's camera perspective would draw it
+# a few pixels wide); with --fov as well, a usage error.
+cat >"$tmp/far.babylon" <<'JSON'
+{"materials":[{"id":"red","diffuse":[1,0,0]}],
+ "cameras":[{"id":"c","position":[0,0,-20],"target":[0,0,0]}],
+ "lights":[{"type":3,"id":"sky","direction":[0,0,-1],"groundColor":[1,1,1]}],
+ "meshes":[{"id":"q","materialId":"red",
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0, -1,1,0],"normals":[0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1],
+  "indices":[0,1,2, 0,2,3]}]}
+JSON
+name=ortho_should_draw_a_far_quad_at_its_size_in_world_units
+if "$R" "$tmp/far.babylon" -o "$tmp/far.ppm" --size 32x32 --ortho 4 --threads 1 >"$tmp/out" 2>&1; then
+    inside=$(pixel "$tmp/far.ppm" 8 16); outside=$(pixel "$tmp/far.ppm" 7 16)
+    if [ "${inside%% *}" -gt 0 ] && [ "$outside" = "0 0 0" ]; then
+        pass $name
+    else
+        fail $name "expected red from column 8 and black at column 7, got \"$inside\" and \"$outside\""
+    fi
+else
+    fail $name "exit status $?: $(cat "$tmp/out")"
+fi
+name=ortho_and_fov_together_should_be_refused
+if "$R" "$tmp/far.babylon" -o "$tmp/far.ppm" --ortho 4 --fov 1 >"$tmp/out" 2>&1; then
+    fail $name "exit status 0, expected a usage error"
+elif ! grep -q -- "--fov and --ortho" "$tmp/out"; then
+    fail $name "the message does not say why: $(cat "$tmp/out")"
+else
+    pass $name
+fi
+
 echo
 echo "-----------------------"
 echo "$tests Tests $failures Failures 0 Ignored"
