@@ -22,6 +22,17 @@ pixel() {
     od -An -tu1 -j $((header + ($3 * w + $2) * 3)) -N3 "$1" | tr -s ' ' | sed 's/^ //'
 }
 
+# red_and_black NAME PPM X Y X2 Y2: passes NAME when pixel (X, Y) has red
+# and (X2, Y2) is black
+red_and_black() {
+    red=$(pixel "$2" "$3" "$4"); black=$(pixel "$2" "$5" "$6")
+    if [ "${red%% *}" -gt 0 ] && [ "$black" = "0 0 0" ]; then
+        pass "$1"
+    else
+        fail "$1" "expected red at ($3, $4) and black at ($5, $6), got \"$red\" and \"$black\""
+    fi
+}
+
 # ---- --camera in a right-handed scene ---------------------------------------
 # A right-handed scene is loaded mirrored in z; --camera is given in the
 # file's coordinates and mirrored with it. A red quad at x = +2 seen from
@@ -37,12 +48,7 @@ JSON
 name=camera_should_be_read_in_a_right_handed_files_coordinates
 if "$R" "$tmp/rh.babylon" -o "$tmp/rh.ppm" --size 32x16 --camera 0,0,5:0,0,0 --threads 1 \
         >"$tmp/out" 2>&1; then
-    right=$(pixel "$tmp/rh.ppm" 24 8); left=$(pixel "$tmp/rh.ppm" 8 8)
-    if [ "${right%% *}" -gt 0 ] && [ "$left" = "0 0 0" ]; then
-        pass $name
-    else
-        fail $name "expected red on the right and black on the left, got \"$right\" and \"$left\""
-    fi
+    red_and_black $name "$tmp/rh.ppm" 24 8 8 8
 else
     fail $name "exit status $?: $(cat "$tmp/out")"
 fi
@@ -96,12 +102,7 @@ cat >"$tmp/far.babylon" <<'JSON'
 JSON
 name=ortho_should_draw_a_far_quad_at_its_size_in_world_units
 if "$R" "$tmp/far.babylon" -o "$tmp/far.ppm" --size 32x32 --ortho 4 --threads 1 >"$tmp/out" 2>&1; then
-    inside=$(pixel "$tmp/far.ppm" 8 16); outside=$(pixel "$tmp/far.ppm" 7 16)
-    if [ "${inside%% *}" -gt 0 ] && [ "$outside" = "0 0 0" ]; then
-        pass $name
-    else
-        fail $name "expected red from column 8 and black at column 7, got \"$inside\" and \"$outside\""
-    fi
+    red_and_black $name "$tmp/far.ppm" 8 16 7 16
 else
     fail $name "exit status $?: $(cat "$tmp/out")"
 fi
