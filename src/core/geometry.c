@@ -728,6 +728,11 @@ static void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
     }
     if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors)
         for (int i = 0; i < 4; i++) {
+            /* an invalid vertex, which mote__prepare_vertices lights too,
+             * is never read, and its texels may be NaN or beyond what
+             * mote__to_setup converts */
+            if (tv[i]->state != 1)
+                continue;
             /* from the lit shade again: a vertex may be here twice */
             for (int k = 0; k < 3; k++)
                 tv[i]->c.s[k] = shade[k][i];
