@@ -321,7 +321,10 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
             const mote__cvert *a = &poly[i], *b = &poly[(i + 1) % n];
             float da = mote__plane_dist(cx, a, p), db = mote__plane_dist(cx, b, p);
             bool ain = da >= 0.0f, bin = db >= 0.0f;
-            if (ain) {
+            /* float rounding can leave the polygon a hair from convex,
+             * and a plane may then cut it more than twice: past
+             * MOTE__MAX_POLY vertices, an input vertex is dropped too */
+            if (ain && m < MOTE__MAX_POLY) {
                 tmp[m] = *a;
                 torig[m++] = orig[i];
             }
