@@ -15,6 +15,7 @@
  * The fixed-size cases use the triangle hook and must match exactly.
  */
 #include "ref/ref.h"
+#include "support/scenes.h"
 #include "support/testutil.h"
 #include "unity.h"
 
@@ -338,6 +339,50 @@ void the_largest_framebuffer_should_be_drawn_exactly_to_its_edges(void)
     }
 }
 
+/* Clipping's float rounding can leave a polygon a hair from convex, and
+ * the last plane then cut it more than twice: this triangle (found by a
+ * random search; near the near plane, past the far one, reaching to the
+ * guard band) came out of the six planes with 10 vertices, one more than
+ * the clipper's arrays hold, which it wrote past (ASan, SAN=1) and then
+ * fanned into 8 triangles. At most 9 vertices, 7 triangles, remain. */
+void a_polygon_cut_more_than_twice_by_a_plane_should_stay_in_its_arrays(void)
+{
+    enum { CW = 64, CH = 48 };
+    static uint8_t color[CW * CH * 4];
+    static uint32_t depth[CW * CH];
+    mote_device dev;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = CW;
+    d.height = CH;
+    d.color = color;
+    d.depth = depth;
+    TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_device_init(&dev, &d));
+    mote_frame_desc f = camera(0, 0, 0, 0, 0, 1);
+    f.camera.fov = 0.8f;
+    f.camera.znear = 0x1.3f9608p-5f;
+    f.camera.zfar = 0x1.dc451p+4f;
+    static const float p[3][3] = {{0x1.68511p+2f, -0x1.685112p+2f, 0x1.3f95fcp-5f},
+                                  {0x1.6131fap+12f, 0x1.fb5a54p+12f, 0x1.3944eap+5f},
+                                  {-0x1.552fc8p+12f, -0x1.2e752p+10f, 0x1.a36e52p+4f}};
+    static mote_vertex v[3];
+    static const uint32_t idx[3] = {0, 1, 2};
+    memset(v, 0, sizeof v);
+    for (int k = 0; k < 3; k++)
+        memcpy(v[k].position, p[k], sizeof p[k]);
+    mote_mesh m = tu_mesh_of(v, 3, idx, 3);
+    mote_draw_desc dd = desc(MOTE_MODE_GOURAUD, true);
+    TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_begin(&dev, &f));
+    TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_draw(&dev, &m, &dd));
+    TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_end(&dev));
+    const mote_stats *s = mote_device_stats(&dev);
+    uint32_t fan = s->triangles_clipped_away + s->triangles_degenerate + s->triangles_backface
+                 + s->triangles_drawn + s->triangles_invalid;
+    TEST_ASSERT_TRUE(fan >= 1);
+    TEST_ASSERT_TRUE(fan <= 7);
+    TEST_ASSERT_EQUAL_UINT64(CW * CH, s->pixels_written);   /* it covers the screen */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -348,5 +393,6 @@ int main(void)
     RUN_TEST(huge_coordinates_should_be_handled_by_the_guard_band);
     RUN_TEST(a_triangle_around_the_viewport_should_cover_it_at_any_size);
     RUN_TEST(the_largest_framebuffer_should_be_drawn_exactly_to_its_edges);
+    RUN_TEST(a_polygon_cut_more_than_twice_by_a_plane_should_stay_in_its_arrays);
     return UNITY_END();
 }

@@ -8,6 +8,7 @@
 #include "support/scenes.h"
 #include "unity.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -965,6 +966,16 @@ void device_init_should_reject_bad_descriptors(void)
     TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&d2, &d));
     d.width = MOTE_MAX_SIZE + 1;
     TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));
+    /* with stride 0 the default stride of a width past the limit must
+     * not overflow first (UBSan, SAN=1) */
+    d.width = INT_MAX;
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));
+    d.height = INT_MAX;
+    d.width = INT_MAX / 2 + 1;
+    d.color_format = MOTE_FORMAT_RGB565;
+    TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));
+    d.color_format = MOTE_FORMAT_DEFAULT;
+    d.height = H;
     d.width = W;
     d.band_height = 8;            /* band mode needs a flush callback */
     TEST_ASSERT_EQUAL(MOTE_ERR_INVALID_ARGUMENT, mote_device_init(&d2, &d));

@@ -502,6 +502,83 @@ void an_arena_just_large_enough_to_bin_should_hold_its_tile_table(void)
     tu_guard_free(color);
 }
 
+/* A parallel_for that runs the tasks in order on this thread. */
+static void tasks_in_order(void *user, int count, mote_task_fn fn, void *task_arg)
+{
+    (void)user;
+    for (int i = 0; i < count; i++)
+        fn(task_arg, i);
+}
+
+/* A binned draw cut into pieces (with parallel_for) has all its vertices
+ * transformed and lit in fours first, invalid ones too. With vertex
+ * colours each was then converted to setup's units again, also one whose
+ * texels are NaN or past 1e9, which that conversion does not take: a
+ * shift by a negative count (UBSan, SAN=1). The frame must stay the one
+ * the serial path draws. */
+void invalid_vertices_of_a_draw_cut_into_pieces_should_stay_defined(void)
+{
+    enum { N = 16 };              /* 16 x 16 quads: 512 triangles, cut in pieces */
+    static mote_vertex v[(N + 1) * (N + 1)];
+    static mote_rgba colors[(N + 1) * (N + 1)];
+    static uint32_t idx[N * N * 6];
+    static uint8_t texels[5 * 3 * 4];
+    static uint8_t serial[W * H * 4], pieces[W * H * 4];
+    mote_texture tex = {5, 3, MOTE_FORMAT_RGBA8888, 0, texels};
+    for (size_t i = 0; i < sizeof texels; i++)
+        texels[i] = (uint8_t)(i * 37 + 11);
+    const float bad_uv[] = {NAN, INFINITY, 1e30f, -3e8f};
+    for (int j = 0; j <= N; j++)
+        for (int i = 0; i <= N; i++) {
+            int k = j * (N + 1) + i;
+            memset(&v[k], 0, sizeof v[k]);
+            v[k].position[0] = -2.0f + 4.0f * (float)i / N;
+            v[k].position[1] = -2.0f + 4.0f * (float)j / N;
+            v[k].normal[2] = -1.0f;
+            v[k].uv[0] = (float)i / N;
+            v[k].uv[1] = (float)j / N;
+            if (k % 7 == 3)
+                v[k].uv[k % 2] = bad_uv[(k / 7) % 4];
+            colors[k] = (mote_rgba){(uint8_t)(k * 13), (uint8_t)(200 - k), (uint8_t)(k * 5 + 40), 255};
+        }
+    size_t n = 0;
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            uint32_t a = (uint32_t)(j * (N + 1) + i), b = a + 1, c = a + N + 2, d = a + N + 1;
+            const uint32_t quad[6] = {a, b, c, a, c, d};
+            memcpy(&idx[n], quad, sizeof quad);
+            n += 6;
+        }
+    mote_mesh m;
+    memset(&m, 0, sizeof m);
+    m.vertices = v;
+    m.vertex_count = (N + 1) * (N + 1);
+    m.indices = idx;
+    m.index_count = (uint32_t)n;
+    m.colors = colors;
+    m.material.texture = &tex;
+    mote_frame_desc f = plain_frame();
+    mote_stats stats[2];
+    for (int way = 0; way < 2; way++) {
+        guarded g;
+        guarded_init(&g, MOTE_FORMAT_RGBA8888, MOTE_DEPTH_FORMAT_32, 1u << 20, 0);
+        mote_device_desc d = g.dev.desc;
+        d.parallel_for = way ? tasks_in_order : NULL;
+        TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_device_init(&g.dev, &d));
+        TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_begin(&g.dev, &f));
+        TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_draw(&g.dev, &m, no_cull()));
+        TEST_ASSERT_EQUAL_INT(MOTE_OK, mote_end(&g.dev));
+        stats[way] = *mote_device_stats(&g.dev);
+        memcpy(way ? pieces : serial, g.color, sizeof serial);
+        guarded_check_free(&g);
+    }
+    TEST_ASSERT_TRUE(stats[0].triangles_invalid > 0);
+    TEST_ASSERT_TRUE(stats[0].triangles_drawn > 100);
+    TEST_ASSERT_EQUAL_UINT32(stats[0].triangles_invalid, stats[1].triangles_invalid);
+    TEST_ASSERT_EQUAL_UINT32(stats[0].triangles_drawn, stats[1].triangles_drawn);
+    TEST_ASSERT_EQUAL_MEMORY(serial, pieces, sizeof serial);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -513,5 +590,6 @@ int main(void)
     RUN_TEST(texel_ranges_at_the_limit_should_stay_defined);
     RUN_TEST(a_very_large_mesh_should_be_drawn_completely);
     RUN_TEST(an_arena_just_large_enough_to_bin_should_hold_its_tile_table);
+    RUN_TEST(invalid_vertices_of_a_draw_cut_into_pieces_should_stay_defined);
     return UNITY_END();
 }

@@ -53,8 +53,9 @@ mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc)
         d.color_format = MOTE_FORMAT_RGBA8888;
     if (d.depth_format == MOTE_DEPTH_FORMAT_DEFAULT)
         d.depth_format = MOTE_DEPTH_FORMAT_32;
+    /* unsigned: a width no device has (init refuses it) must not overflow */
     if (d.color_stride == 0)
-        d.color_stride = d.width * mote_format_bytes(d.color_format);
+        d.color_stride = (int)((unsigned)d.width * (unsigned)mote_format_bytes(d.color_format));
     /* 0 < clear_depth <= 1 (not NaN) by its bits, which order as positive
      * floats do (-0 and negatives have the sign bit): no soft-float calls */
     if (mote__float_bits(d.clear_depth) - 1u >= 0x3f800000u)

@@ -321,7 +321,10 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
             const mote__cvert *a = &poly[i], *b = &poly[(i + 1) % n];
             float da = mote__plane_dist(cx, a, p), db = mote__plane_dist(cx, b, p);
             bool ain = da >= 0.0f, bin = db >= 0.0f;
-            if (ain) {
+            /* float rounding can leave the polygon a hair from convex,
+             * and a plane may then cut it more than twice: past
+             * MOTE__MAX_POLY vertices, an input vertex is dropped too */
+            if (ain && m < MOTE__MAX_POLY) {
                 tmp[m] = *a;
                 torig[m++] = orig[i];
             }
@@ -728,6 +731,11 @@ static void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
     }
     if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors)
         for (int i = 0; i < 4; i++) {
+            /* an invalid vertex, which mote__prepare_vertices lights too,
+             * is never read, and its texels may be NaN or beyond what
+             * mote__to_setup converts */
+            if (tv[i]->state != 1)
+                continue;
             /* from the lit shade again: a vertex may be here twice */
             for (int k = 0; k < 3; k++)
                 tv[i]->c.s[k] = shade[k][i];
