@@ -1121,18 +1121,24 @@ void loader_should_draw_unindexed_meshes_as_consecutive_triangles(void)
     TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].indices[0]);
     TEST_ASSERT_EQUAL_UINT32(5, s.meshes[1].indices[2]);
     mote_scene_free(&s);
-    /* one geometry drawn unindexed by one mesh and by its indices by another */
+    /* one geometry drawn unindexed by one mesh and by its indices by
+     * another: read once each way, and each way shared by the meshes that
+     * follow (a copy per mesh let a small file that names a big geometry
+     * many times, alternating, take gigabytes) */
     load_json("{\"geometries\":{\"vertexData\":[{\"id\":\"g\",\"indices\":[2,1,0],"
               "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1]}]},"
               "\"meshes\":[{\"id\":\"a\",\"geometryId\":\"g\",\"isUnIndexed\":true},"
               "{\"id\":\"b\",\"geometryId\":\"g\"},"
-              "{\"id\":\"c\",\"geometryId\":\"g\",\"isUnIndexed\":true}]}", "g", &s);
-    TEST_ASSERT_EQUAL(3, s.mesh_count);
+              "{\"id\":\"c\",\"geometryId\":\"g\",\"isUnIndexed\":true},"
+              "{\"id\":\"d\",\"geometryId\":\"g\"}]}", "g", &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
     TEST_ASSERT_EQUAL_UINT32(6, s.meshes[0].index_count);
     TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].index_count);
     TEST_ASSERT_EQUAL_UINT32(2, s.meshes[1].indices[0]);
     TEST_ASSERT_EQUAL_PTR(s.meshes[0].indices, s.meshes[2].indices);
     TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[2].vertices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].indices, s.meshes[3].indices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].vertices, s.meshes[3].vertices);
     mote_scene_free(&s);
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
