@@ -1012,6 +1012,33 @@ void write_image_should_refuse_unknown_extensions_and_band_devices(void)
                                                    sizeof msg));
 }
 
+/* A write that fails half way (a full disk: /dev/full says ENOSPC to every
+ * write) is an error for PNG as for PPM: stbi_write_png ignored fwrite's
+ * result and said the PNG was written. A size whose rows stb_image_write
+ * cannot count in an int is refused before a pixel is read (its buffer
+ * size wrapped, and it wrote past the end). */
+void write_image_should_report_a_full_disk_and_refuse_what_stb_cannot_encode(void)
+{
+    uint8_t px[4 * 4 * 4] = {0};
+    static const char *const names[2] = {"full.png", "full.ppm"};
+    for (int k = 0; k < 2 && file_exists("/dev/full"); k++) {
+        const char *link = tmp_path(names[k]);
+        TEST_ASSERT_EQUAL(0, symlink("/dev/full", link));
+        msg[0] = '\0';
+        mote_result r = mote_write_rgba(link, px, 4, 4, 0, msg, sizeof msg);
+        unlink(link);
+        TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_IO, r, names[k]);
+        TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "write error"), msg);
+    }
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_rgba(tmp_path("no-dir/x.png"), px, 4, 4, 0, msg,
+                                                   sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "cannot create"));
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_write_rgba(tmp_path("huge.png"), px, 16384, 65537, 0,
+                                                      msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "16384 x 65537 is too large"));
+    TEST_ASSERT_FALSE(file_exists(tmp_path("huge.png")));
+}
+
 void loader_should_load_a_texture_once_for_two_materials(void)
 {
     uint8_t px[2 * 2 * 4] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 9, 9, 255};
@@ -1427,6 +1454,7 @@ int main(void)
     RUN_TEST(write_ppm_should_write_exact_bytes_from_an_rgba_device);
     RUN_TEST(write_png_should_convert_an_rgb565_device_like_read_pixel);
     RUN_TEST(write_image_should_refuse_unknown_extensions_and_band_devices);
+    RUN_TEST(write_image_should_report_a_full_disk_and_refuse_what_stb_cannot_encode);
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
