@@ -915,6 +915,36 @@ void texture_should_refuse_dimensions_over_the_limit_before_decoding(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* The decoders of Debian's stb_image 2.27 that have known faults are not
+ * run: a truncated run-length HDR scanline looped for ever in
+ * stbi_load_from_memory (CVE-2021-42715), and a 16-bit PGM was read past
+ * the end of its buffer (CVE-2021-42716). An 8-bit PPM, as mote writes
+ * them, still loads. */
+void texture_should_refuse_the_hdr_and_16_bit_pnm_that_stb_mishandles(void)
+{
+    mote_texture t;
+    /* the PNM first: without the check it fails here, not in a loop */
+    unsigned char pgm[64] = "P5\n4 4\n65535\n";
+    size_t head = strlen((const char *)pgm);
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED,
+                      mote_texture_load_memory(pgm, head + 4 * 4 * 2, NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "16-bit PNM"), msg);
+    TEST_ASSERT_NULL(t.pixels);
+    static const char hdr[] = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n\x02\x02\x00\x08";
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_texture_load_memory(hdr, sizeof hdr - 1, NULL, &t,
+                                                                     msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "Radiance HDR"), msg);
+    TEST_ASSERT_NULL(t.pixels);
+    static const uint8_t px[2 * 4] = {10, 20, 30, 255, 40, 50, 60, 255};
+    const char *path = tmp_path("eight.ppm");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_rgba(path, px, 2, 1, 0, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_texture_load(path, NULL, &t, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(2, t.width);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, t.pixels, sizeof px);
+    mote_texture_free(&t);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 void write_ppm_should_write_exact_bytes_from_an_rgba_device(void)
 {
     static uint8_t color[3 * 2 * 4];
@@ -1451,6 +1481,7 @@ int main(void)
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     RUN_TEST(texture_should_round_trip_a_png_exactly);
     RUN_TEST(texture_should_refuse_dimensions_over_the_limit_before_decoding);
+    RUN_TEST(texture_should_refuse_the_hdr_and_16_bit_pnm_that_stb_mishandles);
     RUN_TEST(write_ppm_should_write_exact_bytes_from_an_rgba_device);
     RUN_TEST(write_png_should_convert_an_rgb565_device_like_read_pixel);
     RUN_TEST(write_image_should_refuse_unknown_extensions_and_band_devices);
