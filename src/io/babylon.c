@@ -1967,9 +1967,9 @@ static R mote__active_camera(mote__ld *ld, bool warn, const cJSON **out, int *in
     if (!cams || !cams->child)
         return MOTE_OK;
     const char *active;
-    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "", &active));
+    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "scene", &active));
     if (!active)
-        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "", &active));
+        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "scene", &active));
     *out = cams->child;
     if (!active)
         return MOTE_OK;
