@@ -915,6 +915,36 @@ void texture_should_refuse_dimensions_over_the_limit_before_decoding(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* The decoders of Debian's stb_image 2.27 that have known faults are not
+ * run: a truncated run-length HDR scanline looped for ever in
+ * stbi_load_from_memory (CVE-2021-42715), and a 16-bit PGM was read past
+ * the end of its buffer (CVE-2021-42716). An 8-bit PPM, as mote writes
+ * them, still loads. */
+void texture_should_refuse_the_hdr_and_16_bit_pnm_that_stb_mishandles(void)
+{
+    mote_texture t;
+    /* the PNM first: without the check it fails here, not in a loop */
+    unsigned char pgm[64] = "P5\n4 4\n65535\n";
+    size_t head = strlen((const char *)pgm);
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED,
+                      mote_texture_load_memory(pgm, head + 4 * 4 * 2, NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "16-bit PNM"), msg);
+    TEST_ASSERT_NULL(t.pixels);
+    static const char hdr[] = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n\x02\x02\x00\x08";
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_texture_load_memory(hdr, sizeof hdr - 1, NULL, &t,
+                                                                     msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "Radiance HDR"), msg);
+    TEST_ASSERT_NULL(t.pixels);
+    static const uint8_t px[2 * 4] = {10, 20, 30, 255, 40, 50, 60, 255};
+    const char *path = tmp_path("eight.ppm");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_rgba(path, px, 2, 1, 0, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_texture_load(path, NULL, &t, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(2, t.width);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, t.pixels, sizeof px);
+    mote_texture_free(&t);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 void write_ppm_should_write_exact_bytes_from_an_rgba_device(void)
 {
     static uint8_t color[3 * 2 * 4];
@@ -1010,6 +1040,33 @@ void write_image_should_refuse_unknown_extensions_and_band_devices(void)
                                                              sizeof msg));
     TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_rgba("/nonexistent-dir/x.ppm", px, 1, 1, 0, msg,
                                                    sizeof msg));
+}
+
+/* A write that fails half way (a full disk: /dev/full says ENOSPC to every
+ * write) is an error for PNG as for PPM: stbi_write_png ignored fwrite's
+ * result and said the PNG was written. A size whose rows stb_image_write
+ * cannot count in an int is refused before a pixel is read (its buffer
+ * size wrapped, and it wrote past the end). */
+void write_image_should_report_a_full_disk_and_refuse_what_stb_cannot_encode(void)
+{
+    uint8_t px[4 * 4 * 4] = {0};
+    static const char *const names[2] = {"full.png", "full.ppm"};
+    for (int k = 0; k < 2 && file_exists("/dev/full"); k++) {
+        const char *link = tmp_path(names[k]);
+        TEST_ASSERT_EQUAL(0, symlink("/dev/full", link));
+        msg[0] = '\0';
+        mote_result r = mote_write_rgba(link, px, 4, 4, 0, msg, sizeof msg);
+        unlink(link);
+        TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_IO, r, names[k]);
+        TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "write error"), msg);
+    }
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_rgba(tmp_path("no-dir/x.png"), px, 4, 4, 0, msg,
+                                                   sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "cannot create"));
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_write_rgba(tmp_path("huge.png"), px, 16384, 65537, 0,
+                                                      msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "16384 x 65537 is too large"));
+    TEST_ASSERT_FALSE(file_exists(tmp_path("huge.png")));
 }
 
 void loader_should_load_a_texture_once_for_two_materials(void)
@@ -1121,18 +1178,24 @@ void loader_should_draw_unindexed_meshes_as_consecutive_triangles(void)
     TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].indices[0]);
     TEST_ASSERT_EQUAL_UINT32(5, s.meshes[1].indices[2]);
     mote_scene_free(&s);
-    /* one geometry drawn unindexed by one mesh and by its indices by another */
+    /* one geometry drawn unindexed by one mesh and by its indices by
+     * another: read once each way, and each way shared by the meshes that
+     * follow (a copy per mesh let a small file that names a big geometry
+     * many times, alternating, take gigabytes) */
     load_json("{\"geometries\":{\"vertexData\":[{\"id\":\"g\",\"indices\":[2,1,0],"
               "\"positions\":[0,0,0, 1,0,0, 0,1,0, 0,0,1, 1,0,1, 0,1,1]}]},"
               "\"meshes\":[{\"id\":\"a\",\"geometryId\":\"g\",\"isUnIndexed\":true},"
               "{\"id\":\"b\",\"geometryId\":\"g\"},"
-              "{\"id\":\"c\",\"geometryId\":\"g\",\"isUnIndexed\":true}]}", "g", &s);
-    TEST_ASSERT_EQUAL(3, s.mesh_count);
+              "{\"id\":\"c\",\"geometryId\":\"g\",\"isUnIndexed\":true},"
+              "{\"id\":\"d\",\"geometryId\":\"g\"}]}", "g", &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
     TEST_ASSERT_EQUAL_UINT32(6, s.meshes[0].index_count);
     TEST_ASSERT_EQUAL_UINT32(3, s.meshes[1].index_count);
     TEST_ASSERT_EQUAL_UINT32(2, s.meshes[1].indices[0]);
     TEST_ASSERT_EQUAL_PTR(s.meshes[0].indices, s.meshes[2].indices);
     TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[2].vertices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].indices, s.meshes[3].indices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].vertices, s.meshes[3].vertices);
     mote_scene_free(&s);
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
@@ -1447,9 +1510,11 @@ int main(void)
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     RUN_TEST(texture_should_round_trip_a_png_exactly);
     RUN_TEST(texture_should_refuse_dimensions_over_the_limit_before_decoding);
+    RUN_TEST(texture_should_refuse_the_hdr_and_16_bit_pnm_that_stb_mishandles);
     RUN_TEST(write_ppm_should_write_exact_bytes_from_an_rgba_device);
     RUN_TEST(write_png_should_convert_an_rgb565_device_like_read_pixel);
     RUN_TEST(write_image_should_refuse_unknown_extensions_and_band_devices);
+    RUN_TEST(write_image_should_report_a_full_disk_and_refuse_what_stb_cannot_encode);
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);

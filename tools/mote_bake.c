@@ -180,7 +180,13 @@ static void write_mesh(baker *b, int i)
     put_floats(b, m->rotation, 3);
     fputs(",\n        .rotation_quaternion = ", f);
     put_floats(b, m->rotation_quaternion, 4);
-    fprintf(f, ",\n        .use_quaternion = %s,\n        .scaling = ", tf(m->use_quaternion));
+    fprintf(f, ",\n        .use_quaternion = %s,\n", tf(m->use_quaternion));
+    /* isVisible false, a disabled parent, a camera or light in the tree:
+     * written only when set, so headers of scenes without any stay as
+     * they were */
+    if (m->hidden)
+        fputs("        .hidden = true,\n", f);
+    fputs("        .scaling = ", f);
     put_floats(b, m->scaling, 3);
     fputs(",\n", f);
     if (m->parent && m->parent >= s->meshes && m->parent < s->meshes + s->mesh_count)

@@ -203,7 +203,9 @@ typedef struct mote__node {
 typedef struct mote__geometry {
     const char *id;
     const cJSON *json;
-    int owner;                    /* the node holding its arrays, -1: none yet */
+    /* the node holding its arrays as drawn by its indices [0] or
+     * unindexed [1] (isUnIndexed), -1: none yet */
+    int owner[2];
 } mote__geometry;
 
 /* An id -> index map: a count, then sorted (id, index) pairs; the first of
@@ -1657,16 +1659,18 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
                               "%s.geometryId: \"%s\" names no geometries.vertexData entry",
                               where, mote__quote(geometry_id).s);
         mote__geometry *g = &ld->geometries[k];
-        /* parsed once: meshes share it (no copies), unless one draws it
-         * unindexed and the other by its indices */
-        if (g->owner >= 0 && ld->nodes[g->owner].unindexed == nd->unindexed) {
-            mote__share_arrays(nd, &ld->nodes[g->owner]);
+        /* parsed once for the meshes that draw it by its indices and once
+         * for those that draw it unindexed (their arrays differ: indices,
+         * smooth normals); the others share (no copies, however many
+         * meshes name it either way) */
+        int *owner = &g->owner[nd->unindexed];
+        if (*owner >= 0) {
+            mote__share_arrays(nd, &ld->nodes[*owner]);
         } else {
             char gat[64];
             snprintf(gat, sizeof gat, "geometries.vertexData[%d]", k);
             MOTE__TRY(mote__current_geometry(ld, g->json, gat, nd));
-            if (g->owner < 0)
-                g->owner = (int)(nd - ld->nodes);
+            *owner = (int)(nd - ld->nodes);
         }
     } else {
         /* an incremental (.incremental.babylon) or binary export keeps the
@@ -1706,7 +1710,7 @@ static R mote__nodes(mote__ld *ld)
             mote__geometry *e = &ld->geometries[ld->geometry_count++];
             e->id = cJSON_IsString(gid) ? gid->valuestring : NULL;
             e->json = g;
-            e->owner = -1;
+            e->owner[0] = e->owner[1] = -1;
         }
         int dup;
         ld->geometry_map = mote__idmap_build(ld, &ld->geometries[0].id, sizeof *ld->geometries,
@@ -1964,9 +1968,9 @@ static R mote__active_camera(mote__ld *ld, bool warn, const cJSON **out, int *in
     if (!cams || !cams->child)
         return MOTE_OK;
     const char *active;
-    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "", &active));
+    MOTE__TRY(mote__str(ld, ld->root, "activeCameraID", "scene", &active));
     if (!active)
-        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "", &active));
+        MOTE__TRY(mote__str(ld, ld->root, "activeCamera", "scene", &active));
     *out = cams->child;
     if (!active)
         return MOTE_OK;

@@ -6,6 +6,7 @@
 #include "io_internal.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -13,6 +14,33 @@
 #include <stb_image_write.h>
 
 typedef enum { MOTE__IMG_PNG, MOTE__IMG_PPM } mote__img_kind;
+
+/* Opens path for writing; NULL with the message set when it cannot. */
+static FILE *mote__create(const char *path, const char *name, char *message,
+                          size_t message_size)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        mote__io_error(message, message_size, MOTE_ERR_IO, "%s: cannot create: %s", name,
+                       strerror(errno));
+    return f;
+}
+
+/* Closes f; every byte written (ok) and the close succeeding, or an error
+ * naming the file (a full disk shows at fwrite or at fclose). */
+static mote_result mote__finish(FILE *f, bool ok, const char *name, char *message,
+                                size_t message_size)
+{
+    int err = ok ? 0 : errno;   /* why the write failed, before fclose changes it */
+    if (fclose(f) != 0 && ok) {
+        err = errno;
+        ok = false;
+    }
+    if (!ok)
+        return mote__io_error(message, message_size, MOTE_ERR_IO, "%s: write error%s%s", name,
+                              err ? ": " : "", err ? strerror(err) : "");
+    return MOTE_OK;
+}
 
 static mote_result mote__write_ppm_rgba(const char *path, const uint8_t *rgba, int width,
                                         int height, int stride, char *message,
@@ -24,11 +52,10 @@ static mote_result mote__write_ppm_rgba(const char *path, const uint8_t *rgba, i
     if (!row)
         return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
                               "%s: out of memory", name);
-    FILE *f = fopen(path, "wb");
+    FILE *f = mote__create(path, name, message, message_size);
     if (!f) {
         mote__io_free(row);
-        return mote__io_error(message, message_size, MOTE_ERR_IO, "%s: cannot create: %s",
-                              name, strerror(errno));
+        return MOTE_ERR_IO;
     }
     bool ok = fprintf(f, "P6\n%d %d\n255\n", width, height) > 0;
     for (int y = 0; ok && y < height; y++) {
@@ -37,12 +64,48 @@ static mote_result mote__write_ppm_rgba(const char *path, const uint8_t *rgba, i
             memcpy(row + (size_t)x * 3, src + (size_t)x * 4, 3);
         ok = fwrite(row, 3, (size_t)width, f) == (size_t)width;
     }
-    if (fclose(f) != 0)
-        ok = false;
     mote__io_free(row);
-    if (!ok)
-        return mote__io_error(message, message_size, MOTE_ERR_IO, "%s: write error", name);
-    return MOTE_OK;
+    return mote__finish(f, ok, name, message, message_size);
+}
+
+/* stb_image_write hands the encoded PNG to this: written here, so that a
+ * short write is seen (stbi_write_png ignores fwrite's result and reports
+ * success on a full disk). */
+typedef struct mote__png_sink {
+    FILE *f;
+    bool ok;
+} mote__png_sink;
+
+static void mote__png_write(void *context, void *data, int size)
+{
+    mote__png_sink *sink = context;
+    if (sink->ok && size > 0)
+        sink->ok = fwrite(data, 1, (size_t)size, sink->f) == (size_t)size;
+}
+
+static mote_result mote__write_png_rgba(const char *path, const uint8_t *rgba, int width,
+                                        int height, int stride, char *message,
+                                        size_t message_size)
+{
+    char name[160];
+    mote__io_clean_name(name, sizeof name, path);
+    /* stb_image_write sizes its filter buffer as the int (width * 4 + 1)
+     * * height: past INT_MAX that wraps, and it writes past the end */
+    if ((size_t)width * 4 + 1 > (size_t)INT_MAX / (size_t)height)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "%s: %d x %d is too large for a PNG written by stb_image_write "
+                              "(2 GiB of rows at the most)", name, width, height);
+    FILE *f = mote__create(path, name, message, message_size);
+    if (!f)
+        return MOTE_ERR_IO;
+    mote__png_sink sink = {f, true};
+    if (!stbi_write_png_to_func(mote__png_write, &sink, width, height, 4, rgba, stride)) {
+        fclose(f);
+        remove(path);             /* nothing was written to it */
+        return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
+                              "%s: out of memory encoding the PNG", name);
+    }
+    return mote__finish(f, sink.ok, name, message, message_size);
 }
 
 static mote_result mote__write_rgba_as(mote__img_kind kind, const char *path,
@@ -63,13 +126,7 @@ static mote_result mote__write_rgba_as(mote__img_kind kind, const char *path,
                               "write image: stride %d is less than width * 4", stride);
     if (kind == MOTE__IMG_PPM)
         return mote__write_ppm_rgba(path, rgba, width, height, stride, message, message_size);
-    if (!stbi_write_png(path, width, height, 4, rgba, stride)) {
-        char name[160];
-        mote__io_clean_name(name, sizeof name, path);
-        return mote__io_error(message, message_size, MOTE_ERR_IO,
-                              "%s: cannot write the PNG file", name);
-    }
-    return MOTE_OK;
+    return mote__write_png_rgba(path, rgba, width, height, stride, message, message_size);
 }
 
 static int mote__kind_of(const char *path)

@@ -51,6 +51,21 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
                               "texture: %lu x %lu is larger than the limit of %d x %d",
                               (unsigned long)pw, (unsigned long)ph, lim.max_texture_width,
                               lim.max_texture_height);
+    /* Two of stb_image's decoders are refused before they see the bytes,
+     * as the libstb mote links (Debian's, stb_image 2.27) has their known
+     * faults: its Radiance HDR decoder loops for ever on a truncated
+     * run-length scanline (CVE-2021-42715), and its PNM decoder reads past
+     * its buffer on a 16-bit PGM or PPM (CVE-2021-42716). Neither is a
+     * format exporters give a diffuse texture; 8-bit PNM still loads. */
+    const unsigned char *d = data;
+    if (stbi_is_hdr_from_memory(data, (int)size))
+        return mote__io_error(message, message_size, MOTE_ERR_UNSUPPORTED,
+                              "texture: a Radiance HDR image, which mote does not read");
+    if (size >= 2 && d[0] == 'P' && (d[1] == '5' || d[1] == '6') &&
+        stbi_is_16_bit_from_memory(data, (int)size))
+        return mote__io_error(message, message_size, MOTE_ERR_UNSUPPORTED,
+                              "texture: a 16-bit PNM image, which mote does not read (8-bit "
+                              "ones it does)");
     int w = 0, h = 0, comp = 0;
     if (!stbi_info_from_memory(data, (int)size, &w, &h, &comp))
         return mote__io_error(message, message_size, MOTE_ERR_PARSE,

@@ -3,8 +3,10 @@
  * header baked from tests/data/vertex_colors.babylon (tests/bake/bake.mk)
  * against the same file loaded with mote_scene_load, field by field, with
  * its vertex colours (one array per vertex array, shared by sub-meshes),
- * and rendered to the same bytes; and a scene seen by an orthographic
- * camera (tests/data/ortho_camera.babylon), baked as "ortho".
+ * and rendered to the same bytes; the one baked from
+ * tests/data/bake_hidden.babylon, whose hidden meshes stay hidden; and a
+ * scene seen by an orthographic camera (tests/data/ortho_camera.babylon),
+ * baked as "ortho".
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -12,6 +14,7 @@
 
 #include "baked.h"
 #include "ortho.h"
+#include "baked_hidden.h"
 
 #include <string.h>
 
@@ -121,6 +124,41 @@ void baked_meshes_should_keep_which_are_two_sided(void)
     TEST_ASSERT_TRUE(two > 0 && two < scene.mesh_count);
 }
 
+/* A mesh the loader hides (isVisible false, or under a disabled node) is
+ * baked hidden: the firmware draws what the loaded scene draws. The hidden
+ * meshes are red quads in front of the green triangle, over the whole
+ * frame. */
+void baked_meshes_should_keep_which_are_hidden(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_HIDDEN, NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(s.mesh_count, BAKED_HIDDEN_MESH_COUNT);
+    int hidden = 0;
+    for (int i = 0; i < s.mesh_count; i++) {
+        TEST_ASSERT_EQUAL(s.meshes[i].hidden, baked_hidden_meshes[i].hidden);
+        hidden += baked_hidden_meshes[i].hidden;
+    }
+    TEST_ASSERT_TRUE(hidden >= 2);
+    static uint8_t loaded[W * H * 4], baked[W * H * 4];
+    mote_frame_desc frame;
+    mote_scene_frame(&s, (float)W / (float)H, &frame);
+    mote_draw_desc d;
+    memset(&d, 0, sizeof d);
+    d.mode = MOTE_MODE_GOURAUD;
+    d.cull = MOTE_CULL_NONE;
+    render(s.meshes, s.mesh_count, &frame, s.clear_color, d, loaded);
+    render(baked_hidden_meshes, BAKED_HIDDEN_MESH_COUNT, &baked_hidden_frame,
+           baked_hidden_clear_color, d, baked);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
+    int green = 0;
+    for (int i = 0; i < W * H; i++) {
+        TEST_ASSERT_EQUAL_UINT8(0, baked[4 * i]);
+        green += baked[4 * i + 1] > 0;
+    }
+    TEST_ASSERT_TRUE(green > 100);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -128,5 +166,6 @@ int main(void)
     RUN_TEST(a_baked_scene_should_render_the_same_bytes_as_the_loaded_one);
     RUN_TEST(baked_meshes_should_keep_which_are_two_sided);
     RUN_TEST(a_baked_orthographic_camera_should_render_as_loaded);
+    RUN_TEST(baked_meshes_should_keep_which_are_hidden);
     return UNITY_END();
 }
