@@ -17,6 +17,7 @@
 #include <mote/mote_io.h>
 
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -383,6 +384,26 @@ static bool valid_name(const char *s)
     return true;
 }
 
+/* "WxH", each 1..MOTE_MAX_SIZE, nothing else (sscanf's %d was undefined
+ * past INT_MAX and took spaces) */
+static bool parse_size(const char *s, int *width, int *height)
+{
+    long v[2];
+    for (int k = 0; k < 2; k++) {
+        char *end;
+        if (!isdigit((unsigned char)*s))
+            return false;
+        errno = 0;
+        v[k] = strtol(s, &end, 10);
+        if (errno != 0 || v[k] < 1 || v[k] > MOTE_MAX_SIZE || *end != (k == 0 ? 'x' : '\0'))
+            return false;
+        s = end + 1;
+    }
+    *width = (int)v[0];
+    *height = (int)v[1];
+    return true;
+}
+
 int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *name = "scene";
@@ -411,9 +432,7 @@ int main(int argc, char **argv)
                 return 2;
             }
         } else if (!strcmp(a, "--size") && has_value) {
-            char extra;
-            if (sscanf(argv[++i], "%dx%d%c", &width, &height, &extra) != 2 || width < 1 || height < 1
-                || width > MOTE_MAX_SIZE || height > MOTE_MAX_SIZE) {
+            if (!parse_size(argv[++i], &width, &height)) {
                 fprintf(stderr, "mote-bake: --size wants WxH within 1..%d, got '%s'\n", MOTE_MAX_SIZE,
                         argv[i]);
                 return 2;
@@ -421,6 +440,11 @@ int main(int argc, char **argv)
         } else if (a[0] != '-' && !in) {
             in = a;
         } else {
+            if (a[0] == '-' && !has_value && (!strcmp(a, "-o") || !strcmp(a, "--name")
+                                              || !strcmp(a, "--format") || !strcmp(a, "--size")))
+                fprintf(stderr, "mote-bake: %s needs a value\n", a);
+            else
+                fprintf(stderr, "mote-bake: unexpected argument '%s'\n", a);
             usage(stderr);
             return 2;
         }
@@ -467,7 +491,7 @@ int main(int argc, char **argv)
     }
     b.f = fopen(out, "w");
     if (!b.f) {
-        fprintf(stderr, "mote-bake: %s: cannot write\n", out);
+        fprintf(stderr, "mote-bake: %s: cannot write: %s\n", out, strerror(errno));
         goto done;
     }
     int w = bake(&b, width, height, in);

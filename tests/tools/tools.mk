@@ -1,6 +1,7 @@
-# mote-render's command line, run by tests/tools/mote_render.sh as part of
-# `make test` (BIN: where the built tool is).
+# The command lines of mote-render and mote-bake, run by
+# tests/tools/mote_render.sh and tests/tools/mote_bake.sh as part of
+# `make test` (BIN: where the built tools are).
 
-test-build: $(MOTE_RENDER)
-TEST_EXTRA += tests/tools/mote_render.sh
+test-build: $(MOTE_RENDER) $(BIN)/mote-bake
+TEST_EXTRA += tests/tools/mote_render.sh tests/tools/mote_bake.sh
 test: export BIN := $(BIN)
