@@ -5,15 +5,10 @@
 # Unity-style line "N Tests F Failures I Ignored" for tests/run.sh.
 #
 #   BIN=build/bin sh tests/tools/mote_bake.sh      (make test does this)
-set -u
+script=tests/tools/mote_bake.sh
+. "$(dirname "$0")/common.sh"
 B=${BIN:-build/bin}/mote-bake
 scene=$(dirname "$0")/../data/ortho_camera.babylon
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT INT TERM
-tests=0; failures=0
-
-pass() { tests=$((tests + 1)); echo "tests/tools/mote_bake.sh:0:$1:PASS"; }
-fail() { tests=$((tests + 1)); failures=$((failures + 1)); echo "tests/tools/mote_bake.sh:0:$1:FAIL: $2"; }
 
 # refused NAME PATTERN ARGS...: mote-bake ARGS must exit 2 saying PATTERN
 refused() {
@@ -49,7 +44,4 @@ else
     fail $name "$(cat "$tmp/out")"
 fi
 
-echo
-echo "-----------------------"
-echo "$tests Tests $failures Failures 0 Ignored"
-[ "$failures" -eq 0 ]
+summary

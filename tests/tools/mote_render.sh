@@ -5,14 +5,9 @@
 # "N Tests F Failures I Ignored" for tests/run.sh.
 #
 #   BIN=build/bin sh tests/tools/mote_render.sh      (make test does this)
-set -u
+script=tests/tools/mote_render.sh
+. "$(dirname "$0")/common.sh"
 R=${BIN:-build/bin}/mote-render
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT INT TERM
-tests=0; failures=0
-
-pass() { tests=$((tests + 1)); echo "tests/tools/mote_render.sh:0:$1:PASS"; }
-fail() { tests=$((tests + 1)); failures=$((failures + 1)); echo "tests/tools/mote_render.sh:0:$1:FAIL: $2"; }
 
 # pixel FILE X Y: "r g b" of a binary PPM (P6) as mote writes it: a
 # three-line header "P6", "W H", "255", then rows of RGB
@@ -115,7 +110,4 @@ else
     pass $name
 fi
 
-echo
-echo "-----------------------"
-echo "$tests Tests $failures Failures 0 Ignored"
-[ "$failures" -eq 0 ]
+summary
