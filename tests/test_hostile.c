@@ -400,7 +400,7 @@ void texel_ranges_at_the_limit_should_stay_defined(void)
     for (size_t u = 0; u < sizeof uvs / sizeof uvs[0]; u++)
         for (int persp = 0; persp < MOTE_PERSPECTIVE_COUNT; persp++)
             for (int filter = 0; filter < MOTE_FILTER_COUNT; filter++)
-                for (int wrap = 0; wrap < 3; wrap++) {
+                for (int wrap = 0; wrap < MOTE_WRAP_COUNT; wrap++) {   /* mirror too */
                     set_tri(0, &tri[0][0]);
                     for (int k = 0; k < 3; k++)
                         memcpy(tri_v[k].uv, uvs[u][k], sizeof tri_v[k].uv);

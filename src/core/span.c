@@ -160,21 +160,23 @@ MOTE__INLINE mote__taps mote__bilinear_taps(const mote__tex_view *tx, bool pow2_
 {
     u -= 0x8000;
     v -= 0x8000;
-    int iu = (int)(u >> 16), iv = (int)(v >> 16);
+    /* the next column and row from the 64-bit value: iu + 1 overflowed int
+     * where garbage texels (a hostile texel range) made iu INT_MAX */
+    int iu = (int)(u >> 16), iv = (int)(v >> 16), iu1 = (int)((u >> 16) + 1), iv1 = (int)((v >> 16) + 1);
     mote__taps t;
     t.fu = (uint32_t)(u >> 8) & 0xff;
     t.fv = (uint32_t)(v >> 8) & 0xff;
     int u0, u1, v0, v1;
     if (pow2_repeat) {
         u0 = iu & (tx->w - 1);
-        u1 = (iu + 1) & (tx->w - 1);
+        u1 = iu1 & (tx->w - 1);
         v0 = iv & (tx->h - 1);
-        v1 = (iv + 1) & (tx->h - 1);
+        v1 = iv1 & (tx->h - 1);
     } else {
         u0 = mote__wrap(iu, tx->w, tx->wrap_u);
-        u1 = mote__wrap(iu + 1, tx->w, tx->wrap_u);
+        u1 = mote__wrap(iu1, tx->w, tx->wrap_u);
         v0 = mote__wrap(iv, tx->h, tx->wrap_v);
-        v1 = mote__wrap(iv + 1, tx->h, tx->wrap_v);
+        v1 = mote__wrap(iv1, tx->h, tx->wrap_v);
     }
     t.u0 = (size_t)u0;
     t.u1 = (size_t)u1;
