@@ -77,10 +77,13 @@ static int32_t random_shade(bool edges_too)
  * vertex 0 takes extreme shades, so that shades still vary. */
 static void random_triangle(int32_t X[3], int32_t Y[3], mote__svert v[3], int sk, bool grey, float uv_range)
 {
+    /* one in four with one w at its corners, as an orthographic camera
+     * sees every triangle: the exact variants hand those to the affine ones */
+    const bool one_w = next_u32() % 4 == 0;
     for (int k = 0; k < 3; k++) {
         X[k] = (int32_t)(next_u32() % ((W + 20) << 8)) - (10 << 8);
         Y[k] = (int32_t)(next_u32() % ((H + 20) << 8)) - (10 << 8);
-        v[k].w = frand(0.2f, 5.0f);
+        v[k].w = one_w && k > 0 ? v[0].w : frand(0.2f, 5.0f);
         v[k].depth = frand(0.0f, 1.0f);
         v[k].z = (int32_t)(v[k].depth * (float)MOTE__DEPTH_MAX);
         for (int c = 0; c < 3; c++)
@@ -110,7 +113,7 @@ void every_specialised_span_should_match_the_generic_span(void)
     static uint32_t da[W * H], db[W * H];
     static uint8_t texels[16 * 8 * 4];
     mote_texture tex = random_texture(texels, 16, 8);
-    int variants = 0, wide = 0;
+    int variants = 0, wide = 0, constant_q = 0;
     /* texture addressing: 0 = repeat x mirror (any size), 1 = power-of-two
      * repeat (its own loop), 2 = the same with texel ranges so wide that
      * setup lowers the reciprocal's K (the variants hand those to the
@@ -151,6 +154,7 @@ void every_specialised_span_should_match_the_generic_span(void)
                 continue;
             TEST_ASSERT_EQUAL_INT(sk, tri.shade);
             wide += tri.rbits != MOTE__RBITS;
+            constant_q += p == MOTE__PERSP_CORRECT && sk != MOTE__SHADE_BLACK && tri.qdx == 0 && tri.qdy == 0;
             mote__rect all = {0, 0, W, H};
             /* as binned: the record's bytes only (mote__tri_bytes), garbage after them */
             mote__tri binned;
@@ -172,6 +176,9 @@ void every_specialised_span_should_match_the_generic_span(void)
     }
     /* the wide-range triangles really took the other K */
     TEST_ASSERT_GREATER_THAN_INT(100, wide);
+    /* and exact triangles with one w really have a constant Q (and so
+     * went to the affine variants) */
+    TEST_ASSERT_GREATER_THAN_INT(100, constant_q);
     /* the table really is used for these combinations */
     TEST_ASSERT_EQUAL_INT(2 * 3 * 3 * MOTE__SHADE_COUNT * 3, variants);
 }

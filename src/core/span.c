@@ -752,10 +752,20 @@ enum { MOTE__TABLE_SHADES = MOTE__SHADE_BLACK };   /* flat, mono, RGB */
 #define MOTE__SHADES(X, T) MOTE__PERSPS(X, T, 0) MOTE__PERSPS(X, T, 1) MOTE__PERSPS(X, T, 2)
 #define MOTE__ALL(X) MOTE__SHADES(X, 0) MOTE__SHADES(X, 1) MOTE__SHADES(X, 2)
 
+/* A triangle whose 1/w is the same at its three corners (every triangle
+ * an orthographic camera sees, and faces parallel to the image) has a Q
+ * plane without steps: each pixel's reciprocal is the one of Q's value at
+ * the origin, which the affine variant works out once. So an exact
+ * variant hands such a triangle to its affine sibling (P 0, defined just
+ * before it): the same bytes, without a division a pixel. */
 #define MOTE__DEFINE(T, S, P, D, F)                                                         \
     static void mote__fill_##T##S##P##D##_##F(const mote__tri *t, const mote__target *tg,   \
                                               mote__rect r, int bits)                       \
     {                                                                                       \
+        if (P == MOTE__PERSP_CORRECT && (T || S) && (t->qdx | t->qdy) == 0) {               \
+            mote__fill_##T##S##0##D##_##F(t, tg, r, bits);                                  \
+            return;                                                                         \
+        }                                                                                   \
         mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, MOTE__D_TEST | MOTE__D_WRITE, MOTE_FORMAT_##F, MOTE__RBITS); \
     }
 MOTE__ALL(MOTE__DEFINE)
