@@ -2592,11 +2592,8 @@ static R mote__ortho_box(mote__ld *ld, const cJSON *cam, const char *at, mote_ca
     c->projection = MOTE_PROJECTION_ORTHOGRAPHIC;
     int given = 0;
     for (int k = 0; k < 4; k++) {
-        const cJSON *v = mote__get(cam, keys[k]);
-        if (v && !cJSON_IsNull(v)) {
-            MOTE__TRY(mote__num(ld, cam, keys[k], at, &c->ortho[k]));
-            given++;
-        }
+        given += mote__get(cam, keys[k]) != NULL;   /* null: not written */
+        MOTE__TRY(mote__num(ld, cam, keys[k], at, &c->ortho[k]));
     }
     if (given < 4) {
         memset(c->ortho, 0, sizeof c->ortho);

@@ -9,6 +9,21 @@ tests=0; failures=0
 pass() { tests=$((tests + 1)); echo "$script:0:$1:PASS"; }
 fail() { tests=$((tests + 1)); failures=$((failures + 1)); echo "$script:0:$1:FAIL: $2"; }
 
+# fails NAME STATUS PATTERN CMD...: passes NAME when CMD exits with STATUS
+# ("any": any but 0) and its output says PATTERN
+fails() {
+    name=$1; want=$2; pattern=$3; shift 3
+    "$@" >"$tmp/out" 2>&1
+    status=$?
+    if [ $status -eq 0 ] || { [ "$want" != any ] && [ $status -ne "$want" ]; }; then
+        fail "$name" "exit status $status, expected $want: $(cat "$tmp/out")"
+    elif ! grep -q -- "$pattern" "$tmp/out"; then
+        fail "$name" "no \"$pattern\" in: $(cat "$tmp/out")"
+    else
+        pass "$name"
+    fi
+}
+
 # prints "N Tests F Failures 0 Ignored"; the status says whether all passed
 summary() {
     echo
