@@ -103,6 +103,14 @@ static void begin_small_frame(mote_device *dev, uint8_t *color, int size)
 /* one triangle's geometry, for scenes written inline */
 #define TRI "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]"
 
+/* mesh k's material colour is rgb */
+static void assert_material_rgb(const mote_scene *s, int k, const uint8_t rgb[3])
+{
+    TEST_ASSERT_EQUAL_UINT8(rgb[0], s->meshes[k].material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(rgb[1], s->meshes[k].material.color.g);
+    TEST_ASSERT_EQUAL_UINT8(rgb[2], s->meshes[k].material.color.b);
+}
+
 /* ---- the tutorial's monkey -------------------------------------------- */
 
 void loader_should_read_the_tutorial_monkey(void)
@@ -560,11 +568,8 @@ void loader_should_resolve_material_unique_id_before_material_id(void)
     load_json(j, "u", &s);
     TEST_ASSERT_EQUAL(4, s.mesh_count);
     static const uint8_t rgb[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {0, 0, 255}};
-    for (int k = 0; k < 4; k++) {
-        TEST_ASSERT_EQUAL_UINT8(rgb[k][0], s.meshes[k].material.color.r);
-        TEST_ASSERT_EQUAL_UINT8(rgb[k][1], s.meshes[k].material.color.g);
-        TEST_ASSERT_EQUAL_UINT8(rgb[k][2], s.meshes[k].material.color.b);
-    }
+    for (int k = 0; k < 4; k++)
+        assert_material_rgb(&s, k, rgb[k]);
     mote_scene_free(&s);
 }
 
@@ -631,6 +636,65 @@ void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
     }
     TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
     TEST_ASSERT_EQUAL_UINT32(1, mote_device_stats(&dev)->triangles_backface);
+    mote_scene_free(&s);
+}
+
+/* disableLighting: Babylon.js binds no lights, so the material shows
+ * clamp(emissive + ambient x the scene's ambient colour); a PBR material's
+ * unlit shows its albedo. The flag is per mesh, applied by
+ * mote_scene_draw_desc, and a drawn triangle takes exactly that colour in
+ * a frame without lights; a lit material's emissive colour is named in a
+ * warning, as mote does not draw it. */
+void loader_should_draw_disable_lighting_materials_by_their_emissive_colour(void)
+{
+    const char *j = "{\"ambientColor\":[0.5,0.5,0.5],\"materials\":["
+                    "{\"id\":\"glow\",\"disableLighting\":true,\"diffuse\":[1,0,0],"
+                    "\"emissive\":[0.2,0.4,0.6],\"ambient\":[0.4,0.2,0]},"
+                    "{\"id\":\"dark\",\"disableLighting\":1,\"diffuse\":[1,1,1]},"
+                    "{\"id\":\"pbr\",\"albedo\":[0,1,0],\"unlit\":true},"
+                    "{\"id\":\"lit\",\"diffuse\":[0,0,1],\"emissiveColor\":[1,1,1]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"glow\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"dark\"," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"pbr\"," TRI "},"
+                    "{\"id\":\"d\",\"materialId\":\"lit\"," TRI "}]}";
+    mote_scene s;
+    load_json(j, "u", &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
+    TEST_ASSERT_NOT_NULL(strstr(s.warning, "materials[3]: its emissive colour is not drawn"));
+    static const bool want_unlit[4] = {true, true, true, false};
+    /* 0.2 + 0.4 x 0.5, 0.4 + 0.2 x 0.5, 0.6: (102, 128, 153); nothing; the
+     * albedo; the diffuse colour */
+    static const uint8_t want_rgb[4][3] = {{102, 128, 153}, {0, 0, 0}, {0, 255, 0}, {0, 0, 255}};
+    for (int k = 0; k < 4; k++) {
+        TEST_ASSERT_EQUAL(want_unlit[k], s.unlit[k]);
+        TEST_ASSERT_TRUE(s.meshes[k].material.color_set);
+        assert_material_rgb(&s, k, want_rgb[k]);
+        mote_draw_desc d;
+        mote_scene_draw_desc(&s, k, NULL, &d);
+        TEST_ASSERT_EQUAL(want_unlit[k], d.unlit);
+    }
+    /* a frame without lights: the unlit triangle is its colour, pixel for
+     * pixel, where the lit one would be black */
+    for (int k = 0; k < 4; k += 3) {
+        static uint8_t color[16 * 16 * 4];
+        memset(color, 0, sizeof color);
+        mote_device dev;
+        begin_small_frame(&dev, color, 16);
+        mote_draw_desc d;
+        mote_scene_draw_desc(&s, k, NULL, &d);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[k], &d));
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+        int drawn = 0, coloured = 0;
+        for (int p = 0; p < 16 * 16; p++) {
+            const uint8_t *px = color + 4 * p;
+            if (px[3] == 0)
+                continue;
+            drawn++;
+            coloured += px[0] == want_rgb[k][0] && px[1] == want_rgb[k][1] && px[2] == want_rgb[k][2];
+        }
+        TEST_ASSERT_GREATER_THAN(4, drawn);
+        TEST_ASSERT_EQUAL(k == 0 ? drawn : 0, coloured);
+    }
     mote_scene_free(&s);
 }
 
@@ -1520,6 +1584,7 @@ int main(void)
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
+    RUN_TEST(loader_should_draw_disable_lighting_materials_by_their_emissive_colour);
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);
     RUN_TEST(loader_should_warn_about_positions_without_indices);

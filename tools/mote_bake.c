@@ -214,6 +214,18 @@ static void write_mesh(baker *b, int i)
     fputs("    },\n", f);
 }
 
+/* A per-mesh flag of the scene's as an array NAME_WHAT (all 0 when the
+ * scene has none) */
+static void write_mesh_flags(baker *b, const char *what, const char *comment, const bool *flags)
+{
+    const int n = b->scene->mesh_count;
+    fprintf(b->f, "/* per mesh: %s */\n", comment);
+    fprintf(b->f, "static const bool %s_%s[%d] = {", b->name, what, n);
+    for (int i = 0; i < n; i++)
+        fprintf(b->f, "%s%d", i ? ", " : "", flags && flags[i] ? 1 : 0);
+    fprintf(b->f, "};\n\n");
+}
+
 static void write_frame(baker *b, const mote_frame_desc *fr)
 {
     FILE *f = b->f;
@@ -355,13 +367,11 @@ static int bake(baker *b, int width, int height, const char *source)
         for (int i = 0; i < s->mesh_count; i++)
             write_mesh(b, i);
         fprintf(f, "};\n\n");
-        /* culling is a draw option, not a mesh field: the firmware reads
-         * this to draw a mesh whose material has backFaceCulling false */
-        fprintf(f, "/* per mesh: draw with cull = MOTE_CULL_NONE (backFaceCulling false) */\n");
-        fprintf(f, "static const bool %s_two_sided[%d] = {", b->name, s->mesh_count);
-        for (int i = 0; i < s->mesh_count; i++)
-            fprintf(f, "%s%d", i ? ", " : "", s->two_sided && s->two_sided[i] ? 1 : 0);
-        fprintf(f, "};\n\n");
+        /* culling and lighting are draw options, not mesh fields: the
+         * firmware reads these to draw a mesh as mote_scene_draw_desc would */
+        write_mesh_flags(b, "two_sided", "draw with cull = MOTE_CULL_NONE (backFaceCulling false)",
+                         s->two_sided);
+        write_mesh_flags(b, "unlit", "draw with unlit = true (disableLighting)", s->unlit);
     }
 
     mote_frame_desc frame;

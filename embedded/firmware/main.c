@@ -95,6 +95,7 @@ int main(void)
     for (int i = 0; i < SCENE_MESH_COUNT; i++) {
         mote_draw_desc draw = {0};
         draw.cull = scene_two_sided[i] ? MOTE_CULL_NONE : MOTE_CULL_DEFAULT;
+        draw.unlit = scene_unlit[i];
         if ((r = mote_draw(&dev, &scene_meshes[i], &draw)) != MOTE_OK)
             fail("mote_draw", r);
     }

@@ -88,6 +88,13 @@ typedef struct mote_scene {
      * per-draw option (mote_draw_desc.cull), not a material property:
      * mote_scene_draw_desc applies these. */
     const bool *two_sided;
+    /* One flag per mesh: its material says disableLighting (or a PBR
+     * material unlit), so Babylon.js draws it without lights: the material
+     * colour is then clamp(emissive + ambient x the scene's ambient colour)
+     * (a PBR material's: its albedo), and mote_scene_draw_desc sets
+     * mote_draw_desc.unlit, which draws that colour x texture x vertex
+     * colour, as Babylon.js does. */
+    const bool *unlit;
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
@@ -103,9 +110,9 @@ typedef struct mote_scene {
  * and transform nodes, sharing its arrays and material. Materials resolve
  * by materialUniqueId, then materialId (the last of equal ids); a texture
  * with coordinatesIndex 1 samples uvs2; backFaceCulling false fills
- * two_sided; images may be embedded as base64 data: URLs (base64String,
- * or name). A right-handed file (useRightHandedSystem) loads mirrored in
- * z (mirrored_z). */
+ * two_sided, disableLighting unlit; images may be embedded as base64
+ * data: URLs (base64String, or name). A right-handed file
+ * (useRightHandedSystem) loads mirrored in z (mirrored_z). */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures
@@ -122,7 +129,8 @@ void mote_scene_free(mote_scene *scene);
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
 
 /* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with
- * cull MOTE_CULL_NONE where the mesh's material has backFaceCulling false. */
+ * cull MOTE_CULL_NONE where the mesh's material has backFaceCulling false,
+ * and unlit where it says disableLighting (mote_scene.unlit). */
 void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_desc *base,
                           mote_draw_desc *out);
 

@@ -7,7 +7,9 @@
  * a run-time property of its meshes, not written to files), so `colors` are
  * always used; `hasVertexAlpha` is not read, as mote ignores alpha.
  * Materials: diffuse/albedo colour and texture, backFaceCulling (kept per
- * mesh in mote_scene.two_sided: the core's culling is a draw option), and
+ * mesh in mote_scene.two_sided: the core's culling is a draw option),
+ * disableLighting with the emissive and ambient colours, or PBR's unlit
+ * (mote_scene.unlit, drawn without lights), and
  * the texture's coordinatesIndex (1: uvs2, read only when a material asks
  * for it). Textures are files in the scene's folder, or base64 data: URLs
  * (base64String, or name) decoded in texture.c.
@@ -131,6 +133,7 @@ typedef struct mote__mat {
     mote_material material;
     signed char invert_y;         /* the texture's invertY: 0, 1, or -1 (not said) */
     bool two_sided;               /* backFaceCulling false */
+    bool unlit;                   /* disableLighting (or PBR's unlit): no lights */
     bool uv2;                     /* the texture's coordinatesIndex is 1: it samples uvs2 */
 } mote__mat;
 
@@ -936,6 +939,40 @@ static uint8_t mote__unit_byte(float c)
     return (uint8_t)(c * 255.0f + 0.5f);
 }
 
+/* Babylon.js's StandardMaterial adds the emissive colour and ambient x the
+ * scene's ambient colour to the lights, then clamps. With disableLighting it
+ * binds no lights, so those two alone, clamped, are what multiplies the
+ * texture and the vertex colours: exactly what mote's unlit draw does with
+ * that as the material colour. On a lit material mote cannot add them (its
+ * lights multiply the material colour), so a glowing one is named in a
+ * warning. A PBR material's unlit shows its albedo as it is. */
+static R mote__emissive(mote__ld *ld, const cJSON *m, const char *at, mote__mat *mm)
+{
+    float emissive[3] = {0, 0, 0}, ambient[3] = {0, 0, 0};
+    const char *key = mote__get(m, "emissiveColor") && !mote__get(m, "emissive") ? "emissiveColor" : "emissive";
+    MOTE__TRY(mote__vec(ld, m, key, at, 3, 4, emissive));
+    MOTE__TRY(mote__vec(ld, m, "ambient", at, 3, 4, ambient));
+    bool pbr_unlit = false;
+    MOTE__TRY(mote__flag(ld, m, "unlit", at, &pbr_unlit));
+    if (pbr_unlit) {
+        mm->unlit = true;
+        return MOTE_OK;
+    }
+    if (!mm->unlit) {
+        if (emissive[0] > 0.0f || emissive[1] > 0.0f || emissive[2] > 0.0f)
+            mote__warn(ld, "%s: its emissive colour is not drawn (mote adds no light to a lit material)", at);
+        return MOTE_OK;
+    }
+    const float *scene_ambient = ld->scene->ambient;
+    mote_rgba *c = &mm->material.color;
+    c->r = mote__unit_byte(emissive[0] + ambient[0] * scene_ambient[0]);
+    c->g = mote__unit_byte(emissive[1] + ambient[1] * scene_ambient[1]);
+    c->b = mote__unit_byte(emissive[2] + ambient[2] * scene_ambient[2]);
+    c->a = 255;
+    mm->material.color_set = true;
+    return MOTE_OK;
+}
+
 static R mote__materials(mote__ld *ld)
 {
     const cJSON *list;
@@ -990,6 +1027,7 @@ static R mote__materials(mote__ld *ld)
         bool cull_back = true;
         MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
         mm->two_sided = !cull_back;
+        MOTE__TRY(mote__flag(ld, m, "disableLighting", at, &mm->unlit));
         static const char *const color_keys[4] = {"diffuse", "diffuseColor", "albedo",
                                                   "albedoColor"};
         for (int k = 0; k < 4; k++) {
@@ -1004,6 +1042,7 @@ static R mote__materials(mote__ld *ld)
             mm->material.color_set = true;
             break;
         }
+        MOTE__TRY(mote__emissive(ld, m, at, mm));
         static const char *const tex_keys[2] = {"diffuseTexture", "albedoTexture"};
         for (int k = 0; k < 2; k++) {
             const cJSON *t = mote__get(m, tex_keys[k]);
@@ -2482,11 +2521,12 @@ static R mote__build_meshes(mote__ld *ld)
     if (!sc->meshes)
         return mote__oom(ld, "meshes");
     sc->mesh_count = (int)total;
-    /* a byte per mesh, so that mote_scene_draw_desc needs no search */
-    bool *two_sided = mote__store_alloc(ld->keep, total, sizeof *two_sided);
+    /* a byte per mesh and flag, so that mote_scene_draw_desc needs no search */
+    bool *two_sided = mote__store_alloc(ld->keep, 2 * total, sizeof *two_sided), *unlit = two_sided + total;
     if (!two_sided)
         return mote__oom(ld, "meshes");
     sc->two_sided = two_sided;
+    sc->unlit = unlit;
     for (int i = 0; i < ld->node_count; i++) {
         mote__node *nd = &ld->nodes[i];
         for (int s = 0; s < nd->mesh_count; s++) {
@@ -2514,6 +2554,7 @@ static R mote__build_meshes(mote__ld *ld)
             if (mat) {
                 m->material = mat->material;
                 two_sided[nd->first_mesh + s] = mat->two_sided;
+                unlit[nd->first_mesh + s] = mat->unlit;
                 if (mat->uv2)
                     MOTE__TRY(mote__uv2_vertices(ld, nd, m));
             }
@@ -2891,6 +2932,8 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     /* a right-handed scene is loaded mirrored (mote__mirror_point) */
     R r = mote__flag(ld, root, "useRightHandedSystem", "scene", &ld->right_handed);
     ld->scene->mirrored_z = ld->right_handed;
+    /* the ambient colour first: an unlit material's colour takes it in */
+    if (r == MOTE_OK) r = mote__scene_colors(ld);
     if (r == MOTE_OK) r = mote__materials(ld);
     if (r == MOTE_OK) r = mote__multi_materials(ld);
     if (r == MOTE_OK) r = mote__nodes(ld);
@@ -2899,7 +2942,6 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     if (r == MOTE_OK) r = mote__build_meshes(ld);
     if (r == MOTE_OK) r = mote__camera(ld);
     if (r == MOTE_OK) r = mote__lights(ld);
-    if (r == MOTE_OK) r = mote__scene_colors(ld);
     cJSON_Delete(root);
     ld->root = NULL;
     return r;
@@ -3017,9 +3059,14 @@ void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_des
         memset(out, 0, sizeof *out);
     /* Babylon.js draws both sides of a mesh whose material says
      * backFaceCulling false: no culling, whatever the caller asked */
-    if (scene && scene->two_sided && mesh >= 0 && mesh < scene->mesh_count &&
-        scene->two_sided[mesh])
+    if (!scene || mesh < 0 || mesh >= scene->mesh_count)
+        return;
+    if (scene->two_sided && scene->two_sided[mesh])
         out->cull = MOTE_CULL_NONE;
+    /* and without lights one whose material says disableLighting (its
+     * colour is then the emissive one: mote__emissive) */
+    if (scene->unlit && scene->unlit[mesh])
+        out->unlit = true;
 }
 
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame)

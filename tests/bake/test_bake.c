@@ -4,7 +4,8 @@
  * against the same file loaded with mote_scene_load, field by field, with
  * its vertex colours (one array per vertex array, shared by sub-meshes),
  * and rendered to the same bytes; the one baked from
- * tests/data/bake_hidden.babylon, whose hidden meshes stay hidden; and a
+ * tests/data/bake_hidden.babylon, whose hidden meshes stay hidden and
+ * whose disableLighting sign stays unlit; and a
  * scene seen by an orthographic camera (tests/data/ortho_camera.babylon),
  * baked as "ortho".
  */
@@ -159,6 +160,53 @@ void baked_meshes_should_keep_which_are_hidden(void)
     TEST_ASSERT_TRUE(green > 100);
 }
 
+/* A mesh whose material says disableLighting is baked unlit, and drawn
+ * with the baked flags it renders as the loaded scene drawn through
+ * mote_scene_draw_desc: its emissive blue (0.5: 128) exactly, lights or
+ * not (the hidden scene's sign, in a corner of the frame). */
+void baked_meshes_should_keep_which_are_unlit(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_HIDDEN, NULL, &s, msg, sizeof msg), msg);
+    int unlit = 0;
+    for (int i = 0; i < s.mesh_count; i++) {
+        TEST_ASSERT_EQUAL(s.unlit[i], baked_hidden_unlit[i]);
+        unlit += baked_hidden_unlit[i];
+    }
+    TEST_ASSERT_EQUAL(1, unlit);
+    static uint8_t loaded[W * H * 4], baked[W * H * 4];
+    static uint32_t depth[W * H];
+    mote_frame_desc frame;
+    mote_scene_frame(&s, (float)W / (float)H, &frame);
+    for (int lights = 0; lights < 2; lights++) {
+        if (!lights)
+            frame.light_count = 0;
+        for (int b = 0; b < 2; b++) {
+            mote_device dev;
+            mote_device_desc desc = {.width = W, .height = H, .color = b ? baked : loaded, .depth = depth};
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &desc));
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+            for (int i = 0; i < s.mesh_count; i++) {
+                mote_draw_desc d = {0};
+                if (b) {
+                    d.cull = baked_hidden_two_sided[i] ? MOTE_CULL_NONE : MOTE_CULL_DEFAULT;
+                    d.unlit = baked_hidden_unlit[i];
+                } else {
+                    mote_scene_draw_desc(&s, i, NULL, &d);
+                }
+                TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, b ? &baked_hidden_meshes[i] : &s.meshes[i], &d));
+            }
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+        }
+        TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
+        int sign = 0;
+        for (int i = 0; i < W * H; i++)
+            sign += baked[4 * i] == 0 && baked[4 * i + 1] == 0 && baked[4 * i + 2] == 128;
+        TEST_ASSERT_TRUE(sign > 10);
+    }
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -167,5 +215,6 @@ int main(void)
     RUN_TEST(baked_meshes_should_keep_which_are_two_sided);
     RUN_TEST(a_baked_orthographic_camera_should_render_as_loaded);
     RUN_TEST(baked_meshes_should_keep_which_are_hidden);
+    RUN_TEST(baked_meshes_should_keep_which_are_unlit);
     return UNITY_END();
 }
