@@ -84,7 +84,7 @@ install: lib
 	    mote.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/mote.pc
 
 clean:
-	rm -rf build build-san $(OUT)
+	rm -rf build build-san $(TSAN_BUILD) $(OUT)
 
 help:
 	@echo "make            build libmote.a, the examples and mote-render"
@@ -97,6 +97,7 @@ help:
 	@echo "make test-embedded  render on an emulated Cortex-M (qemu) and compare"
 	@echo "make fuzz       run each libFuzzer target (FUZZ_SECONDS=60)"
 	@echo "make valgrind   the examples and mote-render under valgrind memcheck"
+	@echo "make tsan       the parallel path under ThreadSanitizer (pthreads, and OpenMP via clang)"
 	@echo "make assets     regenerate assets/ with tools/gen_assets.c"
 	@echo "make install PREFIX=/usr/local   headers, libmote.a and mote.pc"
 	@echo "make clean      remove build outputs"
