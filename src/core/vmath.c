@@ -105,16 +105,15 @@ void mote__normal_matrix(const float m[16], bool mirrors, float out[9])
      * the scale does not matter because normals are normalised afterwards,
      * but the sign does: for a mirroring matrix (negative determinant) the
      * products are subtracted the other way round, or every normal would
-     * point inward. With indices taken cyclically the 3x3 cofactor signs
-     * come out alone. */
-#define M(r, c) m[(c) * 4 + (r)]
-    /* r1, r2 and c1, c2: the next two indices after r and c, cyclically */
+     * point inward. Row r of the cofactors is the cross product of rows
+     * r + 1 and r + 2 (indices taken cyclically); crossed the other way
+     * round, it is negated bit for bit. */
+    float rows[3][3];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            rows[r][c] = m[c * 4 + r];
     for (int r = 0, r1 = 1, r2 = 2; r < 3; r1 = r2, r2 = r, r++)
-        for (int c = 0, c1 = 1, c2 = 2; c < 3; c1 = c2, c2 = c, c++) {
-            float a = M(r1, c1) * M(r2, c2), b = M(r1, c2) * M(r2, c1);
-            out[r * 3 + c] = mirrors ? b - a : a - b;
-        }
-#undef M
+        mote__cross3(rows[mirrors ? r2 : r1], rows[mirrors ? r1 : r2], out + 3 * r);
 }
 
 static void mote__quat_matrix(const float q[4], float m[16])
