@@ -1476,6 +1476,7 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     /* a mirroring transform reverses the screen winding of front faces
      * (as Babylon.js and three.js take it): culling follows */
     bool mirrored = mote__world_matrix(mesh, cx->world);
+    mote__sub3(cx->world + 12, dev->frame.camera.position);   /* relative to the camera (mote_begin) */
     mote__mat4_mul(dev->view_proj, cx->world, cx->mvp);
     mote__normal_matrix(cx->world, mirrored, cx->nrm);
     if (mote__mesh_outside(cx))

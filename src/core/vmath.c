@@ -199,6 +199,12 @@ static void mote__normalize3(float v[3])
     }
 }
 
+void mote__sub3(float a[3], const float b[3])
+{
+    for (int k = 0; k < 3; k++)
+        a[k] -= b[k];
+}
+
 void mote__cross3(const float a[3], const float b[3], float out[3])
 {
     out[0] = a[1] * b[2] - a[2] * b[1];
@@ -206,14 +212,15 @@ void mote__cross3(const float a[3], const float b[3], float out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-void mote_camera_view_matrix(const mote_camera *camera, float view[16])
+void mote__view_rotation(const mote_camera *camera, float view[16])
 {
     /* Left-handed look-at (Babylon's LookAtLH): z toward the target. */
     vec3 up = {camera->up[0], camera->up[1], camera->up[2]};
     if (mote__zero3(up))
         up[1] = 1.0f;
-    vec3 z = {camera->target[0] - camera->position[0], camera->target[1] - camera->position[1],
-              camera->target[2] - camera->position[2]};
+    vec3 z;
+    memcpy(z, camera->target, sizeof z);
+    mote__sub3(z, camera->position);
     mote__normalize3(z);
     vec3 x, y;
     mote__cross3(up, z, x);
@@ -228,16 +235,21 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16])
     }
     mote__normalize3(x);
     mote__cross3(z, x, y);
-    const float *e = camera->position;
     mote__mat4_identity(view);
     for (int i = 0; i < 3; i++) {
         view[i * 4 + 0] = x[i];
         view[i * 4 + 1] = y[i];
         view[i * 4 + 2] = z[i];
     }
-    view[12] = -mote__dot3(x, e);
-    view[13] = -mote__dot3(y, e);
-    view[14] = -mote__dot3(z, e);
+}
+
+void mote_camera_view_matrix(const mote_camera *camera, float view[16])
+{
+    mote__view_rotation(camera, view);
+    for (int i = 0; i < 3; i++) {   /* minus the position along each axis */
+        const float axis[3] = {view[i], view[4 + i], view[8 + i]};
+        view[12 + i] = -mote__dot3(axis, camera->position);
+    }
 }
 
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect, float proj[16])
@@ -292,7 +304,9 @@ bool mote_project(const mote_device *dev, const float p[3], float *x, float *y, 
     if (!dev || !p || !x || !y || !z)
         return false;
     float c[4];
-    mote__mat4_point(dev->view_proj, p, c);
+    memcpy(c, p, 3 * sizeof *c);
+    mote__sub3(c, dev->frame.camera.position);   /* as the vertex stage does (mote_begin) */
+    mote__mat4_point(dev->view_proj, c, c);
     if (!(c[3] > 0.0f) || c[2] < 0.0f)
         return false;
     float W = (float)dev->desc.width, H = (float)dev->desc.height;
@@ -329,8 +343,8 @@ void mote_mesh_update_bounds(mote_mesh *mesh)
         if (!mote__finite3(p))
             continue;
         float d[3];
-        for (int k = 0; k < 3; k++)
-            d[k] = p[k] - mesh->bounds_center[k];
+        memcpy(d, p, sizeof d);
+        mote__sub3(d, mesh->bounds_center);
         float dd = mote__dot3(d, d);
         if (dd > r2)
             r2 = dd;
