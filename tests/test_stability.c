@@ -147,9 +147,52 @@ void a_scene_far_from_the_origin_should_render_as_at_the_origin(void)
     }
 }
 
+/* ---- cameras ------------------------------------------------------------------ */
+
+/* The look-at's axes are normalised vectors, whose squares leave float's
+ * range for a target more than about 1.8e19 units away, an up vector of
+ * such a length or below 1e-19, and a camera looking a hair from its up
+ * (its x axis is then a tiny cross product): those drew nothing, or a
+ * squeezed image. Each case against the double projection of the same
+ * floats (the reference normalises in double). */
+void the_camera_should_keep_its_axes_for_vectors_of_any_length(void)
+{
+    static const struct { const char *what; double target, up, down; } cases[] = {
+        {"target 1e20 away", 1e20, 1, 0},        {"target 1e30 away", 1e30, 1, 0},
+        {"up 1e-30 long", 0, 1e-30, 0},           {"up 1e30 long", 0, 1e30, 0},
+        {"looking down, 1e-20 off vertical", 0, 1, 1e-20},
+        {"looking down, 1e-30 off vertical", 0, 1, 1e-30},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        tu_scene s;
+        tu_scene_build(TU_SCENE_TEXTURED, MOTE_WRAP_REPEAT, &s);
+        mote_camera *c = &s.frame.camera;
+        if (cases[i].target > 0) {   /* the same view, the target along it far away */
+            double d[3], n = 0.0;
+            for (int k = 0; k < 3; k++) {
+                d[k] = (double)c->target[k] - c->position[k];
+                n += d[k] * d[k];
+            }
+            for (int k = 0; k < 3; k++)
+                c->target[k] = (float)(c->position[k] + d[k] / sqrt(n) * cases[i].target);
+        }
+        c->up[1] = (float)cases[i].up;
+        if (cases[i].down > 0) {     /* from 8 units above, a hair off the vertical */
+            const float eye[3] = {0, 8, 0}, at[3] = {(float)cases[i].down, 0, (float)(0.5 * cases[i].down)};
+            memcpy(c->position, eye, sizeof eye);
+            memcpy(c->target, at, sizeof at);
+        }
+        double err = vertex_error(&s.frame, &s.meshes[1]);
+        printf("%-36s cube's vertex error %.4f px\n", cases[i].what, err);
+        snprintf(msg, sizeof msg, "%s: vertex error %.4f px", cases[i].what, err);
+        TEST_ASSERT_TRUE_MESSAGE(err <= 0.005, msg);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(a_scene_far_from_the_origin_should_render_as_at_the_origin);
+    RUN_TEST(the_camera_should_keep_its_axes_for_vectors_of_any_length);
     return UNITY_END();
 }

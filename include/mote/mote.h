@@ -568,11 +568,10 @@ typedef struct mote_device {
     bool clear_pending;           /* the frame's clear is to run beside the setup (bin.c) */
     mote_frame_desc frame;
     /* the camera's projection x view (column-major, as cglm's mat4),
-     * both without the camera's translation: the vertex stage works
-     * relative to frame.camera.position, and frame's point and spot
-     * lights have it subtracted (mote_begin) */
+     * without the camera's translation: the vertex stage works relative
+     * to frame.camera.position, and frame's point and spot lights have it
+     * subtracted (mote_begin) */
     float view_proj[16];
-    float view[16];
 #if MOTE_ENABLE_LIGHT_FALLOFF
     /* per light of the frame, for a spot light's cone: 1 / |direction|
      * and cos(spot_angle / 2) (geometry.c's mote__falloff) */

@@ -132,7 +132,6 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
 #endif
     }
     mote__mat4_identity(dev->view_proj);
-    mote__mat4_identity(dev->view);
     dev->ready = true;
     return MOTE_OK;
 }
@@ -306,10 +305,10 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
      * (tests/test_stability.c). */
     for (int i = 0; i < dev->frame.light_count; i++)
         mote__sub3(dev->frame.lights[i].position, frame->camera.position);
-    float proj[16];
-    mote__view_rotation(&frame->camera, dev->view);
+    float proj[16], view[16];
+    mote__view_rotation(&frame->camera, view);
     mote_camera_projection_matrix(&frame->camera, (float)dev->desc.width / (float)dev->desc.height, proj);
-    mote__mat4_mul(proj, dev->view, dev->view_proj);
+    mote__mat4_mul(proj, view, dev->view_proj);
     memset(&dev->stats, 0, sizeof dev->stats);
     dev->draw_count = 0;
     dev->in_frame = true;

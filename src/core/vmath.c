@@ -189,9 +189,22 @@ void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
     mote__world_matrix(mesh, world);
 }
 
+/* v / |v| (a zero vector stays as it is). The square of a vector longer
+ * than about 1.8e19 overflows, and that of one shorter than about 1e-19
+ * loses bits or vanishes (a target far away, a tiny up vector, a camera
+ * looking a hair from its up, whose x axis is then a tiny cross
+ * product): such a vector is first scaled by 2^-100 or 2^100, which is
+ * exact, so its direction survives. Any other is divided as it is. */
 static void mote__normalize3(float v[3])
 {
-    float len = mote__sqrtf(mote__dot3(v, v));
+    float dd = mote__dot3(v, v);
+    uint32_t e = mote__float_bits(dd) >> 23;   /* dd >= 0, or NaN */
+    if (e - 16u > 220u) {                        /* dd < 2^-111 or dd >= 2^110 */
+        for (int k = 0; k < 3; k++)
+            v[k] *= e < 16u ? 0x1p100f : 0x1p-100f;
+        dd = mote__dot3(v, v);
+    }
+    float len = mote__sqrtf(dd);
     if (len > 0.0f) {
         v[0] /= len;
         v[1] /= len;
