@@ -418,6 +418,74 @@ void texel_coordinates_far_from_zero_should_stay_within_1_lsb(void)
             }
 }
 
+/* One quad of ground, 1000 x 1000 units, its 256-texel texture repeated
+ * n times across it, seen from 1 unit above (the lower half of the image
+ * magnifies the texels). Each texel holds its own coordinates, so a pixel
+ * says which texel mote sampled; the reference says which it should be.
+ * The texel coordinates are exact floats here; what moves a texel's edge
+ * by a pixel or so is the float perspective weights (a texel off, up to
+ * 1000 repeats), and past that the per-pixel reciprocal, which keeps a
+ * bit less for each doubling of a triangle's texel range past 2^11
+ * texels (setup.c's K, for a 64-bit product): at 10000 repeats 45% of
+ * the pixels are more than a texel off (with a 128-bit product and K at
+ * 54, tried and left out, none was). Held: within one texel up to 100
+ * repeats (25,600 texels); 1000 and 10000 are printed. Tessellate large
+ * tiled planes. */
+void a_large_tiled_quad_should_sample_within_a_texel_up_to_100_repeats(void)
+{
+    static uint8_t texels[256 * 256 * 4], mote_img[W * H * 4], ref_img[W * H * 4];
+    static const mote_texture tex = {256, 256, MOTE_FORMAT_RGBA8888, 0, texels};
+    for (int y = 0; y < 256; y++)
+        for (int x = 0; x < 256; x++) {
+            uint8_t *p = &texels[4 * (y * 256 + x)];
+            p[0] = (uint8_t)x;
+            p[1] = (uint8_t)y;
+            p[2] = 0;
+            p[3] = 255;
+        }
+    static const float repeats[] = {10, 100, 1000, 10000};
+    static mote_vertex v[4];
+    static const uint32_t idx[6] = {0, 1, 2, 0, 2, 3};
+    for (size_t i = 0; i < sizeof repeats / sizeof repeats[0]; i++) {
+        static const float corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (int k = 0; k < 4; k++) {
+            memset(&v[k], 0, sizeof v[k]);
+            v[k].position[0] = corner[k][0] * 500.0f;
+            v[k].position[1] = -1.0f;
+            v[k].position[2] = corner[k][1] * 500.0f;
+            v[k].normal[1] = 1.0f;
+            v[k].uv[0] = (corner[k][0] + 1.0f) * 0.5f * repeats[i];
+            v[k].uv[1] = (corner[k][1] + 1.0f) * 0.5f * repeats[i];
+        }
+        mote_mesh m = tu_mesh_of(v, 4, idx, 6);
+        m.material.texture = &tex;
+        const mote_frame_desc f = {.camera = {.position = {3.3f, 0, 7.1f}, .target = {3.3f, -0.6f, 8.1f},
+                                              .fov = 0.9f, .znear = 0.1f, .zfar = 2000.0f}};
+        const mote_draw_desc d = {.mode = MOTE_MODE_TEXTURED, .unlit = true, .cull = MOTE_CULL_NONE};
+        const tu_vs_opts o = {W, H, 8, MOTE_DEPTH_FORMAT_32};
+        tu_vs_result r;
+        TEST_ASSERT_TRUE(tu_vs_ref(&o, &f, &m, 1, &d, true, &r, mote_img, ref_img));
+        long off[2][3] = {{0}};   /* lower half, upper half: texels off by 0, 1, more */
+        int worst = 0;
+        for (int p = 0; p < W * H; p++) {
+            int e = 0;
+            for (int c = 0; c < 2; c++) {   /* texel differences modulo 256 */
+                const int ec = abs((int8_t)(uint8_t)(mote_img[4 * p + c] - ref_img[4 * p + c]));
+                e = ec > e ? ec : e;
+            }
+            off[p < W * H / 2][e < 2 ? e : 2]++;
+            worst = e > worst ? e : worst;
+        }
+        printf("%5.0f repeats: texels off by 0 / 1 / more: lower half %ld / %ld / %ld, upper half %ld / %ld / %ld"
+               "%s\n", repeats[i], off[0][0], off[0][1], off[0][2], off[1][0], off[1][1], off[1][2],
+               repeats[i] <= 100 ? "" : " (not held)");
+        snprintf(msg, sizeof msg, "%g repeats: a texel off by %d", repeats[i], worst);
+        if (repeats[i] <= 100) {
+            TEST_ASSERT_TRUE_MESSAGE(worst <= 1, msg);
+        }
+    }
+}
+
 /* ---- turning ---------------------------------------------------------------------- */
 
 /* An animation that turns a mesh by multiplying its quaternion by a small
@@ -474,6 +542,7 @@ int main(void)
     RUN_TEST(narrow_fields_of_view_should_stay_within_the_float_turn);
     RUN_TEST(lighting_should_hold_up_at_extreme_values);
     RUN_TEST(texel_coordinates_far_from_zero_should_stay_within_1_lsb);
+    RUN_TEST(a_large_tiled_quad_should_sample_within_a_texel_up_to_100_repeats);
     RUN_TEST(a_quaternion_turned_frame_after_frame_should_not_scale_its_mesh);
     return UNITY_END();
 }
