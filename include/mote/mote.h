@@ -120,7 +120,11 @@
  * WHERE FLOAT IS USED
  *   The vertex stage (transform, lighting, clipping, perspective divide) and
  *   triangle setup (a few divisions per triangle) use single-precision
- *   float; there is no double anywhere in the core. Everything per pixel
+ *   float; there is no double anywhere in the core. Vertices and lights
+ *   are taken relative to the camera's position (one subtraction of it
+ *   from each mesh's translation and light position, exact when the two
+ *   are close), so a scene far from the origin loses nothing beyond what
+ *   its own float coordinates hold. Everything per pixel
  *   (edge walking, interpolation, texturing, depth, pixel formats) is
  *   integer. On a core without an FPU (Cortex-M0+) the float work is done
  *   by libgcc's soft-float routines, per vertex and per triangle, never per
@@ -563,8 +567,11 @@ typedef struct mote_device {
     bool in_frame;
     bool clear_pending;           /* the frame's clear is to run beside the setup (bin.c) */
     mote_frame_desc frame;
-    float view_proj[16];          /* column-major, as cglm's mat4 */
-    float view[16];
+    /* the camera's projection x view (column-major, as cglm's mat4),
+     * without the camera's translation: the vertex stage works relative
+     * to frame.camera.position, and frame's point and spot lights have it
+     * subtracted (mote_begin) */
+    float view_proj[16];
 #if MOTE_ENABLE_LIGHT_FALLOFF
     /* per light of the frame, for a spot light's cone: 1 / |direction|
      * and cos(spot_angle / 2) (geometry.c's mote__falloff) */

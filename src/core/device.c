@@ -132,7 +132,6 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
 #endif
     }
     mote__mat4_identity(dev->view_proj);
-    mote__mat4_identity(dev->view);
     dev->ready = true;
     return MOTE_OK;
 }
@@ -295,10 +294,21 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
         dev->spot_cone[i][1] = mote_cosf(0.5f * l->spot_angle);
     }
 #endif
-    float proj[16];
-    mote_camera_view_matrix(&frame->camera, dev->view);
+    /* The vertex stage works relative to the camera's position: a mesh's
+     * translation and a light's position less the camera's, one float
+     * subtraction each, exact when the two are within a factor of two of
+     * each other however far from the origin both are; then the view
+     * turns and projects. Composed as view x world, the view's
+     * translation and the mesh's cancelled after each was rounded at its
+     * own magnitude: a scene 1e5 units from the origin had its vertices
+     * 0.3 pixel off at 160x120 and 1e6 units 2.3 pixels
+     * (tests/test_stability.c). */
+    for (int i = 0; i < dev->frame.light_count; i++)
+        mote__sub3(dev->frame.lights[i].position, frame->camera.position);
+    float proj[16], view[16];
+    mote__view_rotation(&frame->camera, view);
     mote_camera_projection_matrix(&frame->camera, (float)dev->desc.width / (float)dev->desc.height, proj);
-    mote__mat4_mul(proj, dev->view, dev->view_proj);
+    mote__mat4_mul(proj, view, dev->view_proj);
     memset(&dev->stats, 0, sizeof dev->stats);
     dev->draw_count = 0;
     dev->in_frame = true;

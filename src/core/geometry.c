@@ -339,7 +339,8 @@ static int mote__clip(const mote__ctx *cx, mote__cvert *poly, bool *orig, int n,
         }
         n = m;
         memcpy(poly, tmp, (size_t)n * sizeof *poly);
-        memcpy(orig, torig, (size_t)n * sizeof *orig);
+        if (MOTE_ENABLE_LINES)    /* the edges' origins: only wireframe reads them */
+            memcpy(orig, torig, (size_t)n * sizeof *orig);
     }
     return n;
 }
@@ -1382,9 +1383,9 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
     out->cull = (mote_cull)mote__enum_or(out->cull, MOTE_CULL_COUNT, MOTE_CULL_BACK);
     out->perspective = (mote_perspective)mote__enum_or(out->perspective, MOTE_PERSPECTIVE_COUNT,
                                                        MOTE_PERSPECTIVE_CORRECT);
-    if (out->subspan_log2 <= 0)
+    if (MOTE_ENABLE_SUBSPAN && out->subspan_log2 <= 0)   /* a build without it refuses it */
         out->subspan_log2 = 3;
-    if (out->subspan_log2 > 6)
+    if (MOTE_ENABLE_SUBSPAN && out->subspan_log2 > 6)
         out->subspan_log2 = 6;
     out->filter = (mote_filter)mote__enum_or(out->filter, MOTE_FILTER_COUNT, MOTE_FILTER_NEAREST);
     /* only points and wireframe read it, which a build without lines refuses */
@@ -1475,6 +1476,7 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     /* a mirroring transform reverses the screen winding of front faces
      * (as Babylon.js and three.js take it): culling follows */
     bool mirrored = mote__world_matrix(mesh, cx->world);
+    mote__sub3(cx->world + 12, dev->frame.camera.position);   /* relative to the camera (mote_begin) */
     mote__mat4_mul(dev->view_proj, cx->world, cx->mvp);
     mote__normal_matrix(cx->world, mirrored, cx->nrm);
     if (mote__mesh_outside(cx))
@@ -1506,7 +1508,8 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     cx->cull_ccw = cx->d.cull == (front_cw ? MOTE_CULL_BACK : MOTE_CULL_FRONT);
     rs->tex = MOTE__TEX_NONE;
     if (mode == MOTE_MODE_TEXTURED && mote__texture_ok(mat->texture)) {
-        rs->tex = cx->d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR : MOTE__TEX_NEAREST;
+        rs->tex = MOTE_ENABLE_BILINEAR && cx->d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR
+                                                                                 : MOTE__TEX_NEAREST;
         rs->texture = mat->texture;
         rs->tex_w = mat->texture->width;
         rs->tex_h = mat->texture->height;
@@ -1521,7 +1524,7 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     bool varying = rs->gouraud || rs->tex != MOTE__TEX_NONE;
     rs->persp = !varying ? MOTE__PERSP_CORRECT
               : cx->d.perspective == MOTE_PERSPECTIVE_AFFINE ? MOTE__PERSP_AFFINE
-              : cx->d.perspective == MOTE_PERSPECTIVE_SUBSPAN ? MOTE__PERSP_SUBSPAN
+              : MOTE_ENABLE_SUBSPAN && cx->d.perspective == MOTE_PERSPECTIVE_SUBSPAN ? MOTE__PERSP_SUBSPAN
               : MOTE__PERSP_CORRECT;
     rs->subspan_log2 = cx->d.subspan_log2;
     bool has_depth = dev->desc.depth_format != MOTE_DEPTH_FORMAT_NONE;

@@ -91,6 +91,10 @@ void mote__normal_matrix(const float m[16], bool mirrors, float out[9]);
 /* mote_mesh_world_matrix; returns whether it mirrors (negative determinant) */
 bool mote__world_matrix(const mote_mesh *mesh, float world[16]);
 void mote__cross3(const float a[3], const float b[3], float out[3]);
+/* a -= b */
+void mote__sub3(float a[3], const float b[3]);
+/* mote_camera_view_matrix without its translation: the camera's turn */
+void mote__view_rotation(const mote_camera *camera, float view[16]);
 float mote__sqrtf(float x);
 
 /* A float's bits: tests on them spare soft-float targets a library call. */

@@ -105,16 +105,15 @@ void mote__normal_matrix(const float m[16], bool mirrors, float out[9])
      * the scale does not matter because normals are normalised afterwards,
      * but the sign does: for a mirroring matrix (negative determinant) the
      * products are subtracted the other way round, or every normal would
-     * point inward. With indices taken cyclically the 3x3 cofactor signs
-     * come out alone. */
-#define M(r, c) m[(c) * 4 + (r)]
-    /* r1, r2 and c1, c2: the next two indices after r and c, cyclically */
+     * point inward. Row r of the cofactors is the cross product of rows
+     * r + 1 and r + 2 (indices taken cyclically); crossed the other way
+     * round, it is negated bit for bit. */
+    float rows[3][3];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            rows[r][c] = m[c * 4 + r];
     for (int r = 0, r1 = 1, r2 = 2; r < 3; r1 = r2, r2 = r, r++)
-        for (int c = 0, c1 = 1, c2 = 2; c < 3; c1 = c2, c2 = c, c++) {
-            float a = M(r1, c1) * M(r2, c2), b = M(r1, c2) * M(r2, c1);
-            out[r * 3 + c] = mirrors ? b - a : a - b;
-        }
-#undef M
+        mote__cross3(rows[mirrors ? r2 : r1], rows[mirrors ? r1 : r2], out + 3 * r);
 }
 
 static void mote__quat_matrix(const float q[4], float m[16])
@@ -190,14 +189,33 @@ void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
     mote__world_matrix(mesh, world);
 }
 
+/* v / |v| (a zero vector stays as it is). The square of a vector longer
+ * than about 1.8e19 overflows, and that of one shorter than about 1e-19
+ * loses bits or vanishes (a target far away, a tiny up vector, a camera
+ * looking a hair from its up, whose x axis is then a tiny cross
+ * product): such a vector is first scaled by 2^-100 or 2^100, which is
+ * exact, so its direction survives. Any other is divided as it is. */
 static void mote__normalize3(float v[3])
 {
-    float len = mote__sqrtf(mote__dot3(v, v));
+    float dd = mote__dot3(v, v);
+    uint32_t e = mote__float_bits(dd) >> 23;   /* dd >= 0, or NaN */
+    if (e - 16u > 220u) {                        /* dd < 2^-111 or dd >= 2^110 */
+        for (int k = 0; k < 3; k++)
+            v[k] *= e < 16u ? 0x1p100f : 0x1p-100f;
+        dd = mote__dot3(v, v);
+    }
+    float len = mote__sqrtf(dd);
     if (len > 0.0f) {
         v[0] /= len;
         v[1] /= len;
         v[2] /= len;
     }
+}
+
+void mote__sub3(float a[3], const float b[3])
+{
+    for (int k = 0; k < 3; k++)
+        a[k] -= b[k];
 }
 
 void mote__cross3(const float a[3], const float b[3], float out[3])
@@ -207,14 +225,15 @@ void mote__cross3(const float a[3], const float b[3], float out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-void mote_camera_view_matrix(const mote_camera *camera, float view[16])
+void mote__view_rotation(const mote_camera *camera, float view[16])
 {
     /* Left-handed look-at (Babylon's LookAtLH): z toward the target. */
     vec3 up = {camera->up[0], camera->up[1], camera->up[2]};
     if (mote__zero3(up))
         up[1] = 1.0f;
-    vec3 z = {camera->target[0] - camera->position[0], camera->target[1] - camera->position[1],
-              camera->target[2] - camera->position[2]};
+    vec3 z;
+    memcpy(z, camera->target, sizeof z);
+    mote__sub3(z, camera->position);
     mote__normalize3(z);
     vec3 x, y;
     mote__cross3(up, z, x);
@@ -229,16 +248,21 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16])
     }
     mote__normalize3(x);
     mote__cross3(z, x, y);
-    const float *e = camera->position;
     mote__mat4_identity(view);
     for (int i = 0; i < 3; i++) {
         view[i * 4 + 0] = x[i];
         view[i * 4 + 1] = y[i];
         view[i * 4 + 2] = z[i];
     }
-    view[12] = -mote__dot3(x, e);
-    view[13] = -mote__dot3(y, e);
-    view[14] = -mote__dot3(z, e);
+}
+
+void mote_camera_view_matrix(const mote_camera *camera, float view[16])
+{
+    mote__view_rotation(camera, view);
+    for (int i = 0; i < 3; i++) {   /* minus the position along each axis */
+        const float axis[3] = {view[i], view[4 + i], view[8 + i]};
+        view[12 + i] = -mote__dot3(axis, camera->position);
+    }
 }
 
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect, float proj[16])
@@ -293,7 +317,9 @@ bool mote_project(const mote_device *dev, const float p[3], float *x, float *y, 
     if (!dev || !p || !x || !y || !z)
         return false;
     float c[4];
-    mote__mat4_point(dev->view_proj, p, c);
+    memcpy(c, p, 3 * sizeof *c);
+    mote__sub3(c, dev->frame.camera.position);   /* as the vertex stage does (mote_begin) */
+    mote__mat4_point(dev->view_proj, c, c);
     if (!(c[3] > 0.0f) || c[2] < 0.0f)
         return false;
     float W = (float)dev->desc.width, H = (float)dev->desc.height;
@@ -330,8 +356,8 @@ void mote_mesh_update_bounds(mote_mesh *mesh)
         if (!mote__finite3(p))
             continue;
         float d[3];
-        for (int k = 0; k < 3; k++)
-            d[k] = p[k] - mesh->bounds_center[k];
+        memcpy(d, p, sizeof d);
+        mote__sub3(d, mesh->bounds_center);
         float dd = mote__dot3(d, d);
         if (dd > r2)
             r2 = dd;
