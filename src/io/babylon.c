@@ -1615,17 +1615,31 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
     return MOTE_OK;
 }
 
-/* Whether obj[key] is absent or the identity matrix (16 numbers). */
+/* Element k of a matrix: an array of 16 numbers, or an object with keys
+ * "0" to "15", as Babylon.js's SceneSerializer writes one (its matrices
+ * are Float32Arrays, which JSON.stringify writes that way) and
+ * Matrix.FromArray reads alike (m[k]). NULL when there is none. */
+static const cJSON *mote__matrix_at(const cJSON *m, int k)
+{
+    if (cJSON_IsArray(m))
+        return mote__array_len(m) == 16 ? cJSON_GetArrayItem(m, k) : NULL;
+    char key[4];
+    snprintf(key, sizeof key, "%d", k);
+    return mote__member(m, key);
+}
+
+/* Whether obj[key] is absent or the identity matrix. */
 static bool mote__absent_or_identity(const cJSON *obj, const char *key)
 {
     const cJSON *m = mote__get(obj, key);
     if (!m)
         return true;
-    int k = 0;
-    for (const cJSON *e = cJSON_IsArray(m) ? m->child : NULL; e; e = e->next, k++)
-        if (k >= 16 || !cJSON_IsNumber(e) || e->valuedouble != (k % 5 == 0 ? 1.0 : 0.0))
+    for (int k = 0; k < 16; k++) {
+        const cJSON *e = mote__matrix_at(m, k);
+        if (!cJSON_IsNumber(e) || e->valuedouble != (k % 5 == 0 ? 1.0 : 0.0))
             return false;
-    return k == 16;
+    }
+    return true;
 }
 
 /* Whether a mesh or transform node may have a matrix mote__read_matrix
@@ -1648,17 +1662,21 @@ static bool mote__may_have_matrix(const cJSON *node)
 static R mote__read_matrix(mote__ld *ld, const cJSON *node, const char *where, mote__node *nd)
 {
     const char *key = mote__get(node, "localMatrix") ? "localMatrix" : "pivotMatrix";
-    const cJSON *m;
-    MOTE__TRY(mote__arr(ld, node, key, where, &m));
+    const cJSON *m = mote__get(node, key);
     if (!m || mote__absent_or_identity(node, key))
         return MOTE_OK;
     char at[96];
     snprintf(at, sizeof at, "%s.%s", where, key);
-    if (mote__array_len(m) != 16)
-        return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers", at);
-    size_t k = 0;
-    for (const cJSON *e = m->child; e; e = e->next, k++)
+    for (size_t k = 0; k < 16; k++) {
+        const cJSON *e = mote__matrix_at(m, (int)k);
+        if (cJSON_IsObject(m) && !e)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers or an "
+                              "object with keys \"0\" to \"15\", but \"%zu\" is missing", at, k);
+        if (!e)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers, found "
+                              "%s", at, cJSON_IsArray(m) ? "another length" : mote__type_name(m));
         MOTE__TRY(mote__element_float(ld, e, at, k, &nd->matrix[k]));
+    }
     const float *f = nd->matrix;
     if (f[3] != 0.0f || f[7] != 0.0f || f[11] != 0.0f || f[15] != 1.0f)
         return mote__fail(ld, MOTE_ERR_RANGE, "%s: not an affine transform (elements 3, 7, "
