@@ -1754,6 +1754,14 @@ static R mote__nodes(mote__ld *ld)
     const cJSON *meshes, *tnodes, *geos = mote__get(ld->root, "geometries");
     MOTE__TRY(mote__arr(ld, ld->root, "meshes", "", &meshes));
     MOTE__TRY(mote__arr(ld, ld->root, "transformNodes", "", &tnodes));
+    /* an array (Cinema 4D's exporter writes "geometries": []) has no
+     * vertexData member, so Babylon.js finds no geometries in it */
+    if (cJSON_IsArray(geos)) {
+        if (geos->child)
+            mote__warn(ld, "geometries: an array, not an object: Babylon.js reads no "
+                       "geometries from it, nor does mote");
+        geos = NULL;
+    }
     if (geos) {
         const cJSON *vertex_data;
         MOTE__TRY(mote__obj_at(ld, geos, "geometries"));
