@@ -1305,6 +1305,19 @@ void loader_should_load_a_node_whose_parent_is_missing_without_a_parent(void)
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "cameras[0].parentId: \"gone\""), s.warning);
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "lights[0].parentId: \"gone\""), s.warning);
     mote_scene_free(&s);
+    /* "" names no parent (Cinema 4D's exporter writes it on every node),
+     * as Babylon.js looks none up for it: no warning */
+    load_json("{\"meshes\":[{\"id\":\"m\",\"parentId\":\"\",\"position\":[1,2,3]," TRI "}],"
+              "\"cameras\":[{\"id\":\"c\",\"parentId\":\"\",\"position\":[0,0,-5]}],"
+              "\"lights\":[{\"id\":\"l\",\"type\":0,\"parentId\":\"\",\"position\":[7,8,9]}]}",
+              "pm", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    TEST_ASSERT_NULL(s.meshes[0].parent);
+    world_origin(&s.meshes[0], o);
+    ASSERT_VEC3(1.0f, 2.0f, 3.0f, o, 0.0f);
+    ASSERT_VEC3(7.0f, 8.0f, 9.0f, s.lights[0].position, 0.0f);
+    mote_scene_free(&s);
     /* a numeric parentId is a uniqueId */
     load_json("{\"meshes\":[{\"id\":\"n\",\"parentId\":77,\"position\":[4,5,6]}]}", "pm", &s);
     TEST_ASSERT_NULL(s.meshes[0].parent);

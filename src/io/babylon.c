@@ -1565,6 +1565,14 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
     return MOTE_OK;
 }
 
+/* Whether a node names a parent: a parentId other than "", which Cinema
+ * 4D's exporter writes for none (Babylon.js looks no parent up for it). */
+static bool mote__names_parent(const cJSON *node)
+{
+    const cJSON *p = mote__get(node, "parentId");
+    return p && !(cJSON_IsString(p) && p->valuestring[0] == '\0');
+}
+
 /* What every node has: its ids, parent, transform and visibility. */
 static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
 {
@@ -1579,6 +1587,8 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
         MOTE__TRY(mote__number_text(ld, mesh, "parentId", where, &nd->parent_id));
     else
         MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
+    if (!mote__names_parent(mesh))
+        nd->parent_id = NULL;
     /* a child of an instance names the instance's source mesh and the
      * instance's place among the source's instances (Babylon.js resolves
      * it so when it loads parents); -1, or absent: the parent itself */
@@ -2063,14 +2073,14 @@ static R mote__camera_light_nodes(mote__ld *ld)
     int index, unused;
     MOTE__TRY(mote__xlists(ld));
     MOTE__TRY(mote__active_camera(ld, false, &cam, &index));
-    if (cam && cJSON_IsObject(cam) && mote__get(cam, "parentId")) {
+    if (cam && cJSON_IsObject(cam) && mote__names_parent(cam)) {
         char at[48];
         snprintf(at, sizeof at, "cameras[%d]", index);
         MOTE__TRY(mote__xnode(ld, 0, index, at, &unused));
     }
     const mote__xlist *lights = &ld->xlists[1];
     for (int i = 0; i < lights->count; i++) {
-        if (!cJSON_IsObject(lights->items[i]) || !mote__get(lights->items[i], "parentId"))
+        if (!cJSON_IsObject(lights->items[i]) || !mote__names_parent(lights->items[i]))
             continue;
         char at[48];
         snprintf(at, sizeof at, "lights[%d]", i);
