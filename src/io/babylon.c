@@ -913,6 +913,20 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
         return MOTE_OK; /* colours only (embedded images too, as documented) */
     if (embedded)
         return mote__texture_found(ld, at, key, embedded, NULL, true, m);
+    /* "://" past the start: Babylon.js's Texture.Parse fetches such a name
+     * as it is (the SceneSerializer writes web textures so), not from the
+     * scene's folder; mote downloads nothing */
+    const char *scheme_end = strstr(name, "://");
+    if (scheme_end && scheme_end != name) {
+        if (ld->lim.missing_texture_is_warning) {
+            mote__warn(ld, "%s: \"%s\" is a web address, which mote does not download (drawn "
+                       "untextured)", at, mote__quote(name).s);
+            return MOTE_OK;
+        }
+        return mote__fail(ld, MOTE_ERR_IO, "%s.name: \"%s\" is a web address, which mote does "
+                          "not download (textures are files in the scene's folder, or embedded)",
+                          at, mote__quote(name).s);
+    }
     const char *why = "";
     char *path, *decoded, *decoded_path = NULL;
     MOTE__TRY(mote__texture_file(ld, at, name, &why, &path));
