@@ -573,6 +573,30 @@ void loader_should_resolve_material_unique_id_before_material_id(void)
     mote_scene_free(&s);
 }
 
+/* A multi-material's materialsUniqueIds (the SceneSerializer writes them
+ * beside the ids) pick its slots, as Babylon.js resolves them: here two
+ * materials share the id "mat", as a playground naming every material so
+ * writes them, and each slot gets its own. */
+void loader_should_resolve_multi_material_slots_by_unique_id(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"mat\",\"uniqueId\":7,\"diffuse\":[1,0,0]},"
+                    "{\"id\":\"mat\",\"uniqueId\":9,\"diffuse\":[0,0,1]}],"
+                    "\"multiMaterials\":[{\"id\":\"mm\",\"uniqueId\":11,"
+                    "\"materialsUniqueIds\":[7,9,null,8],\"materials\":[\"mat\",\"mat\",null,\"x\"]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mm\",\"materialUniqueId\":11," TRI ","
+                    "\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3},"
+                    "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]}]}";
+    mote_scene s;
+    load_json(j, "mu", &s);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    static const uint8_t red[3] = {255, 0, 0}, blue[3] = {0, 0, 255};
+    assert_material_rgb(&s, 0, red);
+    assert_material_rgb(&s, 1, blue);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "multiMaterials[0].materialsUniqueIds[3]: 8 is "
+                                        "the uniqueId of no material"), s.warning);
+    mote_scene_free(&s);
+}
+
 /* An image embedded as a base64 data: URL, in base64String (SceneSerializer,
  * whose "name" is no file) or in name itself: decoded, loaded once for the
  * two materials carrying the same text, rows as in the PNG. */
@@ -1595,6 +1619,7 @@ int main(void)
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
+    RUN_TEST(loader_should_resolve_multi_material_slots_by_unique_id);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     RUN_TEST(loader_should_draw_disable_lighting_materials_by_their_emissive_colour);

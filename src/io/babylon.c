@@ -1092,8 +1092,14 @@ static R mote__multi_materials(mote__ld *ld)
         if (!mm->id)
             return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
         MOTE__TRY(mote__number_text(ld, m, "uniqueId", at, &mm->unique_id));
-        const cJSON *slots;
+        /* the SceneSerializer writes the slots by uniqueId as well, and
+         * Babylon.js then resolves them so (materials sharing an id, as
+         * playgrounds name them, stay apart) */
+        const cJSON *slots, *unique_slots;
         MOTE__TRY(mote__arr(ld, m, "materials", at, &slots));
+        MOTE__TRY(mote__arr(ld, m, "materialsUniqueIds", at, &unique_slots));
+        if (unique_slots)
+            slots = unique_slots;
         size_t count = mote__array_len(slots);
         if (count > ld->lim.max_meshes)
             return mote__fail(ld, MOTE_ERR_LIMIT, "%s.materials: %zu slots, more than the "
@@ -1107,6 +1113,18 @@ static R mote__multi_materials(mote__ld *ld)
             mm->slots[k] = -1;
             if (cJSON_IsNull(s))
                 continue;
+            if (unique_slots) {
+                char at2[96];
+                snprintf(at2, sizeof at2, "%s.materialsUniqueIds[%d]", at, k);
+                float unused;
+                const char *text;
+                MOTE__TRY(mote__to_float(ld, s, at2, &unused));
+                MOTE__TRY(mote__double_text(ld, s->valuedouble, at2, &text));
+                mm->slots[k] = mote__idmap_find_last(ld->mat_unique_map, text);
+                if (mm->slots[k] < 0)
+                    mote__warn(ld, "%s: %s is the uniqueId of no material", at2, text);
+                continue;
+            }
             if (!cJSON_IsString(s))
                 return mote__fail(ld, MOTE_ERR_PARSE,
                                   "%s.materials[%d]: expected a material id, found %s", at,
