@@ -102,6 +102,9 @@ static void begin_small_frame(mote_device *dev, uint8_t *color, int size)
 
 /* one triangle's geometry, for scenes written inline */
 #define TRI "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]"
+/* TRI drawn twice, by materialIndex 0 and 1 */
+#define TRI_TWO_SLOTS TRI ",\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3}," \
+                      "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]"
 
 /* mesh k's material colour is rgb */
 static void assert_material_rgb(const mote_scene *s, int k, const uint8_t rgb[3])
@@ -583,9 +586,8 @@ void loader_should_resolve_multi_material_slots_by_unique_id(void)
                     "{\"id\":\"mat\",\"uniqueId\":9,\"diffuse\":[0,0,1]}],"
                     "\"multiMaterials\":[{\"id\":\"mm\",\"uniqueId\":11,"
                     "\"materialsUniqueIds\":[7,9,null,8],\"materials\":[\"mat\",\"mat\",null,\"x\"]}],"
-                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mm\",\"materialUniqueId\":11," TRI ","
-                    "\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3},"
-                    "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]}]}";
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mm\",\"materialUniqueId\":11,"
+                    TRI_TWO_SLOTS "}]}";
     mote_scene s;
     load_json(j, "mu", &s);
     TEST_ASSERT_EQUAL(2, s.mesh_count);
@@ -635,9 +637,7 @@ void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
                     "{\"id\":\"b\",\"materialId\":\"two\",\"rotation\":[0,3.14159265,0]," TRI "},"
                     "{\"id\":\"c\",\"materialId\":\"one\"," TRI "},"
                     "{\"id\":\"d\",\"materialId\":\"one\",\"rotation\":[0,3.14159265,0]," TRI "},"
-                    "{\"id\":\"e\",\"materialId\":\"mm\"," TRI ","
-                    "\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3},"
-                    "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]}]}";
+                    "{\"id\":\"e\",\"materialId\":\"mm\"," TRI_TWO_SLOTS "}]}";
     mote_scene s;
     load_json(j, "b", &s);
     TEST_ASSERT_EQUAL(6, s.mesh_count);
