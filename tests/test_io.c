@@ -599,6 +599,27 @@ void loader_should_resolve_multi_material_slots_by_unique_id(void)
     mote_scene_free(&s);
 }
 
+/* A material of a type mote does not read (the materials library's sky,
+ * grid or water, a node material) is drawn as a standard material of its
+ * diffuse colour, with a warning; the standard and PBR types are read. */
+void loader_should_warn_of_a_material_type_it_does_not_read(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"sky\",\"customType\":\"BABYLON.SkyMaterial\","
+                    "\"luminance\":1},{\"id\":\"std\",\"customType\":\"BABYLON.StandardMaterial\"},"
+                    "{\"id\":\"pbr\",\"customType\":\"BABYLON.PBRMaterial\",\"albedo\":[1,0,0]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"sky\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"std\"," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"pbr\"," TRI "}]}";
+    mote_scene s;
+    load_json(j, "ct", &s);
+    TEST_ASSERT_EQUAL_STRING("materials[0]: customType \"BABYLON.SkyMaterial\" is not read; drawn "
+                             "as a standard material of its diffuse colour", s.warning);
+    static const uint8_t red[3] = {255, 0, 0};
+    TEST_ASSERT_FALSE(s.meshes[0].material.color_set);   /* white, as a default material */
+    assert_material_rgb(&s, 2, red);
+    mote_scene_free(&s);
+}
+
 /* An image embedded as a base64 data: URL, in base64String (SceneSerializer,
  * whose "name" is no file) or in name itself: decoded, loaded once for the
  * two materials carrying the same text, rows as in the PNG. */
@@ -1620,6 +1641,7 @@ int main(void)
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
     RUN_TEST(loader_should_resolve_multi_material_slots_by_unique_id);
+    RUN_TEST(loader_should_warn_of_a_material_type_it_does_not_read);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     RUN_TEST(loader_should_draw_disable_lighting_materials_by_their_emissive_colour);

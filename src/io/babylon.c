@@ -1038,6 +1038,18 @@ static R mote__materials(mote__ld *ld)
          * uniqueId: never used, so its texture is not loaded */
         if (mote__idmap_find_last(ld->mat_map, mm->id) != i && !mm->unique_id)
             continue;
+        /* other types (the materials library's sky, grid, water..., node
+         * materials) draw by rules of their own */
+        const cJSON *type = mote__get(m, "customType");
+        static const char *const read_types[4] = {
+            "BABYLON.StandardMaterial", "BABYLON.PBRMaterial",
+            "BABYLON.PBRMetallicRoughnessMaterial", "BABYLON.PBRSpecularGlossinessMaterial"};
+        bool read_type = !cJSON_IsString(type);
+        for (int k = 0; k < 4 && !read_type; k++)
+            read_type = strcmp(type->valuestring, read_types[k]) == 0;
+        if (!read_type)
+            mote__warn(ld, "%s: customType \"%s\" is not read; drawn as a standard material of "
+                       "its diffuse colour", at, mote__quote(type->valuestring).s);
         bool cull_back = true;
         MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
         mm->two_sided = !cull_back;
