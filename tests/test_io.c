@@ -909,6 +909,25 @@ void loader_should_turn_a_camera_by_its_quaternion(void)
     mote_scene_free(&s);
 }
 
+/* A camera turned with a z component (a roll in rotation, or a
+ * quaternion's z) has its up vector turned with it, as TargetCamera does
+ * (_rotateUpVectorWithCameraRotationMatrix): the view is the whole turn.
+ * Here a roll of 0.5 about the view axis, either way: up (-sin, cos, 0). */
+void loader_should_roll_a_camera_by_its_rotation_z(void)
+{
+    static const char *const cams[2] = {
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],\"rotation\":[0,0,0.5]}]}",
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],"
+        "\"rotationQuaternion\":[0,0,0.24740395925452294,0.9689124217106447]}]}"};
+    for (int k = 0; k < 2; k++) {
+        mote_scene s;
+        load_json(cams[k], "roll", &s);
+        ASSERT_VEC3(0.0f, 0.0f, 1.0f, s.camera.target, 1e-6f);
+        ASSERT_VEC3(-0.47942554f, 0.87758256f, 0.0f, s.camera.up, 1e-6f);
+        mote_scene_free(&s);
+    }
+}
+
 /* activeCameraID finds a camera by name when it has no id. */
 void loader_should_find_the_active_camera_by_name(void)
 {
@@ -1626,6 +1645,7 @@ int main(void)
     RUN_TEST(loader_should_apply_a_parent_to_the_camera_and_lights);
     RUN_TEST(loader_should_aim_a_camera_at_its_locked_target);
     RUN_TEST(loader_should_turn_a_camera_by_its_quaternion);
+    RUN_TEST(loader_should_roll_a_camera_by_its_rotation_z);
     RUN_TEST(loader_should_find_the_active_camera_by_name);
     RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
     RUN_TEST(loader_should_leave_out_disabled_lights);

@@ -2694,13 +2694,17 @@ static void mote__transform(const float w[16], float p[3], bool point)
     memcpy(p, q, sizeof q);
 }
 
-/* A node's or camera's rotation turning +z: the view direction (TargetCamera). */
-static void mote__forward(const float rotation[3], const float quat[4], bool use_quat,
-                          float out[3])
+/* A camera's rotation turning +z, the view direction, and +y, the up
+ * vector TargetCamera takes (_rotateUpVectorWithCameraRotationMatrix)
+ * when the turn has a z component (rotation.z, a roll, or a quaternion's
+ * z): then the view is the whole turn. */
+static void mote__turned_axes(const float rotation[3], const float quat[4], bool use_quat,
+                              float forward[3], float up[3])
 {
     float w[16];
     mote__transform_matrix(NULL, rotation, quat, use_quat, NULL, w);
-    memcpy(out, &w[8], 3 * sizeof *out);
+    memcpy(forward, &w[8], 3 * sizeof *forward);
+    memcpy(up, &w[4], 3 * sizeof *up);
 }
 
 /* An orthographic camera's box (orthoLeft, orthoRight, orthoBottom,
@@ -2748,6 +2752,8 @@ static R mote__camera(mote__ld *ld)
     if (ld->right_handed)
         mote__mirror_point(c->position);
     const char *locked;
+    float turned_up[3];
+    bool rolled = false;
     MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
     int target_node = mote__idmap_find_last(ld->node_map, locked);
     if (locked && target_node < 0)
@@ -2768,13 +2774,16 @@ static R mote__camera(mote__ld *ld)
         float rotation[3], quat[4], fwd[3];
         bool use_quat;
         MOTE__TRY(mote__camera_turn(ld, cam, at, rotation, quat, &use_quat));
-        mote__forward(rotation, quat, use_quat, fwd);
+        mote__turned_axes(rotation, quat, use_quat, fwd, turned_up);
+        rolled = use_quat ? quat[2] != 0.0f : rotation[2] != 0.0f;
         for (int k = 0; k < 3; k++)
             c->target[k] = c->position[k] + fwd[k];
     }
     MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
     if (ld->right_handed)
         mote__mirror_point(c->up);
+    if (rolled)
+        memcpy(c->up, turned_up, sizeof c->up);
     /* Babylon.js's Camera defaults */
     c->fov = 0.8f;
     c->znear = 1.0f;
