@@ -1677,7 +1677,7 @@ static const cJSON *mote__matrix_at(const cJSON *m, int k)
 {
     if (cJSON_IsArray(m))
         return mote__array_len(m) == 16 ? cJSON_GetArrayItem(m, k) : NULL;
-    char key[4];
+    char key[12];
     snprintf(key, sizeof key, "%d", k);
     return mote__member(m, key);
 }
