@@ -1369,10 +1369,13 @@ void loader_should_load_a_node_whose_parent_is_missing_without_a_parent(void)
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "cameras[0].parentId: \"gone\""), s.warning);
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "lights[0].parentId: \"gone\""), s.warning);
     mote_scene_free(&s);
-    /* "" names no parent (Cinema 4D's exporter writes it on every node),
-     * as Babylon.js looks none up for it: no warning */
-    load_json("{\"meshes\":[{\"id\":\"m\",\"parentId\":\"\",\"position\":[1,2,3]," TRI "}],"
-              "\"cameras\":[{\"id\":\"c\",\"parentId\":\"\",\"position\":[0,0,-5]}],"
+    /* "" names nothing (Cinema 4D's exporter writes it for no parent, old
+     * 3ds Max ones for no material or target), as Babylon.js looks nothing
+     * up for it: no warning */
+    load_json("{\"meshes\":[{\"id\":\"m\",\"parentId\":\"\",\"materialId\":\"\","
+              "\"position\":[1,2,3]," TRI "}],"
+              "\"cameras\":[{\"id\":\"c\",\"parentId\":\"\",\"lockedTargetId\":\"\","
+              "\"position\":[0,0,-5]}],"
               "\"lights\":[{\"id\":\"l\",\"type\":0,\"parentId\":\"\",\"position\":[7,8,9]}]}",
               "pm", &s);
     TEST_ASSERT_EQUAL_STRING("", s.warning);

@@ -518,6 +518,18 @@ static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *
     return MOTE_OK;
 }
 
+/* key -> the id a node refers to, or NULL: absent, null or "" (old 3ds
+ * Max exports write "" for none, and Babylon.js looks nothing up for
+ * it); anything but a string is an error. */
+static R mote__id_ref(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                      const char **out)
+{
+    MOTE__TRY(mote__str(ld, obj, key, where, out));
+    if (*out && !(*out)[0])
+        *out = NULL;
+    return MOTE_OK;
+}
+
 /* key -> a number's text ("%.17g", so equal numbers give equal text) or
  * NULL (absent); anything else is an error. For numeric ids. */
 /* v as text ("%.17g", in the temporary store): how uniqueIds are compared */
@@ -1748,7 +1760,7 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
 {
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
     MOTE__TRY(mote__read_matrix(ld, mesh, where, nd));
-    MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
+    MOTE__TRY(mote__id_ref(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
     const cJSON *verts, *pos;
@@ -2754,7 +2766,7 @@ static R mote__camera(mote__ld *ld)
     const char *locked;
     float turned_up[3];
     bool rolled = false;
-    MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
+    MOTE__TRY(mote__id_ref(ld, cam, "lockedTargetId", at, &locked));
     int target_node = mote__idmap_find_last(ld->node_map, locked);
     if (locked && target_node < 0)
         mote__warn(ld, "%s.lockedTargetId: \"%s\" names no mesh or transform node; the "
