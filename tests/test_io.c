@@ -102,6 +102,9 @@ static void begin_small_frame(mote_device *dev, uint8_t *color, int size)
 
 /* one triangle's geometry, for scenes written inline */
 #define TRI "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2]"
+/* TRI drawn twice, by materialIndex 0 and 1 */
+#define TRI_TWO_SLOTS TRI ",\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3}," \
+                      "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]"
 
 /* mesh k's material colour is rgb */
 static void assert_material_rgb(const mote_scene *s, int k, const uint8_t rgb[3])
@@ -573,6 +576,50 @@ void loader_should_resolve_material_unique_id_before_material_id(void)
     mote_scene_free(&s);
 }
 
+/* A multi-material's materialsUniqueIds (the SceneSerializer writes them
+ * beside the ids) pick its slots, as Babylon.js resolves them: here two
+ * materials share the id "mat", as a playground naming every material so
+ * writes them, and each slot gets its own. */
+void loader_should_resolve_multi_material_slots_by_unique_id(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"mat\",\"uniqueId\":7,\"diffuse\":[1,0,0]},"
+                    "{\"id\":\"mat\",\"uniqueId\":9,\"diffuse\":[0,0,1]}],"
+                    "\"multiMaterials\":[{\"id\":\"mm\",\"uniqueId\":11,"
+                    "\"materialsUniqueIds\":[7,9,null,8],\"materials\":[\"mat\",\"mat\",null,\"x\"]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mm\",\"materialUniqueId\":11,"
+                    TRI_TWO_SLOTS "}]}";
+    mote_scene s;
+    load_json(j, "mu", &s);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    static const uint8_t red[3] = {255, 0, 0}, blue[3] = {0, 0, 255};
+    assert_material_rgb(&s, 0, red);
+    assert_material_rgb(&s, 1, blue);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "multiMaterials[0].materialsUniqueIds[3]: 8 is "
+                                        "the uniqueId of no material"), s.warning);
+    mote_scene_free(&s);
+}
+
+/* A material of a type mote does not read (the materials library's sky,
+ * grid or water, a node material) is drawn as a standard material of its
+ * diffuse colour, with a warning; the standard and PBR types are read. */
+void loader_should_warn_of_a_material_type_it_does_not_read(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"sky\",\"customType\":\"BABYLON.SkyMaterial\","
+                    "\"luminance\":1},{\"id\":\"std\",\"customType\":\"BABYLON.StandardMaterial\"},"
+                    "{\"id\":\"pbr\",\"customType\":\"BABYLON.PBRMaterial\",\"albedo\":[1,0,0]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"sky\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"std\"," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"pbr\"," TRI "}]}";
+    mote_scene s;
+    load_json(j, "ct", &s);
+    TEST_ASSERT_EQUAL_STRING("materials[0]: customType \"BABYLON.SkyMaterial\" is not read; drawn "
+                             "as a standard material of its diffuse colour", s.warning);
+    static const uint8_t red[3] = {255, 0, 0};
+    TEST_ASSERT_FALSE(s.meshes[0].material.color_set);   /* white, as a default material */
+    assert_material_rgb(&s, 2, red);
+    mote_scene_free(&s);
+}
+
 /* An image embedded as a base64 data: URL, in base64String (SceneSerializer,
  * whose "name" is no file) or in name itself: decoded, loaded once for the
  * two materials carrying the same text, rows as in the PNG. */
@@ -611,9 +658,7 @@ void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
                     "{\"id\":\"b\",\"materialId\":\"two\",\"rotation\":[0,3.14159265,0]," TRI "},"
                     "{\"id\":\"c\",\"materialId\":\"one\"," TRI "},"
                     "{\"id\":\"d\",\"materialId\":\"one\",\"rotation\":[0,3.14159265,0]," TRI "},"
-                    "{\"id\":\"e\",\"materialId\":\"mm\"," TRI ","
-                    "\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3},"
-                    "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]}]}";
+                    "{\"id\":\"e\",\"materialId\":\"mm\"," TRI_TWO_SLOTS "}]}";
     mote_scene s;
     load_json(j, "b", &s);
     TEST_ASSERT_EQUAL(6, s.mesh_count);
@@ -862,6 +907,25 @@ void loader_should_turn_a_camera_by_its_quaternion(void)
     ASSERT_VEC3(10.0f, 0.0f, 0.0f, s.camera.position, 0.0f);
     ASSERT_VEC3(9.0f, 0.0f, 0.0f, s.camera.target, 1e-6f);
     mote_scene_free(&s);
+}
+
+/* A camera turned with a z component (a roll in rotation, or a
+ * quaternion's z) has its up vector turned with it, as TargetCamera does
+ * (_rotateUpVectorWithCameraRotationMatrix): the view is the whole turn.
+ * Here a roll of 0.5 about the view axis, either way: up (-sin, cos, 0). */
+void loader_should_roll_a_camera_by_its_rotation_z(void)
+{
+    static const char *const cams[2] = {
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],\"rotation\":[0,0,0.5]}]}",
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],"
+        "\"rotationQuaternion\":[0,0,0.24740395925452294,0.9689124217106447]}]}"};
+    for (int k = 0; k < 2; k++) {
+        mote_scene s;
+        load_json(cams[k], "roll", &s);
+        ASSERT_VEC3(0.0f, 0.0f, 1.0f, s.camera.target, 1e-6f);
+        ASSERT_VEC3(-0.47942554f, 0.87758256f, 0.0f, s.camera.up, 1e-6f);
+        mote_scene_free(&s);
+    }
 }
 
 /* activeCameraID finds a camera by name when it has no id. */
@@ -1305,6 +1369,22 @@ void loader_should_load_a_node_whose_parent_is_missing_without_a_parent(void)
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "cameras[0].parentId: \"gone\""), s.warning);
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "lights[0].parentId: \"gone\""), s.warning);
     mote_scene_free(&s);
+    /* "" names nothing (Cinema 4D's exporter writes it for no parent, old
+     * 3ds Max ones for no material or target), as Babylon.js looks nothing
+     * up for it: no warning */
+    load_json("{\"meshes\":[{\"id\":\"m\",\"parentId\":\"\",\"materialId\":\"\","
+              "\"position\":[1,2,3]," TRI "}],"
+              "\"cameras\":[{\"id\":\"c\",\"parentId\":\"\",\"lockedTargetId\":\"\","
+              "\"position\":[0,0,-5]}],"
+              "\"lights\":[{\"id\":\"l\",\"type\":0,\"parentId\":\"\",\"position\":[7,8,9]}]}",
+              "pm", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    TEST_ASSERT_NULL(s.meshes[0].parent);
+    world_origin(&s.meshes[0], o);
+    ASSERT_VEC3(1.0f, 2.0f, 3.0f, o, 0.0f);
+    ASSERT_VEC3(7.0f, 8.0f, 9.0f, s.lights[0].position, 0.0f);
+    mote_scene_free(&s);
     /* a numeric parentId is a uniqueId */
     load_json("{\"meshes\":[{\"id\":\"n\",\"parentId\":77,\"position\":[4,5,6]}]}", "pm", &s);
     TEST_ASSERT_NULL(s.meshes[0].parent);
@@ -1568,6 +1648,7 @@ int main(void)
     RUN_TEST(loader_should_apply_a_parent_to_the_camera_and_lights);
     RUN_TEST(loader_should_aim_a_camera_at_its_locked_target);
     RUN_TEST(loader_should_turn_a_camera_by_its_quaternion);
+    RUN_TEST(loader_should_roll_a_camera_by_its_rotation_z);
     RUN_TEST(loader_should_find_the_active_camera_by_name);
     RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
     RUN_TEST(loader_should_leave_out_disabled_lights);
@@ -1582,6 +1663,8 @@ int main(void)
     RUN_TEST(loader_should_load_a_texture_once_for_two_materials);
     RUN_TEST(loader_should_read_vertex_colors_of_4_or_3_floats_inline_and_from_vertex_data);
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
+    RUN_TEST(loader_should_resolve_multi_material_slots_by_unique_id);
+    RUN_TEST(loader_should_warn_of_a_material_type_it_does_not_read);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     RUN_TEST(loader_should_draw_disable_lighting_materials_by_their_emissive_colour);

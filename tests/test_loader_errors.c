@@ -323,6 +323,15 @@ void loader_should_draw_untextured_and_warn_when_asked_to(void)
                                                        &lim, &s, msg, sizeof msg), msg);
     TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "100000 x 100000"), s.warning);
     mote_scene_free(&s);
+    /* a web address (the SceneSerializer's name for a texture loaded from
+     * the web), which mote does not download */
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(BAD_DIR "/texture_web_address.babylon",
+                                                       &lim, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_NULL(s.meshes[0].material.texture);
+    TEST_ASSERT_EQUAL_STRING("materials[0].diffuseTexture: \"https://example.com/textures/"
+                             "wood.png\" is a web address, which mote does not download (drawn "
+                             "untextured)", s.warning);
+    mote_scene_free(&s);
     /* path escapes stay errors */
     TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote_scene_load(BAD_DIR "/texture_dotdot.babylon", &lim, &s,
                                                       msg, sizeof msg));

@@ -411,6 +411,33 @@ void loader_should_apply_pivot_and_local_matrices_as_babylon_does(void)
     mote_scene_free(&s);
 }
 
+/* Babylon.js's SceneSerializer writes a node's matrix as JSON.stringify
+ * writes a Float32Array, an object with keys "0" to "15" (the identity on
+ * every mesh it saves), and Matrix.FromArray reads it by index all the
+ * same: such a matrix counts as the array of its values by key. */
+void loader_should_read_a_matrix_written_as_an_object(void)
+{
+    mote_scene s;
+    load_json("{\"meshes\":["
+              /* translate(5, 0, 0) scale(1, 1, 2), its keys out of order */
+              "{\"id\":\"pre\",\"localMatrix\":{\"12\":5,\"10\":2,\"0\":1,\"1\":0,\"2\":0,"
+              "\"3\":0,\"4\":0,\"5\":1,\"6\":0,\"7\":0,\"8\":0,\"9\":0,\"11\":0,\"13\":0,"
+              "\"14\":0,\"15\":1},\"positions\":[0,0,1, 1,0,1, 0,1,1],\"indices\":[0,1,2]},"
+              /* the identity, as the serializer writes it on every mesh */
+              "{\"id\":\"same\",\"position\":[0,3,0],\"localMatrix\":{\"0\":1,\"1\":0,"
+              "\"2\":0,\"3\":0,\"4\":0,\"5\":1,\"6\":0,\"7\":0,\"8\":0,\"9\":0,\"10\":1,"
+              "\"11\":0,\"12\":0,\"13\":0,\"14\":0,\"15\":1},"
+              "\"positions\":[0,0,1, 1,0,1, 0,1,1],\"indices\":[0,1,2]}]}", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(2, s.mesh_count);
+    ASSERT_WORLD_VERTEX(5.0f, 0.0f, 2.0f, &s.meshes[0], 0);
+    ASSERT_WORLD_VERTEX(6.0f, 0.0f, 2.0f, &s.meshes[0], 1);
+    ASSERT_WORLD_VERTEX(5.0f, 1.0f, 2.0f, &s.meshes[0], 2);
+    ASSERT_WORLD_VERTEX(0.0f, 3.0f, 1.0f, &s.meshes[1], 0);
+    ASSERT_WORLD_VERTEX(1.0f, 3.0f, 1.0f, &s.meshes[1], 1);
+    mote_scene_free(&s);
+}
+
 /* A pivot that only turns and moves, under an even scale, leaves the
  * node a rotation, scale and position: no helper node. First in the xy
  * plane, by hand: P = translate(1, 0, 0) rotateZ(c = 0.6, s = 0.8), the
@@ -545,6 +572,7 @@ int main(void)
     RUN_TEST(unindexed_sub_meshes_of_a_right_handed_scene_should_share_their_runs);
     RUN_TEST(an_index_out_of_range_should_be_named_where_the_file_has_it);
     RUN_TEST(loader_should_apply_pivot_and_local_matrices_as_babylon_does);
+    RUN_TEST(loader_should_read_a_matrix_written_as_an_object);
     RUN_TEST(loader_should_fold_a_pivot_without_shear_into_the_node_alone);
     RUN_TEST(loader_should_light_a_sheared_mesh_by_its_turned_normals);
     RUN_TEST(loader_should_count_helper_nodes_against_the_mesh_limit);

@@ -518,6 +518,18 @@ static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *
     return MOTE_OK;
 }
 
+/* key -> the id a node refers to, or NULL: absent, null or "" (old 3ds
+ * Max exports write "" for none, and Babylon.js looks nothing up for
+ * it); anything but a string is an error. */
+static R mote__id_ref(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                      const char **out)
+{
+    MOTE__TRY(mote__str(ld, obj, key, where, out));
+    if (*out && !(*out)[0])
+        *out = NULL;
+    return MOTE_OK;
+}
+
 /* key -> a number's text ("%.17g", so equal numbers give equal text) or
  * NULL (absent); anything else is an error. For numeric ids. */
 /* v as text ("%.17g", in the temporary store): how uniqueIds are compared */
@@ -913,6 +925,20 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
         return MOTE_OK; /* colours only (embedded images too, as documented) */
     if (embedded)
         return mote__texture_found(ld, at, key, embedded, NULL, true, m);
+    /* "://" past the start: Babylon.js's Texture.Parse fetches such a name
+     * as it is (the SceneSerializer writes web textures so), not from the
+     * scene's folder; mote downloads nothing */
+    const char *scheme_end = strstr(name, "://");
+    if (scheme_end && scheme_end != name) {
+        if (ld->lim.missing_texture_is_warning) {
+            mote__warn(ld, "%s: \"%s\" is a web address, which mote does not download (drawn "
+                       "untextured)", at, mote__quote(name).s);
+            return MOTE_OK;
+        }
+        return mote__fail(ld, MOTE_ERR_IO, "%s.name: \"%s\" is a web address, which mote does "
+                          "not download (textures are files in the scene's folder, or embedded)",
+                          at, mote__quote(name).s);
+    }
     const char *why = "";
     char *path, *decoded, *decoded_path = NULL;
     MOTE__TRY(mote__texture_file(ld, at, name, &why, &path));
@@ -1024,6 +1050,18 @@ static R mote__materials(mote__ld *ld)
          * uniqueId: never used, so its texture is not loaded */
         if (mote__idmap_find_last(ld->mat_map, mm->id) != i && !mm->unique_id)
             continue;
+        /* other types (the materials library's sky, grid, water..., node
+         * materials) draw by rules of their own */
+        const cJSON *type = mote__get(m, "customType");
+        static const char *const read_types[4] = {
+            "BABYLON.StandardMaterial", "BABYLON.PBRMaterial",
+            "BABYLON.PBRMetallicRoughnessMaterial", "BABYLON.PBRSpecularGlossinessMaterial"};
+        bool read_type = !cJSON_IsString(type);
+        for (int k = 0; k < 4 && !read_type; k++)
+            read_type = strcmp(type->valuestring, read_types[k]) == 0;
+        if (!read_type)
+            mote__warn(ld, "%s: customType \"%s\" is not read; drawn as a standard material of "
+                       "its diffuse colour", at, mote__quote(type->valuestring).s);
         bool cull_back = true;
         MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
         mm->two_sided = !cull_back;
@@ -1078,8 +1116,14 @@ static R mote__multi_materials(mote__ld *ld)
         if (!mm->id)
             return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
         MOTE__TRY(mote__number_text(ld, m, "uniqueId", at, &mm->unique_id));
-        const cJSON *slots;
+        /* the SceneSerializer writes the slots by uniqueId as well, and
+         * Babylon.js then resolves them so (materials sharing an id, as
+         * playgrounds name them, stay apart) */
+        const cJSON *slots, *unique_slots;
         MOTE__TRY(mote__arr(ld, m, "materials", at, &slots));
+        MOTE__TRY(mote__arr(ld, m, "materialsUniqueIds", at, &unique_slots));
+        if (unique_slots)
+            slots = unique_slots;
         size_t count = mote__array_len(slots);
         if (count > ld->lim.max_meshes)
             return mote__fail(ld, MOTE_ERR_LIMIT, "%s.materials: %zu slots, more than the "
@@ -1093,6 +1137,18 @@ static R mote__multi_materials(mote__ld *ld)
             mm->slots[k] = -1;
             if (cJSON_IsNull(s))
                 continue;
+            if (unique_slots) {
+                char at2[96];
+                snprintf(at2, sizeof at2, "%s.materialsUniqueIds[%d]", at, k);
+                float unused;
+                const char *text;
+                MOTE__TRY(mote__to_float(ld, s, at2, &unused));
+                MOTE__TRY(mote__double_text(ld, s->valuedouble, at2, &text));
+                mm->slots[k] = mote__idmap_find_last(ld->mat_unique_map, text);
+                if (mm->slots[k] < 0)
+                    mote__warn(ld, "%s: %s is the uniqueId of no material", at2, text);
+                continue;
+            }
             if (!cJSON_IsString(s))
                 return mote__fail(ld, MOTE_ERR_PARSE,
                                   "%s.materials[%d]: expected a material id, found %s", at,
@@ -1565,6 +1621,14 @@ static R mote__submeshes(mote__ld *ld, const cJSON *mesh, const char *where, mot
     return MOTE_OK;
 }
 
+/* Whether a node names a parent: a parentId other than "", which Cinema
+ * 4D's exporter writes for none (Babylon.js looks no parent up for it). */
+static bool mote__names_parent(const cJSON *node)
+{
+    const cJSON *p = mote__get(node, "parentId");
+    return p && !(cJSON_IsString(p) && p->valuestring[0] == '\0');
+}
+
 /* What every node has: its ids, parent, transform and visibility. */
 static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, mote__node *nd)
 {
@@ -1579,6 +1643,8 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
         MOTE__TRY(mote__number_text(ld, mesh, "parentId", where, &nd->parent_id));
     else
         MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
+    if (!mote__names_parent(mesh))
+        nd->parent_id = NULL;
     /* a child of an instance names the instance's source mesh and the
      * instance's place among the source's instances (Babylon.js resolves
      * it so when it loads parents); -1, or absent: the parent itself */
@@ -1615,17 +1681,31 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
     return MOTE_OK;
 }
 
-/* Whether obj[key] is absent or the identity matrix (16 numbers). */
+/* Element k of a matrix: an array of 16 numbers, or an object with keys
+ * "0" to "15", as Babylon.js's SceneSerializer writes one (its matrices
+ * are Float32Arrays, which JSON.stringify writes that way) and
+ * Matrix.FromArray reads alike (m[k]). NULL when there is none. */
+static const cJSON *mote__matrix_at(const cJSON *m, int k)
+{
+    if (cJSON_IsArray(m))
+        return mote__array_len(m) == 16 ? cJSON_GetArrayItem(m, k) : NULL;
+    char key[12];
+    snprintf(key, sizeof key, "%d", k);
+    return mote__member(m, key);
+}
+
+/* Whether obj[key] is absent or the identity matrix. */
 static bool mote__absent_or_identity(const cJSON *obj, const char *key)
 {
     const cJSON *m = mote__get(obj, key);
     if (!m)
         return true;
-    int k = 0;
-    for (const cJSON *e = cJSON_IsArray(m) ? m->child : NULL; e; e = e->next, k++)
-        if (k >= 16 || !cJSON_IsNumber(e) || e->valuedouble != (k % 5 == 0 ? 1.0 : 0.0))
+    for (int k = 0; k < 16; k++) {
+        const cJSON *e = mote__matrix_at(m, k);
+        if (!cJSON_IsNumber(e) || e->valuedouble != (k % 5 == 0 ? 1.0 : 0.0))
             return false;
-    return k == 16;
+    }
+    return true;
 }
 
 /* Whether a mesh or transform node may have a matrix mote__read_matrix
@@ -1648,17 +1728,21 @@ static bool mote__may_have_matrix(const cJSON *node)
 static R mote__read_matrix(mote__ld *ld, const cJSON *node, const char *where, mote__node *nd)
 {
     const char *key = mote__get(node, "localMatrix") ? "localMatrix" : "pivotMatrix";
-    const cJSON *m;
-    MOTE__TRY(mote__arr(ld, node, key, where, &m));
+    const cJSON *m = mote__get(node, key);
     if (!m || mote__absent_or_identity(node, key))
         return MOTE_OK;
     char at[96];
     snprintf(at, sizeof at, "%s.%s", where, key);
-    if (mote__array_len(m) != 16)
-        return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers", at);
-    size_t k = 0;
-    for (const cJSON *e = m->child; e; e = e->next, k++)
+    for (size_t k = 0; k < 16; k++) {
+        const cJSON *e = mote__matrix_at(m, (int)k);
+        if (cJSON_IsObject(m) && !e)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers or an "
+                              "object with keys \"0\" to \"15\", but \"%zu\" is missing", at, k);
+        if (!e)
+            return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers, found "
+                              "%s", at, cJSON_IsArray(m) ? "another length" : mote__type_name(m));
         MOTE__TRY(mote__element_float(ld, e, at, k, &nd->matrix[k]));
+    }
     const float *f = nd->matrix;
     if (f[3] != 0.0f || f[7] != 0.0f || f[11] != 0.0f || f[15] != 1.0f)
         return mote__fail(ld, MOTE_ERR_RANGE, "%s: not an affine transform (elements 3, 7, "
@@ -1676,7 +1760,7 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
 {
     MOTE__TRY(mote__node_common(ld, mesh, where, nd));
     MOTE__TRY(mote__read_matrix(ld, mesh, where, nd));
-    MOTE__TRY(mote__str(ld, mesh, "materialId", where, &nd->material_id));
+    MOTE__TRY(mote__id_ref(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
     const cJSON *verts, *pos;
@@ -1736,6 +1820,14 @@ static R mote__nodes(mote__ld *ld)
     const cJSON *meshes, *tnodes, *geos = mote__get(ld->root, "geometries");
     MOTE__TRY(mote__arr(ld, ld->root, "meshes", "", &meshes));
     MOTE__TRY(mote__arr(ld, ld->root, "transformNodes", "", &tnodes));
+    /* an array (Cinema 4D's exporter writes "geometries": []) has no
+     * vertexData member, so Babylon.js finds no geometries in it */
+    if (cJSON_IsArray(geos)) {
+        if (geos->child)
+            mote__warn(ld, "geometries: an array, not an object: Babylon.js reads no "
+                       "geometries from it, nor does mote");
+        geos = NULL;
+    }
     if (geos) {
         const cJSON *vertex_data;
         MOTE__TRY(mote__obj_at(ld, geos, "geometries"));
@@ -2037,14 +2129,14 @@ static R mote__camera_light_nodes(mote__ld *ld)
     int index, unused;
     MOTE__TRY(mote__xlists(ld));
     MOTE__TRY(mote__active_camera(ld, false, &cam, &index));
-    if (cam && cJSON_IsObject(cam) && mote__get(cam, "parentId")) {
+    if (cam && cJSON_IsObject(cam) && mote__names_parent(cam)) {
         char at[48];
         snprintf(at, sizeof at, "cameras[%d]", index);
         MOTE__TRY(mote__xnode(ld, 0, index, at, &unused));
     }
     const mote__xlist *lights = &ld->xlists[1];
     for (int i = 0; i < lights->count; i++) {
-        if (!cJSON_IsObject(lights->items[i]) || !mote__get(lights->items[i], "parentId"))
+        if (!cJSON_IsObject(lights->items[i]) || !mote__names_parent(lights->items[i]))
             continue;
         char at[48];
         snprintf(at, sizeof at, "lights[%d]", i);
@@ -2614,13 +2706,17 @@ static void mote__transform(const float w[16], float p[3], bool point)
     memcpy(p, q, sizeof q);
 }
 
-/* A node's or camera's rotation turning +z: the view direction (TargetCamera). */
-static void mote__forward(const float rotation[3], const float quat[4], bool use_quat,
-                          float out[3])
+/* A camera's rotation turning +z, the view direction, and +y, the up
+ * vector TargetCamera takes (_rotateUpVectorWithCameraRotationMatrix)
+ * when the turn has a z component (rotation.z, a roll, or a quaternion's
+ * z): then the view is the whole turn. */
+static void mote__turned_axes(const float rotation[3], const float quat[4], bool use_quat,
+                              float forward[3], float up[3])
 {
     float w[16];
     mote__transform_matrix(NULL, rotation, quat, use_quat, NULL, w);
-    memcpy(out, &w[8], 3 * sizeof *out);
+    memcpy(forward, &w[8], 3 * sizeof *forward);
+    memcpy(up, &w[4], 3 * sizeof *up);
 }
 
 /* An orthographic camera's box (orthoLeft, orthoRight, orthoBottom,
@@ -2668,7 +2764,9 @@ static R mote__camera(mote__ld *ld)
     if (ld->right_handed)
         mote__mirror_point(c->position);
     const char *locked;
-    MOTE__TRY(mote__str(ld, cam, "lockedTargetId", at, &locked));
+    float turned_up[3];
+    bool rolled = false;
+    MOTE__TRY(mote__id_ref(ld, cam, "lockedTargetId", at, &locked));
     int target_node = mote__idmap_find_last(ld->node_map, locked);
     if (locked && target_node < 0)
         mote__warn(ld, "%s.lockedTargetId: \"%s\" names no mesh or transform node; the "
@@ -2688,13 +2786,16 @@ static R mote__camera(mote__ld *ld)
         float rotation[3], quat[4], fwd[3];
         bool use_quat;
         MOTE__TRY(mote__camera_turn(ld, cam, at, rotation, quat, &use_quat));
-        mote__forward(rotation, quat, use_quat, fwd);
+        mote__turned_axes(rotation, quat, use_quat, fwd, turned_up);
+        rolled = use_quat ? quat[2] != 0.0f : rotation[2] != 0.0f;
         for (int k = 0; k < 3; k++)
             c->target[k] = c->position[k] + fwd[k];
     }
     MOTE__TRY(mote__vec(ld, cam, "upVector", at, 3, 0, c->up));
     if (ld->right_handed)
         mote__mirror_point(c->up);
+    if (rolled)
+        memcpy(c->up, turned_up, sizeof c->up);
     /* Babylon.js's Camera defaults */
     c->fov = 0.8f;
     c->znear = 1.0f;
