@@ -6,7 +6,9 @@
 # by stage. Counts are exact and the same on every run of one build, so
 # they compare builds where times on a shared machine are too noisy.
 # PROFILE_FRAMES (default 20) frames are counted, and mote-bench's two
-# warm-up frames before them (the first one clears the whole frame).
+# warm-up frames before them (the first one clears the whole frame), all of
+# them however slow valgrind runs: mote-bench's time cap (2 s a run) once
+# cut the grid to 10 frames on a slower day, other angles of the turn.
 set -eu
 if [ $# -lt 1 ] || [ ! -x "$1" ]; then
     echo "usage: profile.sh MOTE-BENCH [SCENE ...]" >&2
@@ -25,7 +27,7 @@ trap 'rm -rf "$out"' EXIT
 for scene in "$@"; do
     if ! valgrind --tool=callgrind --callgrind-out-file="$out/cg" --compress-strings=no --compress-pos=no \
             --toggle-collect=mote_begin --toggle-collect=mote_draw --toggle-collect=mote_end \
-            "$bench" --scene "$scene" --mode tex-nearest --threads 1 --frames "${PROFILE_FRAMES:-20}" \
+            "$bench" --scene "$scene" --mode tex-nearest --threads 1 --frames "${PROFILE_FRAMES:-20}" --cap 100000 \
             >"$out/log" 2>&1; then
         cat "$out/log" >&2
         echo "profile: $scene: valgrind failed" >&2
