@@ -519,8 +519,8 @@ static R mote__str(mote__ld *ld, const cJSON *obj, const char *key, const char *
 }
 
 /* key -> the id a node refers to, or NULL: absent, null or "" (old 3ds
- * Max exports write "" for none, and Babylon.js looks nothing up for
- * it); anything but a string is an error. */
+ * Max exports write "" for no material, Cinema 4D's for no parent, and
+ * Babylon.js looks nothing up for it); anything but a string is an error. */
 static R mote__id_ref(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
                       const char **out)
 {
@@ -545,6 +545,14 @@ static R mote__double_text(mote__ld *ld, double v, const char *at, const char **
     return MOTE_OK;
 }
 
+/* A finite number v (at names it) as mote__double_text. */
+static R mote__number_value_text(mote__ld *ld, const cJSON *v, const char *at, const char **out)
+{
+    float unused;
+    MOTE__TRY(mote__to_float(ld, v, at, &unused));
+    return mote__double_text(ld, v->valuedouble, at, out);
+}
+
 static R mote__number_text(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
                            const char **out)
 {
@@ -554,9 +562,7 @@ static R mote__number_text(mote__ld *ld, const cJSON *obj, const char *key, cons
         return MOTE_OK;
     char at[160];
     snprintf(at, sizeof at, "%s.%s", where, key);
-    float unused;
-    MOTE__TRY(mote__to_float(ld, v, at, &unused));   /* a finite number */
-    return mote__double_text(ld, v->valuedouble, at, out);
+    return mote__number_value_text(ld, v, at, out);
 }
 
 /* key -> array or NULL (absent); anything else is an error. */
@@ -972,10 +978,21 @@ static uint8_t mote__unit_byte(float c)
  * that as the material colour. On a lit material mote cannot add them (its
  * lights multiply the material colour), so a glowing one is named in a
  * warning. A PBR material's unlit shows its albedo as it is. */
+/* A material's colour from 0..1 channels (clamped). */
+static void mote__set_color(mote_material *mat, const float c[3])
+{
+    mat->color.r = mote__unit_byte(c[0]);
+    mat->color.g = mote__unit_byte(c[1]);
+    mat->color.b = mote__unit_byte(c[2]);
+    mat->color.a = 255;
+    mat->color_set = true;
+}
+
 static R mote__emissive(mote__ld *ld, const cJSON *m, const char *at, mote__mat *mm)
 {
     float emissive[3] = {0, 0, 0}, ambient[3] = {0, 0, 0};
-    const char *key = mote__get(m, "emissiveColor") && !mote__get(m, "emissive") ? "emissiveColor" : "emissive";
+    const char *key = mote__get(m, "emissiveColor") && !mote__get(m, "emissive") ? "emissiveColor"
+                                                                                 : "emissive";
     MOTE__TRY(mote__vec(ld, m, key, at, 3, 4, emissive));
     MOTE__TRY(mote__vec(ld, m, "ambient", at, 3, 4, ambient));
     bool pbr_unlit = false;
@@ -986,16 +1003,14 @@ static R mote__emissive(mote__ld *ld, const cJSON *m, const char *at, mote__mat 
     }
     if (!mm->unlit) {
         if (emissive[0] > 0.0f || emissive[1] > 0.0f || emissive[2] > 0.0f)
-            mote__warn(ld, "%s: its emissive colour is not drawn (mote adds no light to a lit material)", at);
+            mote__warn(ld, "%s: its emissive colour is not drawn (mote adds no light to a lit "
+                       "material)", at);
         return MOTE_OK;
     }
-    const float *scene_ambient = ld->scene->ambient;
-    mote_rgba *c = &mm->material.color;
-    c->r = mote__unit_byte(emissive[0] + ambient[0] * scene_ambient[0]);
-    c->g = mote__unit_byte(emissive[1] + ambient[1] * scene_ambient[1]);
-    c->b = mote__unit_byte(emissive[2] + ambient[2] * scene_ambient[2]);
-    c->a = 255;
-    mm->material.color_set = true;
+    float c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = emissive[k] + ambient[k] * ld->scene->ambient[k];
+    mote__set_color(&mm->material, c);
     return MOTE_OK;
 }
 
@@ -1073,11 +1088,7 @@ static R mote__materials(mote__ld *ld)
             if (!mote__get(m, color_keys[k]))
                 continue;
             MOTE__TRY(mote__vec(ld, m, color_keys[k], at, 3, 4, c));
-            mm->material.color.r = mote__unit_byte(c[0]);
-            mm->material.color.g = mote__unit_byte(c[1]);
-            mm->material.color.b = mote__unit_byte(c[2]);
-            mm->material.color.a = 255;
-            mm->material.color_set = true;
+            mote__set_color(&mm->material, c);
             break;
         }
         MOTE__TRY(mote__emissive(ld, m, at, mm));
@@ -1140,10 +1151,8 @@ static R mote__multi_materials(mote__ld *ld)
             if (unique_slots) {
                 char at2[96];
                 snprintf(at2, sizeof at2, "%s.materialsUniqueIds[%d]", at, k);
-                float unused;
                 const char *text;
-                MOTE__TRY(mote__to_float(ld, s, at2, &unused));
-                MOTE__TRY(mote__double_text(ld, s->valuedouble, at2, &text));
+                MOTE__TRY(mote__number_value_text(ld, s, at2, &text));
                 mm->slots[k] = mote__idmap_find_last(ld->mat_unique_map, text);
                 if (mm->slots[k] < 0)
                     mote__warn(ld, "%s: %s is the uniqueId of no material", at2, text);
@@ -1642,9 +1651,7 @@ static R mote__node_common(mote__ld *ld, const cJSON *mesh, const char *where, m
     if (nd->parent_by_unique)
         MOTE__TRY(mote__number_text(ld, mesh, "parentId", where, &nd->parent_id));
     else
-        MOTE__TRY(mote__str(ld, mesh, "parentId", where, &nd->parent_id));
-    if (!mote__names_parent(mesh))
-        nd->parent_id = NULL;
+        MOTE__TRY(mote__id_ref(ld, mesh, "parentId", where, &nd->parent_id));
     /* a child of an instance names the instance's source mesh and the
      * instance's place among the source's instances (Babylon.js resolves
      * it so when it loads parents); -1, or absent: the parent itself */
@@ -2614,9 +2621,10 @@ static R mote__build_meshes(mote__ld *ld)
         return mote__oom(ld, "meshes");
     sc->mesh_count = (int)total;
     /* a byte per mesh and flag, so that mote_scene_draw_desc needs no search */
-    bool *two_sided = mote__store_alloc(ld->keep, 2 * total, sizeof *two_sided), *unlit = two_sided + total;
+    bool *two_sided = mote__store_alloc(ld->keep, 2 * total, sizeof *two_sided);
     if (!two_sided)
         return mote__oom(ld, "meshes");
+    bool *unlit = two_sided + total;
     sc->two_sided = two_sided;
     sc->unlit = unlit;
     for (int i = 0; i < ld->node_count; i++) {
