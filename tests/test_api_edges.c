@@ -295,6 +295,29 @@ void null_pointers_should_fail_without_a_crash(void)
     TEST_ASSERT_NULL(mote_device_stats(NULL));
 }
 
+/* The mesh helpers take NULL too: no mesh has the identity as its world
+ * matrix, and a mesh without a vertex array has no vertices, whatever
+ * vertex_count says: an unknown bound (never rejected). */
+void mesh_helpers_should_take_null_pointers(void)
+{
+    float w[16];
+    memset(w, 0xab, sizeof w);
+    mote_mesh_world_matrix(NULL, w);
+    for (int i = 0; i < 16; i++)
+        TEST_ASSERT_EQUAL_FLOAT(i % 5 == 0 ? 1.0f : 0.0f, w[i]);
+    mote_mesh m;
+    memset(&m, 0, sizeof m);
+    m.position[0] = 3.0f;
+    mote_mesh_world_matrix(&m, NULL);
+    mote_mesh_update_bounds(NULL);
+    m.vertex_count = 5;
+    m.bounds_center[1] = 7.0f;
+    m.bounds_radius = 2.0f;
+    mote_mesh_update_bounds(&m);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, m.bounds_radius);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, m.bounds_center[1]);
+}
+
 /* Sizes and formats no device can have: no size, and no bytes written. */
 void sizes_and_formats_no_device_has_should_give_nothing(void)
 {
@@ -348,6 +371,7 @@ int main(void)
     RUN_TEST(band_mode_should_clear_every_band_even_when_asked_to_keep);
     RUN_TEST(textures_with_bad_strides_should_draw_untextured);
     RUN_TEST(null_pointers_should_fail_without_a_crash);
+    RUN_TEST(mesh_helpers_should_take_null_pointers);
     RUN_TEST(sizes_and_formats_no_device_has_should_give_nothing);
     RUN_TEST(a_file_limit_of_size_max_should_be_no_limit);
     return UNITY_END();

@@ -365,7 +365,8 @@ typedef struct mote_mesh {
     const mote_rgba *colors;
 } mote_mesh;
 
-/* Computes bounds_center/bounds_radius from the vertices (skips NaN/Inf). */
+/* Computes bounds_center/bounds_radius from the vertices (skips NaN/Inf;
+ * none finite, or no vertex array: radius 0, unknown). NULL: nothing. */
 void mote_mesh_update_bounds(mote_mesh *mesh);
 
 /* ---- camera and lights ------------------------------------------------- */
@@ -642,7 +643,8 @@ void mote_convert_row(const void *src, mote_format src_format,
 
 /* ---- the vertex stage, exposed for tools and tests ------------------- */
 
-/* Column-major 4x4 matrices (cglm layout: m[col][row] as float[16]). */
+/* Column-major 4x4 matrices (cglm layout: m[col][row] as float[16]).
+ * mote_mesh_world_matrix of a NULL mesh is the identity. */
 void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16]);
 void mote_camera_view_matrix(const mote_camera *camera, float view[16]);
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect,

@@ -186,7 +186,12 @@ bool mote__world_matrix(const mote_mesh *mesh, float world[16])
 
 void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16])
 {
-    mote__world_matrix(mesh, world);
+    if (!world)
+        return;
+    if (!mesh)
+        mote__mat4_identity(world);
+    else
+        mote__world_matrix(mesh, world);
 }
 
 /* v / |v| (a zero vector stays as it is). The square of a vector longer
@@ -336,31 +341,36 @@ static bool mote__finite3(const float p[3])
 
 void mote_mesh_update_bounds(mote_mesh *mesh)
 {
-    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    if (!mesh)
+        return;
+    /* two passes over the finite vertices (one loop, less flash): their
+     * box, whose centre is the sphere's, then the farthest from it; no
+     * vertex array means no vertex, whatever vertex_count says */
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, r2 = 0.0f;
     bool any = false;
-    for (uint32_t i = 0; i < mesh->vertex_count; i++) {
-        const float *p = mesh->vertices[i].position;
-        if (!mote__finite3(p))
-            continue;
-        for (int k = 0; k < 3; k++) {
-            if (!any || p[k] < lo[k]) lo[k] = p[k];
-            if (!any || p[k] > hi[k]) hi[k] = p[k];
+    const uint32_t count = mesh->vertices ? mesh->vertex_count : 0;
+    for (int pass = 0; pass < 2; pass++) {
+        for (uint32_t i = 0; i < count; i++) {
+            const float *p = mesh->vertices[i].position;
+            if (!mote__finite3(p))
+                continue;
+            if (pass == 0) {
+                for (int k = 0; k < 3; k++) {
+                    if (!any || p[k] < lo[k]) lo[k] = p[k];
+                    if (!any || p[k] > hi[k]) hi[k] = p[k];
+                }
+                any = true;
+            } else {
+                float d[3];
+                memcpy(d, p, sizeof d);
+                mote__sub3(d, mesh->bounds_center);
+                float dd = mote__dot3(d, d);
+                if (dd > r2)
+                    r2 = dd;
+            }
         }
-        any = true;
-    }
-    float r2 = 0.0f;
-    for (int k = 0; k < 3; k++)
-        mesh->bounds_center[k] = 0.5f * (lo[k] + hi[k]);
-    for (uint32_t i = 0; i < mesh->vertex_count; i++) {
-        const float *p = mesh->vertices[i].position;
-        if (!mote__finite3(p))
-            continue;
-        float d[3];
-        memcpy(d, p, sizeof d);
-        mote__sub3(d, mesh->bounds_center);
-        float dd = mote__dot3(d, d);
-        if (dd > r2)
-            r2 = dd;
+        for (int k = 0; k < 3 && pass == 0; k++)
+            mesh->bounds_center[k] = 0.5f * (lo[k] + hi[k]);
     }
     /* a hair larger so float rounding in the test never rejects a visible mesh */
     mesh->bounds_radius = any ? mote__sqrtf(r2) * 1.0001f + 1e-6f : 0.0f;
