@@ -44,7 +44,7 @@ CROSS_CFLAGS := -std=c99 -Os -g -ffp-contract=off -ffreestanding -nostdinc \
 CROSS_CORE_FLAGS := -DMOTE_SPECIALISE_SPANS=0
 CROSS_PROFILE := -DMOTE_ENABLE_LINES=0 -DMOTE_ENABLE_BINNING=0 -DMOTE_ENABLE_BILINEAR=0 \
                  -DMOTE_ENABLE_SUBSPAN=0 -DMOTE_ENABLE_VERTEX_COLORS=0 -DMOTE_ENABLE_LIGHT_FALLOFF=0 \
-                 -DMOTE_ENABLE_ORTHOGRAPHIC=0
+                 -DMOTE_ENABLE_ORTHOGRAPHIC=0 -DMOTE_ENABLE_EMISSIVE=0
 CROSS_LDFLAGS := -nostdlib -Wl,--gc-sections
 
 # The firmware example's scene, baked at build time.

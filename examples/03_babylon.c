@@ -60,7 +60,8 @@ int main(int argc, char **argv)
     mote_device dev;
     mote_device_init(&dev, &desc);
 
-    /* The file's light and ambient colour, with a camera that fits both. */
+    /* The file's light (its ambient colour is in the materials), with a
+     * camera that fits both tori. */
     mote_frame_desc frame;
     mote_scene_frame(&scenes[0], (float)W / H, &frame);
     frame.camera.position[0] = 0.0f;

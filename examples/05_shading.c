@@ -7,7 +7,9 @@
  * brightness per triangle, from its own normal at its centre. Right,
  * Gouraud: a brightness per vertex, from the vertex normals, blended
  * across each triangle. Brightness is n.l (clamped at 0) times the light's
- * colour, plus the ambient colour, times the material colour.
+ * colour, times the material colour, plus the material's emissive colour
+ * (the loader puts the scene's ambient colour there, times the material's
+ * ambient), clamped.
  */
 #define _POSIX_C_SOURCE 200809L   /* mkdir */
 
@@ -54,7 +56,8 @@ int main(int argc, char **argv)
     mote_device dev;
     mote_device_init(&dev, &desc);
 
-    /* The file's point light and ambient colour; a camera facing both. */
+    /* The file's point light (its ambient colour is in the materials); a
+     * camera facing both spheres. */
     mote_frame_desc frame;
     mote_scene_frame(&scene, (float)W / H, &frame);
     frame.camera.position[0] = 0.0f;

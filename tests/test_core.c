@@ -527,6 +527,71 @@ void spot_lights_and_ranges_should_fall_off_as_in_babylon(void)
     TEST_ASSERT_EQUAL_INT(0, flat_shade_on_axis(&l));
 }
 
+/* Babylon.js's StandardMaterial composes clamp(lights x diffuse + emissive
+ * + ambient): the material colour multiplies the lights before the clamp,
+ * so lights summing past 1 still brighten a grey material, and the
+ * emissive colour adds to the lit colour. mote does the same, per vertex
+ * (Gouraud: the four-lane path on a quad) and per face (flat). */
+static void draw_lit_quad(mote_mode mode, const mote_material *mat, int lights, float intensity, bool unlit)
+{
+    mote_mesh q = screen_quad(5.0f);
+    q.material = *mat;
+    frame.light_count = lights;
+    for (int i = 0; i < lights; i++) {
+        memset(&frame.lights[i], 0, sizeof frame.lights[i]);
+        frame.lights[i].type = MOTE_LIGHT_DIRECTIONAL;
+        frame.lights[i].direction[2] = 1.0f;   /* straight into the quad: n.l = 1 */
+        frame.lights[i].intensity = intensity;
+    }
+    mote_draw_desc dd = {0};
+    dd.mode = mode;
+    dd.unlit = unlit;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &q, &dd));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+}
+
+static void assert_every_pixel(uint8_t r, uint8_t g, uint8_t b)
+{
+    for (int i = 0; i < W * H; i += 7) {
+        TEST_ASSERT_UINT8_WITHIN(1, r, color[4 * i]);
+        TEST_ASSERT_UINT8_WITHIN(1, g, color[4 * i + 1]);
+        TEST_ASSERT_UINT8_WITHIN(1, b, color[4 * i + 2]);
+    }
+}
+
+void the_material_colour_should_multiply_the_lights_before_the_clamp_and_emissive_add(void)
+{
+    mote_material grey;
+    memset(&grey, 0, sizeof grey);
+    grey.color = (mote_rgba){102, 102, 102, 255};   /* 0.4 */
+    grey.color_set = true;
+    const mote_mode modes[2] = {MOTE_MODE_GOURAUD, MOTE_MODE_FLAT};
+    for (int m = 0; m < 2; m++) {
+        /* two lights of 1: 2 x 0.4 = 0.8 (clamped first, 0.4) */
+        draw_lit_quad(modes[m], &grey, 2, 1.0f, false);
+        assert_every_pixel(204, 204, 204);
+        /* three of 1: 1.2, clamped */
+        draw_lit_quad(modes[m], &grey, 3, 1.0f, false);
+        assert_every_pixel(255, 255, 255);
+        /* emissive 0.2 red: 0.4 + 0.2 in red */
+        mote_material glow = grey;
+        glow.emissive = (mote_rgba){51, 0, 0, 0};
+        draw_lit_quad(modes[m], &glow, 1, 1.0f, false);
+        assert_every_pixel(153, 102, 102);
+        /* no light: the emissive colour alone */
+        draw_lit_quad(modes[m], &glow, 0, 1.0f, false);
+        assert_every_pixel(51, 0, 0);
+        /* half a light and a strong emissive: 0.2 + 0.9, clamped */
+        glow.emissive = (mote_rgba){230, 230, 0, 0};
+        draw_lit_quad(modes[m], &glow, 1, 0.5f, false);
+        assert_every_pixel(255, 255, 51);
+        /* unlit draws show the material colour, without the emissive */
+        draw_lit_quad(modes[m], &glow, 1, 0.5f, true);
+        assert_every_pixel(102, 102, 102);
+    }
+}
+
 void gouraud_shading_should_interpolate_vertex_intensities(void)
 {
     /* one triangle with n.l = 1, 0.5, 0 at its vertices; check the values at
@@ -1003,6 +1068,7 @@ int main(void)
     RUN_TEST(depth_rejected_pixels_should_be_tested_but_not_written);
     RUN_TEST(flat_shading_should_use_the_face_normal_against_the_light);
     RUN_TEST(spot_lights_and_ranges_should_fall_off_as_in_babylon);
+    RUN_TEST(the_material_colour_should_multiply_the_lights_before_the_clamp_and_emissive_add);
     RUN_TEST(gouraud_shading_should_interpolate_vertex_intensities);
     RUN_TEST(lighting_should_follow_the_mesh_rotation);
     RUN_TEST(vertex_colours_should_multiply_the_lit_material_colour_in_every_mode);

@@ -684,43 +684,61 @@ void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
     mote_scene_free(&s);
 }
 
-/* disableLighting: Babylon.js binds no lights, so the material shows
- * clamp(emissive + ambient x the scene's ambient colour); a PBR material's
- * unlit shows its albedo. The flag is per mesh, applied by
- * mote_scene_draw_desc, and a drawn triangle takes exactly that colour in
- * a frame without lights; a lit material's emissive colour is named in a
- * warning, as mote does not draw it. */
-void loader_should_draw_disable_lighting_materials_by_their_emissive_colour(void)
+/* Babylon.js's StandardMaterial adds the emissive colour and ambient x the
+ * scene's ambientColor to lights x diffuse, then clamps. disableLighting
+ * binds no lights: the material shows clamp(emissive + ambient x the
+ * scene's ambient colour), and a PBR material's unlit its albedo; the flag
+ * is per mesh, applied by mote_scene_draw_desc. A lit material takes the
+ * same sum as its emissive colour, and mote_scene_frame leaves the frame's
+ * ambient at 0, so a material without an ambient colour gets none of the
+ * scene's (Babylon.js's default ambient colour is black). In a frame
+ * without lights each triangle is then exactly that colour. */
+void loader_should_add_emissive_and_ambient_colours_as_babylon_does(void)
 {
     const char *j = "{\"ambientColor\":[0.5,0.5,0.5],\"materials\":["
                     "{\"id\":\"glow\",\"disableLighting\":true,\"diffuse\":[1,0,0],"
                     "\"emissive\":[0.2,0.4,0.6],\"ambient\":[0.4,0.2,0]},"
                     "{\"id\":\"dark\",\"disableLighting\":1,\"diffuse\":[1,1,1]},"
                     "{\"id\":\"pbr\",\"albedo\":[0,1,0],\"unlit\":true},"
-                    "{\"id\":\"lit\",\"diffuse\":[0,0,1],\"emissiveColor\":[1,1,1]}],"
+                    "{\"id\":\"lit\",\"diffuse\":[0,0,1],\"emissiveColor\":[1,1,1]},"
+                    "{\"id\":\"amb\",\"diffuse\":[1,1,1],\"emissive\":[0.1,0,0],\"ambient\":[0.2,0.4,0]},"
+                    "{\"id\":\"plain\",\"diffuse\":[1,0,0]}],"
                     "\"meshes\":[{\"id\":\"a\",\"materialId\":\"glow\"," TRI "},"
                     "{\"id\":\"b\",\"materialId\":\"dark\"," TRI "},"
                     "{\"id\":\"c\",\"materialId\":\"pbr\"," TRI "},"
-                    "{\"id\":\"d\",\"materialId\":\"lit\"," TRI "}]}";
+                    "{\"id\":\"d\",\"materialId\":\"lit\"," TRI "},"
+                    "{\"id\":\"e\",\"materialId\":\"amb\"," TRI "},"
+                    "{\"id\":\"f\",\"materialId\":\"plain\"," TRI "}]}";
     mote_scene s;
     load_json(j, "u", &s);
-    TEST_ASSERT_EQUAL(4, s.mesh_count);
-    TEST_ASSERT_NOT_NULL(strstr(s.warning, "materials[3]: its emissive colour is not drawn"));
-    static const bool want_unlit[4] = {true, true, true, false};
-    /* 0.2 + 0.4 x 0.5, 0.4 + 0.2 x 0.5, 0.6: (102, 128, 153); nothing; the
-     * albedo; the diffuse colour */
-    static const uint8_t want_rgb[4][3] = {{102, 128, 153}, {0, 0, 0}, {0, 255, 0}, {0, 0, 255}};
-    for (int k = 0; k < 4; k++) {
+    TEST_ASSERT_EQUAL(6, s.mesh_count);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    static const bool want_unlit[6] = {true, true, true, false, false, false};
+    /* unlit: 0.2 + 0.4 x 0.5, 0.4 + 0.2 x 0.5, 0.6: (102, 128, 153);
+     * nothing; the albedo. Lit: the diffuse colour, and as emissive
+     * white; 0.1 + 0.2 x 0.5, 0.4 x 0.5, 0: (51, 51, 0); none */
+    static const uint8_t want_rgb[6][3] = {{102, 128, 153}, {0, 0, 0}, {0, 255, 0},
+                                           {0, 0, 255}, {255, 255, 255}, {255, 0, 0}};
+    static const uint8_t want_emissive[6][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0},
+                                                {255, 255, 255}, {51, 51, 0}, {0, 0, 0}};
+    for (int k = 0; k < 6; k++) {
         TEST_ASSERT_EQUAL(want_unlit[k], s.unlit[k]);
         TEST_ASSERT_TRUE(s.meshes[k].material.color_set);
         assert_material_rgb(&s, k, want_rgb[k]);
+        const mote_rgba e = s.meshes[k].material.emissive;
+        TEST_ASSERT_EQUAL_UINT8(want_emissive[k][0], e.r);
+        TEST_ASSERT_EQUAL_UINT8(want_emissive[k][1], e.g);
+        TEST_ASSERT_EQUAL_UINT8(want_emissive[k][2], e.b);
         mote_draw_desc d;
         mote_scene_draw_desc(&s, k, NULL, &d);
         TEST_ASSERT_EQUAL(want_unlit[k], d.unlit);
     }
-    /* a frame without lights: the unlit triangle is its colour, pixel for
-     * pixel, where the lit one would be black */
-    for (int k = 0; k < 4; k += 3) {
+    mote_frame_desc f;
+    mote_scene_frame(&s, 1.0f, &f);
+    ASSERT_VEC3(0.0f, 0.0f, 0.0f, f.ambient, 0.0f);
+    /* a frame without lights: the unlit triangles are their colour, the lit
+     * ones their emissive colour, pixel for pixel */
+    for (int k = 0; k < 6; k++) {
         static uint8_t color[16 * 16 * 4];
         memset(color, 0, sizeof color);
         mote_device dev;
@@ -729,16 +747,17 @@ void loader_should_draw_disable_lighting_materials_by_their_emissive_colour(void
         mote_scene_draw_desc(&s, k, NULL, &d);
         TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[k], &d));
         TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+        const uint8_t *want = want_unlit[k] ? want_rgb[k] : want_emissive[k];
         int drawn = 0, coloured = 0;
         for (int p = 0; p < 16 * 16; p++) {
             const uint8_t *px = color + 4 * p;
             if (px[3] == 0)
                 continue;
             drawn++;
-            coloured += px[0] == want_rgb[k][0] && px[1] == want_rgb[k][1] && px[2] == want_rgb[k][2];
+            coloured += px[0] == want[0] && px[1] == want[1] && px[2] == want[2];
         }
         TEST_ASSERT_GREATER_THAN(4, drawn);
-        TEST_ASSERT_EQUAL(k == 0 ? drawn : 0, coloured);
+        TEST_ASSERT_EQUAL(drawn, coloured);
     }
     mote_scene_free(&s);
 }
@@ -1667,7 +1686,7 @@ int main(void)
     RUN_TEST(loader_should_warn_of_a_material_type_it_does_not_read);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
-    RUN_TEST(loader_should_draw_disable_lighting_materials_by_their_emissive_colour);
+    RUN_TEST(loader_should_add_emissive_and_ambient_colours_as_babylon_does);
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);
     RUN_TEST(loader_should_warn_about_positions_without_indices);

@@ -364,6 +364,11 @@ static int write_scene(const char *dir, const char *file, const gscene *s, layou
         const gmaterial *m = &s->materials[i];
         fprintf(f, "    {\"name\": \"%s\", \"id\": \"%s\", \"diffuse\": ", m->id, m->id);
         put_vec(f, m->diffuse, 3);
+        /* Babylon.js adds the scene's ambientColor times the material's
+         * ambient colour (black unless written): the diffuse colour, so
+         * that the ambient light tints as the lights do */
+        fprintf(f, ", \"ambient\": ");
+        put_vec(f, m->diffuse, 3);
         if (m->texture) {
             fprintf(f, ",\n     \"diffuseTexture\": {\"name\": \"%s\", \"uScale\": %s, ",
                     m->texture, num(b, m->u_scale, 4));

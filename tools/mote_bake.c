@@ -92,6 +92,13 @@ static const char *tf(bool v)
     return v ? "true" : "false";
 }
 
+/* whether a material has an emissive colour (the loader's sum of emissive
+ * and ambient x the scene's ambient colour) */
+static bool mote__bake_glows(const mote_material *mat)
+{
+    return (mat->emissive.r | mat->emissive.g | mat->emissive.b) != 0;
+}
+
 /* One texture converted to the target format, row by row. */
 static int write_texture(baker *b, const mote_texture *t, int slot)
 {
@@ -205,7 +212,12 @@ static void write_mesh(baker *b, int i)
     fprintf(f, "            .v_scale = %s,\n", flt(buf, mat->v_scale));
     fprintf(f, "            .u_offset = %s,\n", flt(buf, mat->u_offset));
     fprintf(f, "            .v_offset = %s,\n", flt(buf, mat->v_offset));
-    fprintf(f, "            .v_origin_bottom = %s,\n        },\n", tf(mat->v_origin_bottom));
+    fprintf(f, "            .v_origin_bottom = %s,\n", tf(mat->v_origin_bottom));
+    /* written only when set, as .hidden */
+    if (mote__bake_glows(mat))
+        fprintf(f, "            .emissive = {%u, %u, %u, %u},\n", mat->emissive.r, mat->emissive.g,
+                mat->emissive.b, mat->emissive.a);
+    fputs("        },\n", f);
     fputs("        .bounds_center = ", f);
     put_floats(b, m->bounds_center, 3);
     fprintf(f, ",\n        .bounds_radius = %s,\n", flt(buf, m->bounds_radius));
@@ -483,6 +495,13 @@ int main(int argc, char **argv)
             fprintf(stderr, "mote-bake: warning: the scene's spot lights and light ranges need "
                             "MOTE_ENABLE_LIGHT_FALLOFF; a build without it (the firmware profile) "
                             "lights nothing by a spot light and ignores ranges\n");
+            break;
+        }
+    for (int i = 0; i < scene.mesh_count; i++)
+        if (mote__bake_glows(&scene.meshes[i].material)) {
+            fprintf(stderr, "mote-bake: warning: the scene's emissive and ambient colours need "
+                            "MOTE_ENABLE_EMISSIVE; a build without it (the firmware profile) "
+                            "ignores them\n");
             break;
         }
     if (scene.has_camera && scene.camera.projection == MOTE_PROJECTION_ORTHOGRAPHIC)

@@ -89,8 +89,10 @@
  *               falloff (point and spot light with a range: max(0, 1 -
  *               distance / range); spot light: 0 outside its cone, else
  *               cos(angle to the axis)^exponent), summed with the ambient colour,
- *               clamped to [0,1] per channel, times the material colour,
- *               times the vertex colour when the mesh has them
+ *               times the material colour, plus the material's emissive
+ *               colour, clamped to [0,1] per channel (Babylon.js's
+ *               StandardMaterial: clamp(lights x diffuse + emissive +
+ *               ambient)), times the vertex colour when the mesh has them
  *               (mote_mesh.colors). Flat: one value per triangle from its
  *               geometric normal at its centroid (and the mean of its three
  *               vertex colours); Gouraud: per vertex from vertex normals.
@@ -188,7 +190,7 @@ extern "C" {
  * MOTE_ERR_UNSUPPORTED and draws nothing; everything else draws the same
  * bytes. On a Cortex-M0+ each saves about this much of the core's 22 KB
  * (-Os, one left out at a time; `make cross` prints the sizes of the
- * firmware profile, which turns all seven off):
+ * firmware profile, which turns all eight off):
  *   MOTE_ENABLE_LINES     ~0.8 KB  MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS
  *                                  (mote_draw refuses them)
  *   MOTE_ENABLE_BINNING   ~4.2 KB  desc.arena, tile binning and parallel
@@ -208,7 +210,10 @@ extern "C" {
  *                                  the Cortex-M0+ profile does not have)
  *   MOTE_ENABLE_ORTHOGRAPHIC
  *                         ~0.3 KB  MOTE_PROJECTION_ORTHOGRAPHIC (mote_begin
- *                                  refuses it) */
+ *                                  refuses it)
+ *   MOTE_ENABLE_EMISSIVE  ~40 B    mote_material.emissive; left out, it is
+ *                                  ignored, as the falloff is (a check
+ *                                  that refused it would cost as much) */
 #ifndef MOTE_ENABLE_LINES
 #define MOTE_ENABLE_LINES 1
 #endif
@@ -229,6 +234,9 @@ extern "C" {
 #endif
 #ifndef MOTE_ENABLE_ORTHOGRAPHIC
 #define MOTE_ENABLE_ORTHOGRAPHIC 1
+#endif
+#ifndef MOTE_ENABLE_EMISSIVE
+#define MOTE_ENABLE_EMISSIVE 1
 #endif
 
 /* ---- results ----------------------------------------------------------- */
@@ -324,6 +332,8 @@ typedef struct mote_material {
     float u_scale, v_scale;       /* 0 = 1 */
     float u_offset, v_offset;     /* uv' = uv * scale + offset */
     bool v_origin_bottom;         /* true: v = 0 addresses the bottom row */
+    mote_rgba emissive;           /* added to the lit colour (see Lighting in
+                                     CONVENTIONS); alpha unused; {0}: none */
 } mote_material;
 
 /* A mesh: vertices, triangles (3 indices each) and a transform.

@@ -69,6 +69,11 @@ typedef struct mote_scene {
     mote_light lights[MOTE_MAX_LIGHTS];
     int light_count;
     bool has_lights;              /* the file lists lights, perhaps all disabled */
+    /* The scene's ambientColor. Babylon.js adds it times each material's
+     * ambient colour (black by default) to the lit colour, untinted: the
+     * loader folds that into the materials' emissive colours, so
+     * mote_scene_frame leaves the frame's ambient (which mote multiplies
+     * by the material colour) at 0. */
     float ambient[3];
     mote_rgba clear_color;
     float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
@@ -122,10 +127,11 @@ mote_result mote_scene_load_memory(const char *json, size_t size, const char *na
                                    mote_scene *out, char *message, size_t message_size);
 void mote_scene_free(mote_scene *scene);
 
-/* Fills a frame (camera, lights, ambient) for the scene: its own camera when
+/* Fills a frame (camera and lights) for the scene: its own camera when
  * it has one (a horizontal fov made vertical for aspect, width / height),
  * else a camera that frames the bounding box from the front-top right; when
- * the file lists no lights, a point light above the camera. */
+ * the file lists no lights, a point light above the camera. The ambient
+ * stays 0: the materials hold the scene's (see mote_scene.ambient). */
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
 
 /* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with

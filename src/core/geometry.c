@@ -65,7 +65,7 @@ typedef struct mote__v4_light {
 typedef struct mote__v4_draw {
     mote__v4f mvp[16], world[16], nrm[9];
     mote__v4f uscale, vscale, uoff, voff, tex_w, tex_h;
-    mote__v4f guard_x, guard_y, color[3], ambient[3];
+    mote__v4f guard_x, guard_y, color[3], emissive[3], ambient[3];
     __m128d snap_h[2];            /* the snap's h of x and y (mote__v4_snap_by) */
     mote__v4i snap_hi[2], snap_lim;  /* h as an int; the snap's limit */
     int lights;
@@ -92,6 +92,7 @@ typedef struct mote__ctx {
     bool cull_cw, cull_ccw;       /* which screen windings are culled */
     float guard_x, guard_y;       /* guard band in NDC units */
     float color[3];               /* material colour 0..1 */
+    float emissive[3];            /* the material's emissive colour 0..1 (lit draws add it) */
     float uscale, vscale, uoff, voff;
     float tex_w, tex_h;
     mote__sink_kind sink;
@@ -224,10 +225,15 @@ MOTE__VERTEX_INLINE void mote__light(const mote__ctx *cx, const float p[3], cons
                 acc[c] += k * col[c] * ndl * att;
         }
     }
+    /* the material colour times the lights, plus its emissive colour,
+     * then clamped: Babylon.js's StandardMaterial, clamp(diffuseBase x
+     * diffuseColor + emissive + ambient) */
     for (int c = 0; c < 3; c++) {
-        float v = acc[c];
-        v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* also maps NaN to 0 */
-        out[c] = v * cx->color[c];
+        float v = acc[c] * cx->color[c];
+#if MOTE_ENABLE_EMISSIVE
+        v += cx->emissive[c];
+#endif
+        out[c] = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* also maps NaN to 0 */
     }
 }
 
@@ -627,9 +633,8 @@ static void mote__light4(const mote__ctx *cx, const mote__v4f p[3], const mote__
         }
     }
     for (int c = 0; c < 3; c++) {
-        mote__v4f v = acc[c];
-        v = mote__v4_select(v > 0.0f, mote__v4_select(v < 1.0f, v, mote__v4_splat(1.0f)), mote__v4_splat(0.0f));
-        out[c] = v * v4->color[c];
+        mote__v4f v = acc[c] * v4->color[c] + v4->emissive[c];
+        out[c] = mote__v4_select(v > 0.0f, mote__v4_select(v < 1.0f, v, mote__v4_splat(1.0f)), mote__v4_splat(0.0f));
     }
 }
 
@@ -907,6 +912,7 @@ static void mote__v4_light_init(mote__ctx *cx)
     const mote_frame_desc *f = &cx->dev->frame;
     for (int c = 0; c < 3; c++) {
         v4->color[c] = mote__v4_splat(cx->color[c]);
+        v4->emissive[c] = mote__v4_splat(cx->emissive[c]);
         v4->ambient[c] = mote__v4_splat(f->ambient[c]);
     }
     v4->lights = 0;
@@ -1482,8 +1488,12 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     if (mote__mesh_outside(cx))
         return false;
     const mote_material *mat = &mesh->material;
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
         cx->color[k] = mat->color_set ? (float)(&mat->color.r)[k] / 255.0f : 1.0f;
+#if MOTE_ENABLE_EMISSIVE          /* else 0, as the memset above left it */
+        cx->emissive[k] = (float)(&mat->emissive.r)[k] / 255.0f;
+#endif
+    }
     cx->uscale = mote__or(mat->u_scale, 1.0f);
     cx->vscale = mote__or(mat->v_scale, 1.0f);
     cx->uoff = mat->u_offset;

@@ -971,23 +971,32 @@ static uint8_t mote__unit_byte(float c)
     return (uint8_t)(c * 255.0f + 0.5f);
 }
 
-/* Babylon.js's StandardMaterial adds the emissive colour and ambient x the
- * scene's ambient colour to the lights, then clamps. With disableLighting it
- * binds no lights, so those two alone, clamped, are what multiplies the
- * texture and the vertex colours: exactly what mote's unlit draw does with
- * that as the material colour. On a lit material mote cannot add them (its
- * lights multiply the material colour), so a glowing one is named in a
- * warning. A PBR material's unlit shows its albedo as it is. */
+/* A colour's channels from 0..1 (clamped); alpha as it was. */
+static void mote__set_rgb(mote_rgba *out, const float c[3])
+{
+    out->r = mote__unit_byte(c[0]);
+    out->g = mote__unit_byte(c[1]);
+    out->b = mote__unit_byte(c[2]);
+}
+
 /* A material's colour from 0..1 channels (clamped). */
 static void mote__set_color(mote_material *mat, const float c[3])
 {
-    mat->color.r = mote__unit_byte(c[0]);
-    mat->color.g = mote__unit_byte(c[1]);
-    mat->color.b = mote__unit_byte(c[2]);
+    mote__set_rgb(&mat->color, c);
     mat->color.a = 255;
     mat->color_set = true;
 }
 
+/* Babylon.js's StandardMaterial draws clamp(lights x diffuse + emissive +
+ * ambient x the scene's ambient colour) x texture x vertex colour: mote's
+ * lit colour (mote.h, Lighting) with the last two sums as the material's
+ * emissive colour. So the scene's ambient colour is taken in here, and
+ * mote_scene_frame leaves the frame's (which mote multiplies by the
+ * diffuse colour) at 0: a material without an ambient colour (Babylon.js's
+ * default is black) gets none of it. With disableLighting Babylon.js binds
+ * no lights, so those two alone, clamped, multiply the texture and the
+ * vertex colours: exactly mote's unlit draw with that as the material
+ * colour. A PBR material's unlit shows its albedo as it is. */
 static R mote__emissive(mote__ld *ld, const cJSON *m, const char *at, mote__mat *mm)
 {
     float emissive[3] = {0, 0, 0}, ambient[3] = {0, 0, 0};
@@ -1001,16 +1010,14 @@ static R mote__emissive(mote__ld *ld, const cJSON *m, const char *at, mote__mat 
         mm->unlit = true;
         return MOTE_OK;
     }
-    if (!mm->unlit) {
-        if (emissive[0] > 0.0f || emissive[1] > 0.0f || emissive[2] > 0.0f)
-            mote__warn(ld, "%s: its emissive colour is not drawn (mote adds no light to a lit "
-                       "material)", at);
-        return MOTE_OK;
-    }
     float c[3];
     for (int k = 0; k < 3; k++)
         c[k] = emissive[k] + ambient[k] * ld->scene->ambient[k];
-    mote__set_color(&mm->material, c);
+    if (mm->unlit) {
+        mote__set_color(&mm->material, c);
+        return MOTE_OK;
+    }
+    mote__set_rgb(&mm->material.emissive, c);
     return MOTE_OK;
 }
 
@@ -3243,5 +3250,6 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
         l->intensity = 1.0f;
         frame->light_count = 1;
     }
-    memcpy(frame->ambient, scene->ambient, sizeof frame->ambient);
+    /* frame->ambient stays 0: the materials' emissive colours hold the
+     * scene's ambient colour as Babylon.js adds it (mote__emissive) */
 }

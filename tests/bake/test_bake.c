@@ -163,17 +163,22 @@ void baked_meshes_should_keep_which_are_hidden(void)
 /* A mesh whose material says disableLighting is baked unlit, and drawn
  * with the baked flags it renders as the loaded scene drawn through
  * mote_scene_draw_desc: its emissive blue (0.5: 128) exactly, lights or
- * not (the hidden scene's sign, in a corner of the frame). */
-void baked_meshes_should_keep_which_are_unlit(void)
+ * not (the hidden scene's sign, in a corner of the frame). A lit
+ * material's emissive colour is baked too (the shown mesh's blue glow). */
+void baked_meshes_should_keep_which_are_unlit_and_their_emissive_colours(void)
 {
     mote_scene s;
     TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_HIDDEN, NULL, &s, msg, sizeof msg), msg);
-    int unlit = 0;
+    int unlit = 0, glowing = 0;
     for (int i = 0; i < s.mesh_count; i++) {
         TEST_ASSERT_EQUAL(s.unlit[i], baked_hidden_unlit[i]);
         unlit += baked_hidden_unlit[i];
+        const mote_rgba e = baked_hidden_meshes[i].material.emissive;
+        TEST_ASSERT_EQUAL_MEMORY(&s.meshes[i].material.emissive, &e, sizeof e);
+        glowing += e.b != 0;
     }
     TEST_ASSERT_EQUAL(1, unlit);
+    TEST_ASSERT_EQUAL(1, glowing);
     static uint8_t loaded[W * H * 4], baked[W * H * 4];
     static uint32_t depth[W * H];
     mote_frame_desc frame;
@@ -215,6 +220,6 @@ int main(void)
     RUN_TEST(baked_meshes_should_keep_which_are_two_sided);
     RUN_TEST(a_baked_orthographic_camera_should_render_as_loaded);
     RUN_TEST(baked_meshes_should_keep_which_are_hidden);
-    RUN_TEST(baked_meshes_should_keep_which_are_unlit);
+    RUN_TEST(baked_meshes_should_keep_which_are_unlit_and_their_emissive_colours);
     return UNITY_END();
 }

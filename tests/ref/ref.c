@@ -471,7 +471,7 @@ typedef struct draw_ctx {
     ref_target *t;
     const mote_mesh *mesh;
     double world[16], mvp[16], nrm[9];
-    double color[3];
+    double color[3], emissive[3];
     bool lit, flat, textured;
     mote_draw_desc d;
     ref_shading sh;
@@ -544,8 +544,11 @@ static void light(const draw_ctx *c, const double p[3], const double nrm[3], dou
                 acc[j] += k * col[j] * ndl * att;
         }
     }
-    for (int j = 0; j < 3; j++)
-        out[j] = clamp01(isnan(acc[j]) ? 0.0 : acc[j]) * c->color[j];
+    /* lights x material colour + emissive, clamped (mote.h, Lighting) */
+    for (int j = 0; j < 3; j++) {
+        double v = acc[j] * c->color[j] + c->emissive[j];
+        out[j] = clamp01(isnan(v) ? 0.0 : v);
+    }
 }
 
 /* s x the mean colour of the n vertices listed (mote.h, mote_mesh.colors) */
@@ -738,8 +741,10 @@ bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
         for (int i = 0; i < 9; i++)
             c.nrm[i] = -c.nrm[i];
     const mote_material *mat = &mesh->material;
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
         c.color[k] = mat->color_set ? (double)(&mat->color.r)[k] / 255.0 : 1.0;
+        c.emissive[k] = MOTE_ENABLE_EMISSIVE ? (double)(&mat->emissive.r)[k] / 255.0 : 0.0;
+    }
     c.lit = !c.d.unlit;
     /* unlit flat is one colour per mesh, or per triangle with vertex colours */
     c.flat = mode == MOTE_MODE_FLAT && (c.lit || mesh->colors);
