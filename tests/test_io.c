@@ -620,6 +620,32 @@ void loader_should_warn_of_a_material_type_it_does_not_read(void)
     mote_scene_free(&s);
 }
 
+/* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR material) keeps
+ * its albedo in baseColor and baseTexture, the only keys Babylon.js reads
+ * for it: a diffuse written beside them is not its colour; other types
+ * read no baseColor. */
+void loader_should_read_the_base_colour_and_texture_of_a_metallic_roughness_material(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"mr\",\"customType\":"
+                    "\"BABYLON.PBRMetallicRoughnessMaterial\",\"baseColor\":[0,0,1],\"diffuse\":[1,0,0],"
+                    "\"baseTexture\":{\"name\":\"data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD9"
+                    "1JpzAAAAEklEQVR4nGP4z8DAAMIM/4EAAB/uBfsL2WiLAAAAAElFTkSuQmCC\"}},"
+                    "{\"id\":\"pbr\",\"customType\":\"BABYLON.PBRMaterial\",\"baseColor\":[0,0,1],"
+                    "\"albedo\":[0,1,0]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mr\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"pbr\"," TRI "}]}";
+    mote_scene s;
+    load_json_in(j, "mr", DATA(""), &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    static const uint8_t blue[3] = {0, 0, 255}, green[3] = {0, 255, 0};
+    assert_material_rgb(&s, 0, blue);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[0].material.texture);
+    assert_material_rgb(&s, 1, green);
+    TEST_ASSERT_NULL(s.meshes[1].material.texture);
+    mote_scene_free(&s);
+}
+
 /* An image embedded as a base64 data: URL, in base64String (SceneSerializer,
  * whose "name" is no file) or in name itself: decoded, loaded once for the
  * two materials carrying the same text, rows as in the PNG. */
@@ -1665,6 +1691,7 @@ int main(void)
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
     RUN_TEST(loader_should_resolve_multi_material_slots_by_unique_id);
     RUN_TEST(loader_should_warn_of_a_material_type_it_does_not_read);
+    RUN_TEST(loader_should_read_the_base_colour_and_texture_of_a_metallic_roughness_material);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     RUN_TEST(loader_should_draw_disable_lighting_materials_by_their_emissive_colour);

@@ -6,8 +6,9 @@
  * Babylon.js serialises no switch for vertex colours (`useVertexColors` is
  * a run-time property of its meshes, not written to files), so `colors` are
  * always used; `hasVertexAlpha` is not read, as mote ignores alpha.
- * Materials: diffuse/albedo colour and texture, backFaceCulling (kept per
- * mesh in mote_scene.two_sided: the core's culling is a draw option),
+ * Materials: diffuse/albedo (PBRMetallicRoughness: baseColor) colour and
+ * texture, backFaceCulling (kept per mesh in mote_scene.two_sided: the
+ * core's culling is a draw option),
  * disableLighting with the emissive and ambient colours, or PBR's unlit
  * (mote_scene.unlit, drawn without lights), and
  * the texture's coordinatesIndex (1: uvs2, read only when a material asks
@@ -1081,9 +1082,14 @@ static R mote__materials(mote__ld *ld)
         MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
         mm->two_sided = !cull_back;
         MOTE__TRY(mote__flag(ld, m, "disableLighting", at, &mm->unlit));
-        static const char *const color_keys[4] = {"diffuse", "diffuseColor", "albedo",
-                                                  "albedoColor"};
-        for (int k = 0; k < 4; k++) {
+        /* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR
+         * material) serialises its albedo as baseColor and baseTexture
+         * and reads no other key for them; the other types write diffuse
+         * (standard, specular-glossiness) or albedo (PBRMaterial) */
+        const bool metal_rough = cJSON_IsString(type) && strcmp(type->valuestring, read_types[2]) == 0;
+        static const char *const color_keys[5] = {"diffuse", "diffuseColor", "albedo",
+                                                  "albedoColor", "baseColor"};
+        for (int k = metal_rough ? 4 : 0; k < (metal_rough ? 5 : 4); k++) {
             float c[4] = {1, 1, 1, 1};
             if (!mote__get(m, color_keys[k]))
                 continue;
@@ -1092,8 +1098,8 @@ static R mote__materials(mote__ld *ld)
             break;
         }
         MOTE__TRY(mote__emissive(ld, m, at, mm));
-        static const char *const tex_keys[2] = {"diffuseTexture", "albedoTexture"};
-        for (int k = 0; k < 2; k++) {
+        static const char *const tex_keys[3] = {"diffuseTexture", "albedoTexture", "baseTexture"};
+        for (int k = metal_rough ? 2 : 0; k < (metal_rough ? 3 : 2); k++) {
             const cJSON *t = mote__get(m, tex_keys[k]);
             if (!t)
                 continue;
