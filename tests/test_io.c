@@ -710,6 +710,59 @@ void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
     mote_scene_free(&s);
 }
 
+/* Babylon.js culls by a mesh's overrideMaterialSideOrientation (7.x:
+ * sideOrientation), else by its material's sideOrientation: 0
+ * (ClockWiseSideOrientation) turns a left-handed scene's front faces round
+ * (exports of glTF scenes write it on every mesh), as cullBackFaces false
+ * does; in a right-handed scene 0 is the default and 1 turns them round.
+ * The flipped triangles come from one copy of an index array, shared by
+ * the meshes and instances drawing it. */
+void loader_should_turn_the_front_faces_round_by_side_orientation(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"cw\",\"sideOrientation\":0},"
+                    "{\"id\":\"ccw\",\"sideOrientation\":1},{\"id\":\"front\",\"cullBackFaces\":false}],"
+                    "\"geometries\":{\"vertexData\":[{\"id\":\"g\"," TRI "}]},"
+                    "\"meshes\":[{\"id\":\"a\"," TRI "},"
+                    "{\"id\":\"b\",\"overrideMaterialSideOrientation\":0,\"geometryId\":\"g\","
+                    "\"instances\":[{\"name\":\"bi\"}]},"
+                    "{\"id\":\"c\",\"materialId\":\"cw\"," TRI "},"
+                    "{\"id\":\"d\",\"materialId\":\"cw\",\"overrideMaterialSideOrientation\":1," TRI "},"
+                    "{\"id\":\"e\",\"materialId\":\"ccw\",\"sideOrientation\":0,\"geometryId\":\"g\"},"
+                    "{\"id\":\"f\",\"materialId\":\"cw\",\"overrideMaterialSideOrientation\":null," TRI "},"
+                    "{\"id\":\"h\",\"materialId\":\"front\"," TRI "}]}";
+    mote_scene s;
+    load_json(j, "side", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(8, s.mesh_count);
+    static const uint32_t front[3] = {0, 1, 2}, round[3] = {0, 2, 1};
+    static const bool flipped[8] = {false, true, true, false, true, true, true, true};
+    for (int k = 0; k < 8; k++)
+        TEST_ASSERT_EQUAL_UINT32_ARRAY(flipped[k] ? round : front, s.meshes[k].indices, 3);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].indices, s.meshes[4].indices);   /* geometry g, once */
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].indices, s.meshes[7].indices);   /* b's instance */
+    /* the camera sees the file's triangles' front: the flipped ones are culled */
+    static uint8_t color[16 * 16 * 4];
+    mote_device dev;
+    begin_small_frame(&dev, color, 16);
+    for (int k = 0; k < 8; k++) {
+        mote_draw_desc d;
+        mote_scene_draw_desc(&s, k, NULL, &d);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[k], &d));
+    }
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_EQUAL_UINT32(6, mote_device_stats(&dev)->triangles_backface);
+    mote_scene_free(&s);
+    const char *rh = "{\"useRightHandedSystem\":true,\"meshes\":[{\"id\":\"a\"," TRI "},"
+                     "{\"id\":\"b\",\"overrideMaterialSideOrientation\":1," TRI "},"
+                     "{\"id\":\"c\",\"overrideMaterialSideOrientation\":0," TRI "}]}";
+    load_json(rh, "side_rh", &s);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(round, s.meshes[0].indices, 3);   /* mirrored: flipped once */
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(front, s.meshes[1].indices, 3);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(round, s.meshes[2].indices, 3);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 /* disableLighting: Babylon.js binds no lights, so the material shows
  * clamp(emissive + ambient x the scene's ambient colour); a PBR material's
  * unlit shows its albedo. The flag is per mesh, applied by
@@ -1694,6 +1747,7 @@ int main(void)
     RUN_TEST(loader_should_read_the_base_colour_and_texture_of_a_metallic_roughness_material);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
+    RUN_TEST(loader_should_turn_the_front_faces_round_by_side_orientation);
     RUN_TEST(loader_should_draw_disable_lighting_materials_by_their_emissive_colour);
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);

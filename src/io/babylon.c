@@ -56,6 +56,10 @@
  * - useRightHandedSystem true: the scene is loaded mirrored in z, which
  *   draws Babylon.js's image on mote's left-handed core (mote__mirror_point;
  *   tested in tests/test_loader_transforms.c).
+ * - A mesh's overrideMaterialSideOrientation (or sideOrientation), else its
+ *   material's sideOrientation, other than the scene's default, or a
+ *   material's cullBackFaces false, turns its front faces round: its
+ *   triangles are drawn flipped (mote__side_indices).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -128,6 +132,10 @@ static void *mote__store_alloc(mote__store *s, size_t count, size_t size)
 
 /* ---- loader state ------------------------------------------------------ */
 
+/* A sideOrientation as Babylon.js culls by it: 0 (Material.ClockWise-
+ * SideOrientation) or any other number; not said: the scene's default */
+enum { MOTE__SIDE_UNSAID = 0, MOTE__SIDE_CW, MOTE__SIDE_OTHER };
+
 typedef struct mote__mat {
     const char *id;
     const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
@@ -136,6 +144,8 @@ typedef struct mote__mat {
     bool two_sided;               /* backFaceCulling false */
     bool unlit;                   /* disableLighting (or PBR's unlit): no lights */
     bool uv2;                     /* the texture's coordinatesIndex is 1: it samples uvs2 */
+    unsigned char side;           /* sideOrientation (MOTE__SIDE_...) */
+    bool cull_front;              /* cullBackFaces false: the front faces are culled */
 } mote__mat;
 
 typedef struct mote__multi {
@@ -181,6 +191,7 @@ typedef struct mote__node {
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
     bool is_helper;               /* a sheared matrix's hidden stand-in (mote__fold_matrix) */
+    unsigned char side;           /* overrideMaterialSideOrientation or sideOrientation (MOTE__SIDE_...) */
     mote_vertex *verts;
     uint32_t nv;
     /* uvs2, 2 floats per vertex, in the temporary store; read only when a
@@ -197,6 +208,10 @@ typedef struct mote__node {
     /* unindexed, right-handed: the flipped sequential runs from vertex 1
      * and 2, made for the sub-meshes that start there (modulo 3) */
     uint32_t *shifted_runs[2];
+    /* idx with each triangle's last two corners swapped, made (once, kept)
+     * for the first (sub-)mesh whose side orientation turns its front
+     * faces round (mote__side_indices) */
+    uint32_t *idx_flipped;
     uint32_t ni;
     mote__sub *subs;
     int sub_count;
@@ -489,6 +504,20 @@ static R mote__flag(mote__ld *ld, const cJSON *obj, const char *key, const char 
     float f;
     MOTE__TRY(mote__to_float(ld, v, at, &f));
     *out = f != 0.0f;
+    return MOTE_OK;
+}
+
+/* key -> a side orientation (MOTE__SIDE_...): a number, 0 or not (Babylon.js
+ * tells only Material.ClockWiseSideOrientation, 0, from the rest); absent
+ * or null keeps *out. */
+static R mote__side(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                    unsigned char *out)
+{
+    const cJSON *v = mote__get(obj, key);
+    float unused;
+    MOTE__TRY(mote__num(ld, obj, key, where, &unused));   /* a finite number, or absent */
+    if (v)
+        *out = v->valuedouble == 0.0 ? MOTE__SIDE_CW : MOTE__SIDE_OTHER;
     return MOTE_OK;
 }
 
@@ -1078,9 +1107,12 @@ static R mote__materials(mote__ld *ld)
         if (!read_type)
             mote__warn(ld, "%s: customType \"%s\" is not read; drawn as a standard material of "
                        "its diffuse colour", at, mote__quote(type->valuestring).s);
-        bool cull_back = true;
+        bool cull_back = true, cull_back_faces = true;
         MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
         mm->two_sided = !cull_back;
+        MOTE__TRY(mote__side(ld, m, "sideOrientation", at, &mm->side));
+        MOTE__TRY(mote__flag(ld, m, "cullBackFaces", at, &cull_back_faces));
+        mm->cull_front = !cull_back_faces;
         MOTE__TRY(mote__flag(ld, m, "disableLighting", at, &mm->unlit));
         /* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR
          * material) serialises its albedo as baseColor and baseTexture
@@ -1776,6 +1808,11 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
     MOTE__TRY(mote__id_ref(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
+    /* Mesh.Parse: overrideMaterialSideOrientation (older files; null: none),
+     * then sideOrientation (Babylon.js 7's), each overriding the
+     * material's (the glTF loader sets it on every mesh it makes) */
+    MOTE__TRY(mote__side(ld, mesh, "overrideMaterialSideOrientation", where, &nd->side));
+    MOTE__TRY(mote__side(ld, mesh, "sideOrientation", where, &nd->side));
     const cJSON *verts, *pos;
     MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
@@ -1915,6 +1952,7 @@ static R mote__nodes(mote__ld *ld)
             in->material_id = nd->material_id;
             in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
+            in->side = nd->side;   /* drawn through its source mesh */
             /* InstancedMesh's constructor: setPivotMatrix(source's matrix),
              * with the default postMultiplyPivotMatrix, so an instance
              * undoes even a localMatrix (a pre-transform of its source) */
@@ -2602,6 +2640,51 @@ static R mote__uv2_vertices(mote__ld *ld, mote__node *nd, mote_mesh *m)
     return MOTE_OK;
 }
 
+/* Points m, (sub-)mesh s of node nd, at triangles with their last two
+ * corners swapped when its side orientation turns its front faces round.
+ * Babylon.js culls by the mesh's overrideMaterialSideOrientation, else by
+ * its material's sideOrientation (Mesh._processRendering; the glTF loader
+ * sets it on each mesh, and exports of glTF scenes keep it), whose
+ * default is Material.CounterClockWiseSideOrientation, 1, in a
+ * left-handed scene and ClockWiseSideOrientation, 0, in a right-handed
+ * one (Material's and Mesh's constructors), which mote draws as it is; a
+ * material's cullBackFaces false culls the front faces instead. The core
+ * culls by winding, so such a mesh gets its triangles flipped (as a
+ * right-handed scene's are), once per index array, whatever shares it:
+ * the vertices and normals stay as they are. */
+static R mote__side_indices(mote__ld *ld, mote__node *nd, int s, const mote__mat *mat, mote_mesh *m)
+{
+    unsigned char side = nd->side != MOTE__SIDE_UNSAID ? nd->side
+                         : mat                         ? mat->side
+                                                       : MOTE__SIDE_UNSAID;
+    bool flip = side != MOTE__SIDE_UNSAID && (side == MOTE__SIDE_CW) != ld->right_handed;
+    if (mat && mat->cull_front)
+        flip = !flip;
+    if (!flip || !m->indices || m->index_count == 0)
+        return MOTE_OK;
+    if (nd->sub_count > 0 && (nd->subs[s].own_indices || nd->subs[s].index_start % 3)) {
+        /* an unindexed sub-mesh starting inside one of the array's
+         * triangles, or drawing a run of its own: a flipped copy of its own */
+        uint32_t *own = mote__store_alloc(ld->keep, m->index_count, sizeof *own);
+        if (!own)
+            return mote__oom(ld, nd->where);
+        memcpy(own, m->indices, (size_t)m->index_count * sizeof *own);
+        mote__flip_winding(own, m->index_count);
+        m->indices = own;
+        return MOTE_OK;
+    }
+    mote__node *owner = nd->arrays ? nd->arrays : nd;
+    if (!owner->idx_flipped) {
+        owner->idx_flipped = mote__store_alloc(ld->keep, owner->ni, sizeof *owner->idx_flipped);
+        if (!owner->idx_flipped)
+            return mote__oom(ld, nd->where);
+        memcpy(owner->idx_flipped, owner->idx, (size_t)owner->ni * sizeof *owner->idx);
+        mote__flip_winding(owner->idx_flipped, owner->ni);
+    }
+    m->indices = owner->idx_flipped + (nd->sub_count > 0 ? nd->subs[s].index_start : 0);
+    return MOTE_OK;
+}
+
 /* Whether a node is not drawn: it is invisible or disabled. */
 static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
 {
@@ -2664,6 +2747,7 @@ static R mote__build_meshes(mote__ld *ld)
                 if (mat->uv2)
                     MOTE__TRY(mote__uv2_vertices(ld, nd, m));
             }
+            MOTE__TRY(mote__side_indices(ld, nd, s, mat, m));
             /* v = 0: the bottom row when the texture says invertY (what
              * Babylon.js does by default, and current exporters rely on),
              * the top row when it says not; unsaid, legacy files (the
