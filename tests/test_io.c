@@ -917,16 +917,19 @@ void loader_should_place_children_of_cameras_and_lights(void)
     ASSERT_VEC3(0.0f, 0.0f, -5.0f, p, 1e-5f);
     world_origin(&s.meshes[1], p);         /* by uniqueId 42 */
     ASSERT_VEC3(1.0f, 0.0f, -10.0f, p, 1e-5f);
-    world_origin(&s.meshes[2], p);         /* "side" at x 3 looks down -x */
-    ASSERT_VEC3(1.0f, 0.0f, 0.0f, p, 1e-5f);
+    /* "side" at x 3 looks down -x, from z 0.001: TargetCamera.setTarget
+     * moves a camera level with its target so (see
+     * loader_should_move_a_camera_level_with_its_target_as_babylon_does) */
+    world_origin(&s.meshes[2], p);
+    ASSERT_VEC3(1.0f, 0.0f, 0.001f / 3.0f, p, 1e-5f);
     world_origin(&s.meshes[3], p);         /* its right is +z */
-    ASSERT_VEC3(3.0f, 0.0f, 1.0f, p, 1e-5f);
+    ASSERT_VEC3(3.0f - 0.001f / 3.0f, 0.0f, 1.001f, p, 1e-5f);
     world_origin(&s.meshes[4], p);         /* the point light at y 5 */
     ASSERT_VEC3(1.0f, 5.0f, 0.0f, p, 1e-5f);
     world_origin(&s.meshes[5], p);         /* a hemispheric light: the identity */
     ASSERT_VEC3(0.0f, 2.0f, 0.0f, p, 1e-5f);
-    world_origin(&s.meshes[6], p);         /* "above" pitches down a quarter */
-    ASSERT_VEC3(0.0f, 3.0f, 0.0f, p, 1e-5f);
+    world_origin(&s.meshes[6], p);         /* "above" pitches down a quarter, from z 0.001 */
+    ASSERT_VEC3(0.0f, 3.0f, 0.00075f, p, 1e-5f);
     /* the scene's own camera and lights are as before */
     ASSERT_VEC3(0.0f, 0.0f, -10.0f, s.camera.position, 0.0f);
     TEST_ASSERT_EQUAL(2, s.light_count);
@@ -1005,6 +1008,53 @@ void loader_should_roll_a_camera_by_its_rotation_z(void)
         ASSERT_VEC3(-0.47942554f, 0.87758256f, 0.0f, s.camera.up, 1e-6f);
         mote_scene_free(&s);
     }
+}
+
+/* TargetCamera.setTarget moves a camera level with its target in z by
+ * Epsilon (0.001) along z first: one at its target (an old 3ds Max
+ * export's "Default camera" at the origin, looking at the origin) then
+ * looks down -z, and one right above its target has -z at the top of the
+ * image. A right-handed scene moves the file's z, -z here; an
+ * ArcRotateCamera is not moved. */
+void loader_should_move_a_camera_level_with_its_target_as_babylon_does(void)
+{
+    static const char *const cams[4] = {
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],\"target\":[0,0,0]}]}",
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,12,0],\"target\":[0,0,0]}]}",
+        "{\"useRightHandedSystem\":true,\"cameras\":[{\"id\":\"c\",\"position\":[0,12,0],"
+        "\"target\":[0,0,0]}]}",
+        "{\"cameras\":[{\"id\":\"c\",\"type\":\"ArcRotateCamera\",\"position\":[0,12,0],"
+        "\"target\":[0,0,0]}]}"};
+    static const float want_y[4] = {0.0f, 12.0f, 12.0f, 12.0f}, want_z[4] = {1e-3f, 1e-3f, -1e-3f, 0.0f};
+    for (int k = 0; k < 4; k++) {
+        mote_scene s;
+        load_json(cams[k], "level", &s);
+        ASSERT_VEC3(0.0f, want_y[k], want_z[k], s.camera.position, 0.0f);
+        ASSERT_VEC3(0.0f, 0.0f, 0.0f, s.camera.target, 0.0f);
+        mote_scene_free(&s);
+    }
+    /* the camera at its target sees a point 5 down -z in the middle; the
+     * one above its target sees the file's -z up the image */
+    mote_scene s;
+    load_json(cams[0], "level", &s);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 1.0f, &f);
+    float m[16], clip[4];
+    mote_camera_view_matrix(&f.camera, m);
+    static const float ahead[3] = {0.0f, 0.0f, -5.0f};
+    for (int r = 0; r < 3; r++)
+        clip[r] = m[r] * ahead[0] + m[4 + r] * ahead[1] + m[8 + r] * ahead[2] + m[12 + r];
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, clip[0]);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, clip[1]);
+    TEST_ASSERT_TRUE(clip[2] > 4.9f);   /* in front (view z grows forward) */
+    mote_scene_free(&s);
+    load_json(cams[1], "level", &s);
+    mote_scene_frame(&s, 1.0f, &f);
+    mote_camera_view_matrix(&f.camera, m);
+    static const float north[3] = {0.0f, 0.0f, -5.0f};
+    float y = m[1] * north[0] + m[5] * north[1] + m[9] * north[2] + m[13];
+    TEST_ASSERT_TRUE(y > 4.9f);         /* up the image */
+    mote_scene_free(&s);
 }
 
 /* activeCameraID finds a camera by name when it has no id. */
@@ -1728,6 +1778,7 @@ int main(void)
     RUN_TEST(loader_should_aim_a_camera_at_its_locked_target);
     RUN_TEST(loader_should_turn_a_camera_by_its_quaternion);
     RUN_TEST(loader_should_roll_a_camera_by_its_rotation_z);
+    RUN_TEST(loader_should_move_a_camera_level_with_its_target_as_babylon_does);
     RUN_TEST(loader_should_find_the_active_camera_by_name);
     RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
     RUN_TEST(loader_should_leave_out_disabled_lights);

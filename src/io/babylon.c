@@ -76,7 +76,9 @@
  *   out; when all are, mote_scene_frame adds no stand-in (has_lights).
  * - lockedTargetId (a mesh or transform node; else a warning) sets the
  *   target to that node's world position; then target, then rotation
- *   (rotationQuaternion overriding it) give the view direction.
+ *   (rotationQuaternion overriding it) give the view direction; a camera
+ *   level with its target or locked target in z is first moved 0.001
+ *   along z, as TargetCamera.setTarget does (mote__level_target_nudge).
  * - minZ and maxZ default to 1 and 10000 (Camera's); minZ <= 0 is 0.1,
  *   maxZ 0 is no far plane (a far one: mote__camera); minZ >= maxZ is an
  *   error. activeCameraID matches an id, or a name when there is no id.
@@ -2062,6 +2064,22 @@ static R mote__camera_turn(mote__ld *ld, const cJSON *cam, const char *at, float
     return MOTE_OK;
 }
 
+/* TargetCamera.setTarget first moves a camera level with its target in z
+ * by Epsilon (0.001) along z, so that one at its target looks down -z and
+ * one right above or below it has a way round, where a look-at has none;
+ * an ArcRotateCamera (and its stereo kinds) places itself otherwise. On
+ * the file's position and target, mirrored in a right-handed scene (the
+ * file's +z is -z here). */
+static void mote__level_target_nudge(const mote__ld *ld, const cJSON *cam, float position[3],
+                                     const float target[3])
+{
+    const cJSON *type = mote__get(cam, "type");
+    if (cJSON_IsString(type) && strstr(type->valuestring, "ArcRotateCamera"))
+        return;
+    if (position[2] == target[2])
+        position[2] += ld->right_handed ? -1e-3f : 1e-3f;
+}
+
 /* The node standing for cameras[k] (list 0) or lights[k] (list 1), at
  * `where`, made on first use: in Babylon.js cameras and lights are nodes, so they may be parents
  * and have parents. It goes at the end of ld->nodes with no id in the node
@@ -2105,6 +2123,7 @@ static R mote__xnode(mote__ld *ld, int list, int k, const char *where, int *out)
             MOTE__TRY(mote__vec(ld, json, "target", where, 3, 0, target));
             if (ld->right_handed)
                 mote__mirror_point(target);
+            mote__level_target_nudge(ld, json, nd->position, target);
             float d[3] = {target[0] - nd->position[0], target[1] - nd->position[1],
                           target[2] - nd->position[2]};
             nd->rotation[0] = atan2f(-d[1], sqrtf(d[0] * d[0] + d[2] * d[2]));
@@ -2874,10 +2893,12 @@ static R mote__camera(mote__ld *ld)
         float w[16];
         mote_mesh_world_matrix(&ld->scene->meshes[ld->nodes[target_node].first_mesh], w);
         memcpy(c->target, &w[12], sizeof c->target);
+        mote__level_target_nudge(ld, cam, c->position, c->target);
     } else if (mote__get(cam, "target")) {
         MOTE__TRY(mote__vec(ld, cam, "target", at, 3, 0, c->target));
         if (ld->right_handed)
             mote__mirror_point(c->target);
+        mote__level_target_nudge(ld, cam, c->position, c->target);
     } else {
         /* target = position + forward (+z) turned by the rotation (yaw,
          * pitch, roll; rotationQuaternion overrides it), as meshes turn */
