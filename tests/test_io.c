@@ -620,6 +620,32 @@ void loader_should_warn_of_a_material_type_it_does_not_read(void)
     mote_scene_free(&s);
 }
 
+/* Texture.Parse makes no texture of one without a name, null (as old 3ds
+ * Max exports write a map without a bitmap), absent or "", even with a
+ * base64String: the material keeps its colour, and nothing is loaded. */
+void loader_should_make_no_texture_of_one_without_a_name(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"null\",\"diffuse\":[1,0,0],\"diffuseTexture\":"
+                    "{\"name\":null,\"level\":1.0,\"hasAlpha\":true}},"
+                    "{\"id\":\"empty\",\"diffuse\":[1,0,0],\"diffuseTexture\":{\"name\":\"\"}},"
+                    "{\"id\":\"b64\",\"diffuse\":[1,0,0],\"diffuseTexture\":{\"base64String\":"
+                    "\"data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEklEQVR4"
+                    "nGP4z8DAAMIM/4EAAB/uBfsL2WiLAAAAAElFTkSuQmCC\"}}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"null\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"empty\"," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"b64\"," TRI "}]}";
+    mote_scene s;
+    load_json_in(j, "noname", DATA(""), &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(0, s.texture_count);
+    static const uint8_t red[3] = {255, 0, 0};
+    for (int k = 0; k < 3; k++) {
+        TEST_ASSERT_NULL(s.meshes[k].material.texture);
+        assert_material_rgb(&s, k, red);
+    }
+    mote_scene_free(&s);
+}
+
 /* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR material) keeps
  * its albedo in baseColor and baseTexture, the only keys Babylon.js reads
  * for it: a diffuse written beside them is not its colour; other types
@@ -1796,6 +1822,7 @@ int main(void)
     RUN_TEST(loader_should_resolve_multi_material_slots_by_unique_id);
     RUN_TEST(loader_should_warn_of_a_material_type_it_does_not_read);
     RUN_TEST(loader_should_read_the_base_colour_and_texture_of_a_metallic_roughness_material);
+    RUN_TEST(loader_should_make_no_texture_of_one_without_a_name);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
     RUN_TEST(loader_should_turn_the_front_faces_round_by_side_orientation);

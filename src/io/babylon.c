@@ -904,7 +904,7 @@ static R mote__url_decoded_name(mote__ld *ld, const char *at, const char *name, 
 /* Loads (once per resolved path) the texture a material names: a file in
  * the scene's folder (as written, else as a URL: mote__url_decoded_name), or an image embedded as a base64 data: URL, in
  * "base64String" (Babylon.js's SceneSerializer; "name" is then no file) or
- * in "name" itself. */
+ * in "name" itself. A texture without a name is none. */
 static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
                                 mote__mat *mm)
 {
@@ -913,12 +913,15 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
     const char *name, *embedded;
     MOTE__TRY(mote__str(ld, tex, "name", at, &name));
     MOTE__TRY(mote__str(ld, tex, "base64String", at, &embedded));
+    /* Texture.Parse makes no texture of one without a name (null, absent
+     * or ""), base64String or not: old 3ds Max exports write "name": null
+     * for a map without a bitmap, and Babylon.js draws the material's
+     * colour alone */
+    if (!name || !name[0])
+        return MOTE_OK;
     const char *key = embedded ? "base64String" : "name";
-    if (!embedded && name && mote__io_is_data_url(name))
+    if (!embedded && mote__io_is_data_url(name))
         embedded = name;
-    if (!name && !embedded)
-        return mote__fail(ld, MOTE_ERR_PARSE, "%s.name: expected a string (the image file)",
-                          at);
     m->u_scale = 1.0f;
     m->v_scale = 1.0f;
     MOTE__TRY(mote__num(ld, tex, "uScale", at, &m->u_scale));
