@@ -622,12 +622,14 @@ void loader_should_warn_of_a_material_type_it_does_not_read(void)
 
 /* Texture.Parse makes no texture of one without a name, null (as old 3ds
  * Max exports write a map without a bitmap), absent or "", even with a
- * base64String: the material keeps its colour, and nothing is loaded. */
+ * base64String: the material keeps its colour, and nothing is loaded (nor
+ * warned of, as an emissive texture with a name is). */
 void loader_should_make_no_texture_of_one_without_a_name(void)
 {
     const char *j = "{\"materials\":[{\"id\":\"null\",\"diffuse\":[1,0,0],\"diffuseTexture\":"
                     "{\"name\":null,\"level\":1.0,\"hasAlpha\":true}},"
-                    "{\"id\":\"empty\",\"diffuse\":[1,0,0],\"diffuseTexture\":{\"name\":\"\"}},"
+                    "{\"id\":\"empty\",\"diffuse\":[1,0,0],\"diffuseTexture\":{\"name\":\"\"},"
+                    "\"emissiveTexture\":{\"name\":null}},"
                     "{\"id\":\"b64\",\"diffuse\":[1,0,0],\"diffuseTexture\":{\"base64String\":"
                     "\"data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEklEQVR4"
                     "nGP4z8DAAMIM/4EAAB/uBfsL2WiLAAAAAElFTkSuQmCC\"}}],"

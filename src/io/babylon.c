@@ -1030,6 +1030,14 @@ static R mote__emissive(mote__ld *ld, const cJSON *m, const char *at, mote__mat 
                                                                                  : "emissive";
     MOTE__TRY(mote__vec(ld, m, key, at, 3, 4, emissive));
     MOTE__TRY(mote__vec(ld, m, "ambient", at, 3, 4, ambient));
+    /* an emissive texture (one with a name: Texture.Parse makes none
+     * otherwise) adds its colour, lit or not, as no mote draw can: named,
+     * as a glowing colour is (Maya's incandescence map is one) */
+    const cJSON *glow = mote__get(m, "emissiveTexture");
+    const cJSON *glow_name = cJSON_IsObject(glow) ? mote__get(glow, "name") : NULL;
+    if (cJSON_IsString(glow_name) && glow_name->valuestring[0])
+        mote__warn(ld, "%s.emissiveTexture: \"%s\" is not drawn (mote adds no texture's light "
+                   "to a material)", at, mote__quote(glow_name->valuestring).s);
     bool pbr_unlit = false;
     MOTE__TRY(mote__flag(ld, m, "unlit", at, &pbr_unlit));
     if (pbr_unlit) {
