@@ -620,6 +620,60 @@ void loader_should_warn_of_a_material_type_it_does_not_read(void)
     mote_scene_free(&s);
 }
 
+/* Texture.Parse makes no texture of one without a name, null (as old 3ds
+ * Max exports write a map without a bitmap), absent or "", even with a
+ * base64String: the material keeps its colour, and nothing is loaded (nor
+ * warned of, as an emissive texture with a name is). */
+void loader_should_make_no_texture_of_one_without_a_name(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"null\",\"diffuse\":[1,0,0],\"diffuseTexture\":"
+                    "{\"name\":null,\"level\":1.0,\"hasAlpha\":true}},"
+                    "{\"id\":\"empty\",\"diffuse\":[1,0,0],\"diffuseTexture\":{\"name\":\"\"},"
+                    "\"emissiveTexture\":{\"name\":null}},"
+                    "{\"id\":\"b64\",\"diffuse\":[1,0,0],\"diffuseTexture\":{\"base64String\":"
+                    "\"data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEklEQVR4"
+                    "nGP4z8DAAMIM/4EAAB/uBfsL2WiLAAAAAElFTkSuQmCC\"}}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"null\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"empty\"," TRI "},"
+                    "{\"id\":\"c\",\"materialId\":\"b64\"," TRI "}]}";
+    mote_scene s;
+    load_json_in(j, "noname", DATA(""), &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(0, s.texture_count);
+    static const uint8_t red[3] = {255, 0, 0};
+    for (int k = 0; k < 3; k++) {
+        TEST_ASSERT_NULL(s.meshes[k].material.texture);
+        assert_material_rgb(&s, k, red);
+    }
+    mote_scene_free(&s);
+}
+
+/* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR material) keeps
+ * its albedo in baseColor and baseTexture, the only keys Babylon.js reads
+ * for it: a diffuse written beside them is not its colour; other types
+ * read no baseColor. */
+void loader_should_read_the_base_colour_and_texture_of_a_metallic_roughness_material(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"mr\",\"customType\":"
+                    "\"BABYLON.PBRMetallicRoughnessMaterial\",\"baseColor\":[0,0,1],\"diffuse\":[1,0,0],"
+                    "\"baseTexture\":{\"name\":\"data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD9"
+                    "1JpzAAAAEklEQVR4nGP4z8DAAMIM/4EAAB/uBfsL2WiLAAAAAElFTkSuQmCC\"}},"
+                    "{\"id\":\"pbr\",\"customType\":\"BABYLON.PBRMaterial\",\"baseColor\":[0,0,1],"
+                    "\"albedo\":[0,1,0]}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mr\"," TRI "},"
+                    "{\"id\":\"b\",\"materialId\":\"pbr\"," TRI "}]}";
+    mote_scene s;
+    load_json_in(j, "mr", DATA(""), &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    static const uint8_t blue[3] = {0, 0, 255}, green[3] = {0, 255, 0};
+    assert_material_rgb(&s, 0, blue);
+    TEST_ASSERT_EQUAL(1, s.texture_count);
+    TEST_ASSERT_EQUAL_PTR(&s.textures[0], s.meshes[0].material.texture);
+    assert_material_rgb(&s, 1, green);
+    TEST_ASSERT_NULL(s.meshes[1].material.texture);
+    mote_scene_free(&s);
+}
+
 /* An image embedded as a base64 data: URL, in base64String (SceneSerializer,
  * whose "name" is no file) or in name itself: decoded, loaded once for the
  * two materials carrying the same text, rows as in the PNG. */
@@ -682,6 +736,59 @@ void loader_should_draw_both_sides_when_back_face_culling_is_false(void)
     TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
     TEST_ASSERT_EQUAL_UINT32(1, mote_device_stats(&dev)->triangles_backface);
     mote_scene_free(&s);
+}
+
+/* Babylon.js culls by a mesh's overrideMaterialSideOrientation (7.x:
+ * sideOrientation), else by its material's sideOrientation: 0
+ * (ClockWiseSideOrientation) turns a left-handed scene's front faces round
+ * (exports of glTF scenes write it on every mesh), as cullBackFaces false
+ * does; in a right-handed scene 0 is the default and 1 turns them round.
+ * The flipped triangles come from one copy of an index array, shared by
+ * the meshes and instances drawing it. */
+void loader_should_turn_the_front_faces_round_by_side_orientation(void)
+{
+    const char *j = "{\"materials\":[{\"id\":\"cw\",\"sideOrientation\":0},"
+                    "{\"id\":\"ccw\",\"sideOrientation\":1},{\"id\":\"front\",\"cullBackFaces\":false}],"
+                    "\"geometries\":{\"vertexData\":[{\"id\":\"g\"," TRI "}]},"
+                    "\"meshes\":[{\"id\":\"a\"," TRI "},"
+                    "{\"id\":\"b\",\"overrideMaterialSideOrientation\":0,\"geometryId\":\"g\","
+                    "\"instances\":[{\"name\":\"bi\"}]},"
+                    "{\"id\":\"c\",\"materialId\":\"cw\"," TRI "},"
+                    "{\"id\":\"d\",\"materialId\":\"cw\",\"overrideMaterialSideOrientation\":1," TRI "},"
+                    "{\"id\":\"e\",\"materialId\":\"ccw\",\"sideOrientation\":0,\"geometryId\":\"g\"},"
+                    "{\"id\":\"f\",\"materialId\":\"cw\",\"overrideMaterialSideOrientation\":null," TRI "},"
+                    "{\"id\":\"h\",\"materialId\":\"front\"," TRI "}]}";
+    mote_scene s;
+    load_json(j, "side", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(8, s.mesh_count);
+    static const uint32_t front[3] = {0, 1, 2}, round[3] = {0, 2, 1};
+    static const bool flipped[8] = {false, true, true, false, true, true, true, true};
+    for (int k = 0; k < 8; k++)
+        TEST_ASSERT_EQUAL_UINT32_ARRAY(flipped[k] ? round : front, s.meshes[k].indices, 3);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].indices, s.meshes[4].indices);   /* geometry g, once */
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].indices, s.meshes[7].indices);   /* b's instance */
+    /* the camera sees the file's triangles' front: the flipped ones are culled */
+    static uint8_t color[16 * 16 * 4];
+    mote_device dev;
+    begin_small_frame(&dev, color, 16);
+    for (int k = 0; k < 8; k++) {
+        mote_draw_desc d;
+        mote_scene_draw_desc(&s, k, NULL, &d);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s.meshes[k], &d));
+    }
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_EQUAL_UINT32(6, mote_device_stats(&dev)->triangles_backface);
+    mote_scene_free(&s);
+    const char *rh = "{\"useRightHandedSystem\":true,\"meshes\":[{\"id\":\"a\"," TRI "},"
+                     "{\"id\":\"b\",\"overrideMaterialSideOrientation\":1," TRI "},"
+                     "{\"id\":\"c\",\"overrideMaterialSideOrientation\":0," TRI "}]}";
+    load_json(rh, "side_rh", &s);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(round, s.meshes[0].indices, 3);   /* mirrored: flipped once */
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(front, s.meshes[1].indices, 3);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(round, s.meshes[2].indices, 3);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
 /* Babylon.js's StandardMaterial adds the emissive colour and ambient x the
@@ -857,16 +964,19 @@ void loader_should_place_children_of_cameras_and_lights(void)
     ASSERT_VEC3(0.0f, 0.0f, -5.0f, p, 1e-5f);
     world_origin(&s.meshes[1], p);         /* by uniqueId 42 */
     ASSERT_VEC3(1.0f, 0.0f, -10.0f, p, 1e-5f);
-    world_origin(&s.meshes[2], p);         /* "side" at x 3 looks down -x */
-    ASSERT_VEC3(1.0f, 0.0f, 0.0f, p, 1e-5f);
+    /* "side" at x 3 looks down -x, from z 0.001: TargetCamera.setTarget
+     * moves a camera level with its target so (see
+     * loader_should_move_a_camera_level_with_its_target_as_babylon_does) */
+    world_origin(&s.meshes[2], p);
+    ASSERT_VEC3(1.0f, 0.0f, 0.001f / 3.0f, p, 1e-5f);
     world_origin(&s.meshes[3], p);         /* its right is +z */
-    ASSERT_VEC3(3.0f, 0.0f, 1.0f, p, 1e-5f);
+    ASSERT_VEC3(3.0f - 0.001f / 3.0f, 0.0f, 1.001f, p, 1e-5f);
     world_origin(&s.meshes[4], p);         /* the point light at y 5 */
     ASSERT_VEC3(1.0f, 5.0f, 0.0f, p, 1e-5f);
     world_origin(&s.meshes[5], p);         /* a hemispheric light: the identity */
     ASSERT_VEC3(0.0f, 2.0f, 0.0f, p, 1e-5f);
-    world_origin(&s.meshes[6], p);         /* "above" pitches down a quarter */
-    ASSERT_VEC3(0.0f, 3.0f, 0.0f, p, 1e-5f);
+    world_origin(&s.meshes[6], p);         /* "above" pitches down a quarter, from z 0.001 */
+    ASSERT_VEC3(0.0f, 3.0f, 0.00075f, p, 1e-5f);
     /* the scene's own camera and lights are as before */
     ASSERT_VEC3(0.0f, 0.0f, -10.0f, s.camera.position, 0.0f);
     TEST_ASSERT_EQUAL(2, s.light_count);
@@ -945,6 +1055,53 @@ void loader_should_roll_a_camera_by_its_rotation_z(void)
         ASSERT_VEC3(-0.47942554f, 0.87758256f, 0.0f, s.camera.up, 1e-6f);
         mote_scene_free(&s);
     }
+}
+
+/* TargetCamera.setTarget moves a camera level with its target in z by
+ * Epsilon (0.001) along z first: one at its target (an old 3ds Max
+ * export's "Default camera" at the origin, looking at the origin) then
+ * looks down -z, and one right above its target has -z at the top of the
+ * image. A right-handed scene moves the file's z, -z here; an
+ * ArcRotateCamera is not moved. */
+void loader_should_move_a_camera_level_with_its_target_as_babylon_does(void)
+{
+    static const char *const cams[4] = {
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,0],\"target\":[0,0,0]}]}",
+        "{\"cameras\":[{\"id\":\"c\",\"position\":[0,12,0],\"target\":[0,0,0]}]}",
+        "{\"useRightHandedSystem\":true,\"cameras\":[{\"id\":\"c\",\"position\":[0,12,0],"
+        "\"target\":[0,0,0]}]}",
+        "{\"cameras\":[{\"id\":\"c\",\"type\":\"ArcRotateCamera\",\"position\":[0,12,0],"
+        "\"target\":[0,0,0]}]}"};
+    static const float want_y[4] = {0.0f, 12.0f, 12.0f, 12.0f}, want_z[4] = {1e-3f, 1e-3f, -1e-3f, 0.0f};
+    for (int k = 0; k < 4; k++) {
+        mote_scene s;
+        load_json(cams[k], "level", &s);
+        ASSERT_VEC3(0.0f, want_y[k], want_z[k], s.camera.position, 0.0f);
+        ASSERT_VEC3(0.0f, 0.0f, 0.0f, s.camera.target, 0.0f);
+        mote_scene_free(&s);
+    }
+    /* the camera at its target sees a point 5 down -z in the middle; the
+     * one above its target sees the file's -z up the image */
+    mote_scene s;
+    load_json(cams[0], "level", &s);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 1.0f, &f);
+    float m[16], clip[4];
+    mote_camera_view_matrix(&f.camera, m);
+    static const float ahead[3] = {0.0f, 0.0f, -5.0f};
+    for (int r = 0; r < 3; r++)
+        clip[r] = m[r] * ahead[0] + m[4 + r] * ahead[1] + m[8 + r] * ahead[2] + m[12 + r];
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, clip[0]);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, clip[1]);
+    TEST_ASSERT_TRUE(clip[2] > 4.9f);   /* in front (view z grows forward) */
+    mote_scene_free(&s);
+    load_json(cams[1], "level", &s);
+    mote_scene_frame(&s, 1.0f, &f);
+    mote_camera_view_matrix(&f.camera, m);
+    static const float north[3] = {0.0f, 0.0f, -5.0f};
+    float y = m[1] * north[0] + m[5] * north[1] + m[9] * north[2] + m[13];
+    TEST_ASSERT_TRUE(y > 4.9f);         /* up the image */
+    mote_scene_free(&s);
 }
 
 /* activeCameraID finds a camera by name when it has no id. */
@@ -1668,6 +1825,7 @@ int main(void)
     RUN_TEST(loader_should_aim_a_camera_at_its_locked_target);
     RUN_TEST(loader_should_turn_a_camera_by_its_quaternion);
     RUN_TEST(loader_should_roll_a_camera_by_its_rotation_z);
+    RUN_TEST(loader_should_move_a_camera_level_with_its_target_as_babylon_does);
     RUN_TEST(loader_should_find_the_active_camera_by_name);
     RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
     RUN_TEST(loader_should_leave_out_disabled_lights);
@@ -1684,8 +1842,11 @@ int main(void)
     RUN_TEST(loader_should_resolve_material_unique_id_before_material_id);
     RUN_TEST(loader_should_resolve_multi_material_slots_by_unique_id);
     RUN_TEST(loader_should_warn_of_a_material_type_it_does_not_read);
+    RUN_TEST(loader_should_read_the_base_colour_and_texture_of_a_metallic_roughness_material);
+    RUN_TEST(loader_should_make_no_texture_of_one_without_a_name);
     RUN_TEST(loader_should_decode_textures_embedded_as_base64_data_urls);
     RUN_TEST(loader_should_draw_both_sides_when_back_face_culling_is_false);
+    RUN_TEST(loader_should_turn_the_front_faces_round_by_side_orientation);
     RUN_TEST(loader_should_add_emissive_and_ambient_colours_as_babylon_does);
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     RUN_TEST(loader_should_draw_unindexed_meshes_as_consecutive_triangles);

@@ -117,7 +117,9 @@ typedef struct mote_scene {
  * with coordinatesIndex 1 samples uvs2; backFaceCulling false fills
  * two_sided, disableLighting unlit; images may be embedded as base64
  * data: URLs (base64String, or name). A right-handed file
- * (useRightHandedSystem) loads mirrored in z (mirrored_z). */
+ * (useRightHandedSystem) loads mirrored in z (mirrored_z); a mesh whose
+ * side orientation (its own or its material's) turns its front faces
+ * round gets its triangles flipped. */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures

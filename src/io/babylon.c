@@ -6,8 +6,9 @@
  * Babylon.js serialises no switch for vertex colours (`useVertexColors` is
  * a run-time property of its meshes, not written to files), so `colors` are
  * always used; `hasVertexAlpha` is not read, as mote ignores alpha.
- * Materials: diffuse/albedo colour and texture, backFaceCulling (kept per
- * mesh in mote_scene.two_sided: the core's culling is a draw option),
+ * Materials: diffuse/albedo (PBRMetallicRoughness: baseColor) colour and
+ * texture, backFaceCulling (kept per mesh in mote_scene.two_sided: the
+ * core's culling is a draw option),
  * disableLighting with the emissive and ambient colours, or PBR's unlit
  * (mote_scene.unlit, drawn without lights), and
  * the texture's coordinatesIndex (1: uvs2, read only when a material asks
@@ -55,6 +56,10 @@
  * - useRightHandedSystem true: the scene is loaded mirrored in z, which
  *   draws Babylon.js's image on mote's left-handed core (mote__mirror_point;
  *   tested in tests/test_loader_transforms.c).
+ * - A mesh's overrideMaterialSideOrientation (or sideOrientation), else its
+ *   material's sideOrientation, other than the scene's default, or a
+ *   material's cullBackFaces false, turns its front faces round: its
+ *   triangles are drawn flipped (mote__side_indices).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -71,7 +76,9 @@
  *   out; when all are, mote_scene_frame adds no stand-in (has_lights).
  * - lockedTargetId (a mesh or transform node; else a warning) sets the
  *   target to that node's world position; then target, then rotation
- *   (rotationQuaternion overriding it) give the view direction.
+ *   (rotationQuaternion overriding it) give the view direction; a camera
+ *   level with its target or locked target in z is first moved 0.001
+ *   along z, as TargetCamera.setTarget does (mote__level_target_nudge).
  * - minZ and maxZ default to 1 and 10000 (Camera's); minZ <= 0 is 0.1,
  *   maxZ 0 is no far plane (a far one: mote__camera); minZ >= maxZ is an
  *   error. activeCameraID matches an id, or a name when there is no id.
@@ -127,6 +134,10 @@ static void *mote__store_alloc(mote__store *s, size_t count, size_t size)
 
 /* ---- loader state ------------------------------------------------------ */
 
+/* A sideOrientation as Babylon.js culls by it: 0 (Material.ClockWise-
+ * SideOrientation) or any other number; not said: the scene's default */
+enum { MOTE__SIDE_UNSAID = 0, MOTE__SIDE_CW, MOTE__SIDE_OTHER };
+
 typedef struct mote__mat {
     const char *id;
     const char *unique_id;        /* uniqueId as text ("%.17g"), or NULL */
@@ -135,6 +146,8 @@ typedef struct mote__mat {
     bool two_sided;               /* backFaceCulling false */
     bool unlit;                   /* disableLighting (or PBR's unlit): no lights */
     bool uv2;                     /* the texture's coordinatesIndex is 1: it samples uvs2 */
+    unsigned char side;           /* sideOrientation (MOTE__SIDE_...) */
+    bool cull_front;              /* cullBackFaces false: the front faces are culled */
 } mote__mat;
 
 typedef struct mote__multi {
@@ -180,6 +193,7 @@ typedef struct mote__node {
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
     bool is_helper;               /* a sheared matrix's hidden stand-in (mote__fold_matrix) */
+    unsigned char side;           /* overrideMaterialSideOrientation or sideOrientation (MOTE__SIDE_...) */
     mote_vertex *verts;
     uint32_t nv;
     /* uvs2, 2 floats per vertex, in the temporary store; read only when a
@@ -196,6 +210,10 @@ typedef struct mote__node {
     /* unindexed, right-handed: the flipped sequential runs from vertex 1
      * and 2, made for the sub-meshes that start there (modulo 3) */
     uint32_t *shifted_runs[2];
+    /* idx with each triangle's last two corners swapped, made (once, kept)
+     * for the first (sub-)mesh whose side orientation turns its front
+     * faces round (mote__side_indices) */
+    uint32_t *idx_flipped;
     uint32_t ni;
     mote__sub *subs;
     int sub_count;
@@ -488,6 +506,20 @@ static R mote__flag(mote__ld *ld, const cJSON *obj, const char *key, const char 
     float f;
     MOTE__TRY(mote__to_float(ld, v, at, &f));
     *out = f != 0.0f;
+    return MOTE_OK;
+}
+
+/* key -> a side orientation (MOTE__SIDE_...): a number, 0 or not (Babylon.js
+ * tells only Material.ClockWiseSideOrientation, 0, from the rest); absent
+ * or null keeps *out. */
+static R mote__side(mote__ld *ld, const cJSON *obj, const char *key, const char *where,
+                    unsigned char *out)
+{
+    const cJSON *v = mote__get(obj, key);
+    float unused;
+    MOTE__TRY(mote__num(ld, obj, key, where, &unused));   /* a finite number, or absent */
+    if (v)
+        *out = v->valuedouble == 0.0 ? MOTE__SIDE_CW : MOTE__SIDE_OTHER;
     return MOTE_OK;
 }
 
@@ -872,7 +904,7 @@ static R mote__url_decoded_name(mote__ld *ld, const char *at, const char *name, 
 /* Loads (once per resolved path) the texture a material names: a file in
  * the scene's folder (as written, else as a URL: mote__url_decoded_name), or an image embedded as a base64 data: URL, in
  * "base64String" (Babylon.js's SceneSerializer; "name" is then no file) or
- * in "name" itself. */
+ * in "name" itself. A texture without a name is none. */
 static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
                                 mote__mat *mm)
 {
@@ -881,12 +913,15 @@ static R mote__material_texture(mote__ld *ld, const cJSON *tex, const char *at,
     const char *name, *embedded;
     MOTE__TRY(mote__str(ld, tex, "name", at, &name));
     MOTE__TRY(mote__str(ld, tex, "base64String", at, &embedded));
+    /* Texture.Parse makes no texture of one without a name (null, absent
+     * or ""), base64String or not: old 3ds Max exports write "name": null
+     * for a map without a bitmap, and Babylon.js draws the material's
+     * colour alone */
+    if (!name || !name[0])
+        return MOTE_OK;
     const char *key = embedded ? "base64String" : "name";
-    if (!embedded && name && mote__io_is_data_url(name))
+    if (!embedded && mote__io_is_data_url(name))
         embedded = name;
-    if (!name && !embedded)
-        return mote__fail(ld, MOTE_ERR_PARSE, "%s.name: expected a string (the image file)",
-                          at);
     m->u_scale = 1.0f;
     m->v_scale = 1.0f;
     MOTE__TRY(mote__num(ld, tex, "uScale", at, &m->u_scale));
@@ -1004,6 +1039,14 @@ static R mote__emissive(mote__ld *ld, const cJSON *m, const char *at, mote__mat 
                                                                                  : "emissive";
     MOTE__TRY(mote__vec(ld, m, key, at, 3, 4, emissive));
     MOTE__TRY(mote__vec(ld, m, "ambient", at, 3, 4, ambient));
+    /* an emissive texture (one with a name: Texture.Parse makes none
+     * otherwise) adds its colour, lit or not, as no mote draw can: named,
+     * as a glowing colour is (Maya's incandescence map is one) */
+    const cJSON *glow = mote__get(m, "emissiveTexture");
+    const cJSON *glow_name = cJSON_IsObject(glow) ? mote__get(glow, "name") : NULL;
+    if (cJSON_IsString(glow_name) && glow_name->valuestring[0])
+        mote__warn(ld, "%s.emissiveTexture: \"%s\" is not drawn (mote adds no texture's light "
+                   "to a material)", at, mote__quote(glow_name->valuestring).s);
     bool pbr_unlit = false;
     MOTE__TRY(mote__flag(ld, m, "unlit", at, &pbr_unlit));
     if (pbr_unlit) {
@@ -1084,13 +1127,21 @@ static R mote__materials(mote__ld *ld)
         if (!read_type)
             mote__warn(ld, "%s: customType \"%s\" is not read; drawn as a standard material of "
                        "its diffuse colour", at, mote__quote(type->valuestring).s);
-        bool cull_back = true;
+        bool cull_back = true, cull_back_faces = true;
         MOTE__TRY(mote__flag(ld, m, "backFaceCulling", at, &cull_back));
         mm->two_sided = !cull_back;
+        MOTE__TRY(mote__side(ld, m, "sideOrientation", at, &mm->side));
+        MOTE__TRY(mote__flag(ld, m, "cullBackFaces", at, &cull_back_faces));
+        mm->cull_front = !cull_back_faces;
         MOTE__TRY(mote__flag(ld, m, "disableLighting", at, &mm->unlit));
-        static const char *const color_keys[4] = {"diffuse", "diffuseColor", "albedo",
-                                                  "albedoColor"};
-        for (int k = 0; k < 4; k++) {
+        /* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR
+         * material) serialises its albedo as baseColor and baseTexture
+         * and reads no other key for them; the other types write diffuse
+         * (standard, specular-glossiness) or albedo (PBRMaterial) */
+        const bool metal_rough = cJSON_IsString(type) && strcmp(type->valuestring, read_types[2]) == 0;
+        static const char *const color_keys[5] = {"diffuse", "diffuseColor", "albedo",
+                                                  "albedoColor", "baseColor"};
+        for (int k = metal_rough ? 4 : 0; k < (metal_rough ? 5 : 4); k++) {
             float c[4] = {1, 1, 1, 1};
             if (!mote__get(m, color_keys[k]))
                 continue;
@@ -1099,8 +1150,8 @@ static R mote__materials(mote__ld *ld)
             break;
         }
         MOTE__TRY(mote__emissive(ld, m, at, mm));
-        static const char *const tex_keys[2] = {"diffuseTexture", "albedoTexture"};
-        for (int k = 0; k < 2; k++) {
+        static const char *const tex_keys[3] = {"diffuseTexture", "albedoTexture", "baseTexture"};
+        for (int k = metal_rough ? 2 : 0; k < (metal_rough ? 3 : 2); k++) {
             const cJSON *t = mote__get(m, tex_keys[k]);
             if (!t)
                 continue;
@@ -1777,6 +1828,11 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
     MOTE__TRY(mote__id_ref(ld, mesh, "materialId", where, &nd->material_id));
     MOTE__TRY(mote__number_text(ld, mesh, "materialUniqueId", where, &nd->material_unique_id));
     MOTE__TRY(mote__flag(ld, mesh, "isUnIndexed", where, &nd->unindexed));
+    /* Mesh.Parse: overrideMaterialSideOrientation (older files; null: none),
+     * then sideOrientation (Babylon.js 7's), each overriding the
+     * material's (the glTF loader sets it on every mesh it makes) */
+    MOTE__TRY(mote__side(ld, mesh, "overrideMaterialSideOrientation", where, &nd->side));
+    MOTE__TRY(mote__side(ld, mesh, "sideOrientation", where, &nd->side));
     const cJSON *verts, *pos;
     MOTE__TRY(mote__arr(ld, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__arr(ld, mesh, "positions", where, &pos));
@@ -1916,6 +1972,7 @@ static R mote__nodes(mote__ld *ld)
             in->material_id = nd->material_id;
             in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
+            in->side = nd->side;   /* drawn through its source mesh */
             /* InstancedMesh's constructor: setPivotMatrix(source's matrix),
              * with the default postMultiplyPivotMatrix, so an instance
              * undoes even a localMatrix (a pre-transform of its source) */
@@ -2025,6 +2082,22 @@ static R mote__camera_turn(mote__ld *ld, const cJSON *cam, const char *at, float
     return MOTE_OK;
 }
 
+/* TargetCamera.setTarget first moves a camera level with its target in z
+ * by Epsilon (0.001) along z, so that one at its target looks down -z and
+ * one right above or below it has a way round, where a look-at has none;
+ * an ArcRotateCamera (and its stereo kinds) places itself otherwise. On
+ * the file's position and target, mirrored in a right-handed scene (the
+ * file's +z is -z here). */
+static void mote__level_target_nudge(const mote__ld *ld, const cJSON *cam, float position[3],
+                                     const float target[3])
+{
+    const cJSON *type = mote__get(cam, "type");
+    if (cJSON_IsString(type) && strstr(type->valuestring, "ArcRotateCamera"))
+        return;
+    if (position[2] == target[2])
+        position[2] += ld->right_handed ? -1e-3f : 1e-3f;
+}
+
 /* The node standing for cameras[k] (list 0) or lights[k] (list 1), at
  * `where`, made on first use: in Babylon.js cameras and lights are nodes, so they may be parents
  * and have parents. It goes at the end of ld->nodes with no id in the node
@@ -2068,6 +2141,7 @@ static R mote__xnode(mote__ld *ld, int list, int k, const char *where, int *out)
             MOTE__TRY(mote__vec(ld, json, "target", where, 3, 0, target));
             if (ld->right_handed)
                 mote__mirror_point(target);
+            mote__level_target_nudge(ld, json, nd->position, target);
             float d[3] = {target[0] - nd->position[0], target[1] - nd->position[1],
                           target[2] - nd->position[2]};
             nd->rotation[0] = atan2f(-d[1], sqrtf(d[0] * d[0] + d[2] * d[2]));
@@ -2603,6 +2677,51 @@ static R mote__uv2_vertices(mote__ld *ld, mote__node *nd, mote_mesh *m)
     return MOTE_OK;
 }
 
+/* Points m, (sub-)mesh s of node nd, at triangles with their last two
+ * corners swapped when its side orientation turns its front faces round.
+ * Babylon.js culls by the mesh's overrideMaterialSideOrientation, else by
+ * its material's sideOrientation (Mesh._processRendering; the glTF loader
+ * sets it on each mesh, and exports of glTF scenes keep it), whose
+ * default is Material.CounterClockWiseSideOrientation, 1, in a
+ * left-handed scene and ClockWiseSideOrientation, 0, in a right-handed
+ * one (Material's and Mesh's constructors), which mote draws as it is; a
+ * material's cullBackFaces false culls the front faces instead. The core
+ * culls by winding, so such a mesh gets its triangles flipped (as a
+ * right-handed scene's are), once per index array, whatever shares it:
+ * the vertices and normals stay as they are. */
+static R mote__side_indices(mote__ld *ld, mote__node *nd, int s, const mote__mat *mat, mote_mesh *m)
+{
+    unsigned char side = nd->side != MOTE__SIDE_UNSAID ? nd->side
+                         : mat                         ? mat->side
+                                                       : MOTE__SIDE_UNSAID;
+    bool flip = side != MOTE__SIDE_UNSAID && (side == MOTE__SIDE_CW) != ld->right_handed;
+    if (mat && mat->cull_front)
+        flip = !flip;
+    if (!flip || !m->indices || m->index_count == 0)
+        return MOTE_OK;
+    if (nd->sub_count > 0 && (nd->subs[s].own_indices || nd->subs[s].index_start % 3)) {
+        /* an unindexed sub-mesh starting inside one of the array's
+         * triangles, or drawing a run of its own: a flipped copy of its own */
+        uint32_t *own = mote__store_alloc(ld->keep, m->index_count, sizeof *own);
+        if (!own)
+            return mote__oom(ld, nd->where);
+        memcpy(own, m->indices, (size_t)m->index_count * sizeof *own);
+        mote__flip_winding(own, m->index_count);
+        m->indices = own;
+        return MOTE_OK;
+    }
+    mote__node *owner = nd->arrays ? nd->arrays : nd;
+    if (!owner->idx_flipped) {
+        owner->idx_flipped = mote__store_alloc(ld->keep, owner->ni, sizeof *owner->idx_flipped);
+        if (!owner->idx_flipped)
+            return mote__oom(ld, nd->where);
+        memcpy(owner->idx_flipped, owner->idx, (size_t)owner->ni * sizeof *owner->idx);
+        mote__flip_winding(owner->idx_flipped, owner->ni);
+    }
+    m->indices = owner->idx_flipped + (nd->sub_count > 0 ? nd->subs[s].index_start : 0);
+    return MOTE_OK;
+}
+
 /* Whether a node is not drawn: it is invisible or disabled. */
 static bool mote__node_hidden(const mote__ld *ld, const mote__node *nd)
 {
@@ -2665,6 +2784,7 @@ static R mote__build_meshes(mote__ld *ld)
                 if (mat->uv2)
                     MOTE__TRY(mote__uv2_vertices(ld, nd, m));
             }
+            MOTE__TRY(mote__side_indices(ld, nd, s, mat, m));
             /* v = 0: the bottom row when the texture says invertY (what
              * Babylon.js does by default, and current exporters rely on),
              * the top row when it says not; unsaid, legacy files (the
@@ -2791,10 +2911,12 @@ static R mote__camera(mote__ld *ld)
         float w[16];
         mote_mesh_world_matrix(&ld->scene->meshes[ld->nodes[target_node].first_mesh], w);
         memcpy(c->target, &w[12], sizeof c->target);
+        mote__level_target_nudge(ld, cam, c->position, c->target);
     } else if (mote__get(cam, "target")) {
         MOTE__TRY(mote__vec(ld, cam, "target", at, 3, 0, c->target));
         if (ld->right_handed)
             mote__mirror_point(c->target);
+        mote__level_target_nudge(ld, cam, c->position, c->target);
     } else {
         /* target = position + forward (+z) turned by the rotation (yaw,
          * pitch, roll; rotationQuaternion overrides it), as meshes turn */
