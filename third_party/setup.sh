@@ -1,11 +1,18 @@
 #!/bin/sh
 # Installs what mote builds against, from Debian packages, when missing:
-#   cglm (libcglm-dev), cJSON (libcjson-dev), stb (libstb-dev), pkg-config.
+#   a C compiler (gcc, when $CC, cc by default, is not found) and the C
+#   library's headers (libc6-dev, which gcc only recommends), pkg-config,
+#   cglm (libcglm-dev), cJSON (libcjson-dev), stb (libstb-dev).
 # Extra packages can be asked for with MOTE_EXTRA_PACKAGES="pkg ...".
 # Nothing is downloaded from anywhere else and nothing is committed.
 set -eu
 
 need=""
+cc=${CC:-cc}; cc=${cc%% *}
+if ! command -v "$cc" >/dev/null 2>&1; then
+    case $cc in *clang*) need="$need clang" ;; *) need="$need gcc" ;; esac
+fi
+[ -f /usr/include/stdio.h ] || need="$need libc6-dev"
 command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 for pair in cglm:libcglm-dev libcjson:libcjson-dev stb:libstb-dev; do
     mod=${pair%%:*}; pkg=${pair#*:}
