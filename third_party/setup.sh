@@ -26,18 +26,20 @@ done
 
 [ -z "$need" ] && exit 0
 
-echo "third_party/setup.sh: installing:$need"
+# (a machine that has never run apt-get update, as a container image, knows
+# no package yet: the printed command updates first)
 if [ "$(id -u)" -ne 0 ] || ! command -v apt-get >/dev/null 2>&1; then
     echo "error: missing:$need" >&2
-    echo "  install them as root:  apt-get install$need" >&2
+    echo "  install them as root:  apt-get update && apt-get install$need" >&2
     exit 1
 fi
+echo "third_party/setup.sh: installing:$need"
 export DEBIAN_FRONTEND=noninteractive
 if ! apt-get install -y -qq $need >/dev/null 2>&1; then
     apt-get update -qq
     apt-get install -y -qq $need || {
         echo "error: apt-get could not install:$need (no network?)" >&2
-        echo "  install them as root:  apt-get install$need" >&2
+        echo "  install them as root:  apt-get update && apt-get install$need" >&2
         exit 1
     }
 fi
