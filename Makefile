@@ -59,7 +59,7 @@ lib: $(LIB)
 deps: $(DEPS_OK)
 
 $(DEPS_OK):
-	@sh third_party/setup.sh
+	@CC="$(CC)" sh third_party/setup.sh
 	@mkdir -p $(dir $@) && touch $@
 
 $(BUILD)/obj/core/%.o: CFLAGS += $(CORE_OPT)

@@ -5,8 +5,10 @@
 # Unity is not packaged by Debian, but Debian's cjson source package carries
 # an upstream copy under tests/unity/src. Order of preference:
 #   1. UNITY_DIR, a folder that holds unity.c (your own copy);
-#   2. the orig tarball of the cjson source package, via `apt-get source`,
-#      enabling deb-src lines for the configured Debian mirrors if needed.
+#   2. the orig tarball of the cjson source package, via `apt-get source`;
+#      when the system's apt has no deb-src lines (a stock Debian 12 has
+#      none), through deb-src twins of its deb sources in a private apt
+#      state in a temporary folder: no root needed, /etc/apt left untouched.
 set -eu
 DEST=${1:-third_party/unity}
 [ -f "$DEST/src/unity.c" ] && exit 0
@@ -27,7 +29,7 @@ fi
 fail() {
     echo "error: could not obtain Unity: $1" >&2
     echo "  either set UNITY_DIR to a folder with unity.c, unity.h, unity_internals.h" >&2
-    echo "  or, as root with network: enable deb-src and run 'apt-get source cjson'" >&2
+    echo "  or run this again with network (deb.debian.org or your Debian mirror)" >&2
     exit 1
 }
 
@@ -36,19 +38,22 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 if ! apt-get source --download-only -qq cjson >/dev/null 2>&1; then
-    [ "$(id -u)" -eq 0 ] || fail "deb-src is not enabled and we are not root"
-    # Add deb-src twins of the configured deb sources (deb822 and one-line styles).
+    # deb-src twins of the configured deb sources (deb822 and one-line styles)
+    mkdir -p apt/parts apt/lists/partial apt/cache/archives/partial
     for f in /etc/apt/sources.list.d/*.sources; do
         [ -f "$f" ] || continue
-        grep -q '^Types:.*deb-src' "$f" && continue
-        sed 's/^Types: deb$/Types: deb-src/' "$f" > "/etc/apt/sources.list.d/mote-src-$(basename "$f")"
+        sed 's/^Types: deb$/Types: deb-src/' "$f" > "apt/parts/$(basename "$f")"
     done
-    if [ -f /etc/apt/sources.list ]; then
-        grep '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' \
-            > /etc/apt/sources.list.d/mote-src.list || true
-    fi
-    apt-get update -qq >/dev/null 2>&1 || true
-    apt-get source --download-only -qq cjson >/dev/null 2>&1 || fail "apt-get source cjson failed"
+    for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+        [ -f "$f" ] || continue
+        grep '^deb ' "$f" | sed 's/^deb /deb-src /' >> apt/parts/deb-src.list || true
+    done
+    set -- -o Dir::Etc::SourceList=/dev/null -o Dir::Etc::SourceParts="$work/apt/parts" \
+        -o Dir::State::Lists="$work/apt/lists" -o Dir::Cache="$work/apt/cache"
+    # a source without deb-src (a third-party repository) fails its part of
+    # the update alone: what counts is whether cjson's source comes
+    apt-get "$@" update -qq >/dev/null 2>&1 || true
+    apt-get "$@" source --download-only -qq cjson >/dev/null 2>&1 || fail "apt-get source cjson failed (no network?)"
 fi
 tarball=$(ls cjson_*.orig.tar.* 2>/dev/null | head -n 1)
 [ -n "$tarball" ] || fail "the cjson source package has no orig tarball"

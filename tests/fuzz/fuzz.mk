@@ -25,7 +25,7 @@ FUZZ_CFLAGS   = -std=c99 -O1 -g -ffp-contract=off $(WARN) -Iinclude -Isrc -Itest
 FUZZ_LIB_OBJ := $(patsubst src/%.c,$(FUZZ_DIR)/obj/%.o,$(CORE_SRC) $(IO_SRC))
 FUZZ_BINS    := $(patsubst %,$(FUZZ_DIR)/fuzz_%,$(FUZZ_TARGETS))
 
-.PHONY: fuzz fuzz-build valgrind
+.PHONY: fuzz fuzz-build valgrind valgrind-deps
 .PRECIOUS: $(FUZZ_DIR)/obj/%.o $(FUZZ_DIR)/obj/fuzz/%.o
 
 fuzz: fuzz-build
@@ -58,13 +58,18 @@ $(FUZZ_DIR)/fuzz_%: $(FUZZ_DIR)/obj/fuzz/fuzz_%.o $(FUZZ_DIR)/obj/fuzz/fuzz_entr
 # The corpus replay includes fuzz_entry.c: rebuild it when that changes.
 $(BUILD)/tests/obj/test_fuzz_regressions.o: tests/fuzz/fuzz_entry.c tests/fuzz/fuzz_entry.h
 
-valgrind: lib examples
+# valgrind is installed (Debian) when missing: without it every case is
+# ignored and the run says nothing.
+valgrind: lib examples valgrind-deps
 	@BIN=$(BIN) sh tests/valgrind.sh
+
+valgrind-deps: | $(DEPS_OK)
+	@MOTE_EXTRA_PACKAGES=valgrind sh third_party/setup.sh
 
 # `make test VALGRIND=1` adds the memcheck runs to the suite (about a
 # minute and a half on two cores).
 ifeq ($(VALGRIND),1)
 TEST_EXTRA += tests/valgrind.sh
-test: examples
+test: examples valgrind-deps
 test: export BIN := $(BIN)
 endif
