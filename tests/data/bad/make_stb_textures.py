@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Writes the crafted textures of tests/data/bad/ that reach known faults of
+the system stb_image (Debian 12's libstb: stb_image 2.27 with upstream fixes
+to September 2022), and a scene naming each (texture_stb_*.babylon).
+
+Every byte is made here, for mote; none comes from a published proof of
+concept. src/io/texture_screen.c refuses (or pads) each before stb_image
+sees it; EXPECTED.txt says what each must give, and tests/valgrind.sh runs
+mote-render on every scene under memcheck against the real library.
+
+    python3 tests/data/bad/make_stb_textures.py     (from the repository root)
+"""
+import os
+import struct
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def write(name, data):
+    with open(os.path.join(HERE, name), 'wb') as f:
+        f.write(data)
+    scene = ('{"materials":[{"id":"t","diffuseTexture":{"name":"%s"}}],"meshes":[{"id":"m",'
+             '"positions":[0,0,0, 1,0,0, 0,1,0],"uvs":[0,0, 1,0, 0,1],"indices":[0,1,2],'
+             '"materialId":"t"}]}\n' % name)
+    base = name.replace('.', '_')
+    with open(os.path.join(HERE, 'texture_%s.babylon' % base), 'w') as f:
+        f.write(scene)
+
+
+# ---- JPEG: segments, and entropy-coded bits (most significant first, 0xff stuffed)
+
+def seg(marker, body):
+    return bytes([0xff, marker]) + struct.pack('>H', len(body) + 2) + body
+
+
+SOI, EOI = b'\xff\xd8', b'\xff\xd9'
+
+
+def dqt(table=0, first=1, sixteen=False):
+    if sixteen:
+        return seg(0xdb, bytes([0x10 | table]) + struct.pack('>64H', first, *[1] * 63))
+    return seg(0xdb, bytes([table, first] + [1] * 63))
+
+
+def sof(marker, w, h, comps):  # comps: (id, sampling, quantisation table)
+    body = bytes([8]) + struct.pack('>HH', h, w) + bytes([len(comps)])
+    for cid, hv, tq in comps:
+        body += bytes([cid, hv, tq])
+    return seg(marker, body)
+
+
+def dht(tc, th, counts, values):
+    return seg(0xc4, bytes([tc << 4 | th]) + bytes(counts) + bytes(values))
+
+
+def sos(comps, ss=0, se=63, ah=0, al=0):  # comps: (id, DC table, AC table)
+    body = bytes([len(comps)])
+    for cid, td, ta in comps:
+        body += bytes([cid, td << 4 | ta])
+    return seg(0xda, body + bytes([ss, se, ah << 4 | al]))
+
+
+def bits(pairs):
+    s = ''.join(format(v, '0%db' % n) for v, n in pairs)
+    s += '1' * (-len(s) % 8)
+    out = bytearray()
+    for i in range(0, len(s), 8):
+        out.append(int(s[i:i + 8], 2))
+        if out[-1] == 0xff:
+            out.append(0)
+    return bytes(out)
+
+
+ONE = [1] + [0] * 15  # a table of one code, '0'
+GREY = [(1, 0x11, 0)]
+
+# a Huffman table of 765 codes: stb_image sizes its arrays for 256 and
+# writes past them; the 0x40 symbols land on its decoding limits
+# (CVE-2022-28042: with them it reads 1 GiB off its table)
+write('stb_huffman_765.jpg',
+      SOI + dqt() + sof(0xc0, 8, 8, GREY) + dht(0, 0, ONE, [0]) +
+      dht(1, 0, [0] * 13 + [255, 255, 255], [0x40] * 765) + sos([(1, 0, 0)]) + b'\0' * 4 + EOI)
+# a scan naming AC table 1, which no DHT defines: stb_image does not clear
+# its tables, so it decodes with whatever malloc returned
+write('stb_no_huffman_table.jpg',
+      SOI + dqt() + sof(0xc0, 8, 8, GREY) + dht(0, 0, ONE, [0]) + dht(1, 0, ONE, [0]) +
+      sos([(1, 0, 1)]) + b'\0' * 4 + EOI)
+# a component whose quantisation table no DQT defines
+write('stb_no_quant_table.jpg',
+      SOI + dqt() + sof(0xc0, 8, 8, [(1, 0x11, 1)]) + dht(0, 0, ONE, [8]) + dht(1, 0, ONE, [0]) +
+      sos([(1, 0, 0)]) + bits([(0, 1), (0xff, 8), (0, 1)]) + EOI)
+# three components, one scan: stb_image converts the two never decoded
+write('stb_unscanned_component.jpg',
+      SOI + dqt() + sof(0xc0, 8, 8, [(1, 0x11, 0), (2, 0x11, 0), (3, 0x11, 0)]) +
+      dht(0, 0, ONE, [0]) + dht(1, 0, ONE, [0]) + sos([(1, 0, 0)]) + b'\0' * 2 + EOI)
+# a restart interval of one block and no restart marker: stb_image stops
+# the scan after the first block and shows the other seven unwritten
+write('stb_restart_cut.jpg',
+      SOI + dqt() + seg(0xdd, struct.pack('>H', 1)) + sof(0xc0, 64, 8, GREY) +
+      dht(0, 0, ONE, [0]) + dht(1, 0, ONE, [0]) + sos([(1, 0, 0)]) + b'\0' * 8 + EOI)
+# progressive, with an AC scan and no first DC scan: the coefficients
+# stb_image transforms were never set
+write('stb_progressive_no_dc.jpg',
+      SOI + dqt() + sof(0xc2, 8, 8, GREY) + dht(1, 0, ONE, [0]) + sos([(1, 0, 0)], 1, 63) +
+      b'\0' * 2 + EOI)
+# DC differences of +32767 summed in an int and multiplied by a 16-bit
+# quantisation step of 65535: signed overflow (issue #1533)
+write('stb_dc_overflow.jpg',
+      SOI + dqt(0, 65535, True) + sof(0xc0, 8, 32, GREY) + dht(0, 0, ONE, [15]) +
+      dht(1, 0, ONE, [0]) + sos([(1, 0, 0)]) + bits([(0, 1), (0x7fff, 15), (0, 1)] * 4) + EOI)
+# the same in a progressive first DC scan, scaled by 2^13 (CVE-2022-28041)
+write('stb_progressive_dc_overflow.jpg',
+      SOI + dqt() + sof(0xc2, 8, 128, GREY) + dht(0, 0, ONE, [15]) +
+      sos([(1, 0, 0)], 0, 0, 0, 13) + bits([(0, 1), (0x7fff, 15)] * 16) + EOI)
