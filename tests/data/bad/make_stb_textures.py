@@ -113,3 +113,73 @@ write('stb_dc_overflow.jpg',
 write('stb_progressive_dc_overflow.jpg',
       SOI + dqt() + sof(0xc2, 8, 128, GREY) + dht(0, 0, ONE, [15]) +
       sos([(1, 0, 0)], 0, 0, 0, 13) + bits([(0, 1), (0x7fff, 15)] * 16) + EOI)
+
+
+# ---- PNG
+
+def chunk(kind, body):
+    return struct.pack('>I', len(body)) + kind + body + struct.pack('>I', zlib.crc32(kind + body))
+
+
+def png(w, h, depth, ctype, zdata, extra=b''):
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, depth, ctype, 0, 0, 0)) +
+            extra + chunk(b'IDAT', zdata) + chunk(b'IEND', b''))
+
+
+class Deflate:
+    """Bits of a DEFLATE stream: fields lowest bit first, Huffman codes highest first."""
+
+    def __init__(self):
+        self.value, self.count = 0, 0
+
+    def put(self, v, n):
+        self.value |= v << self.count
+        self.count += n
+
+    def code(self, c, n):
+        self.put(int(format(c, '0%db' % n)[::-1], 2), n)
+
+    def fixed(self, symbol):  # the fixed literal/length code of DEFLATE
+        if symbol < 144:
+            self.code(0x30 + symbol, 8)
+        elif symbol < 256:
+            self.code(0x190 + symbol - 144, 9)
+        elif symbol < 280:
+            self.code(symbol - 256, 7)
+        else:
+            self.code(0xc0 + symbol - 280, 8)
+
+    def zlib(self):  # header, stream, and the four bytes an Adler-32 takes
+        return b'\x78\x01' + self.value.to_bytes((self.count + 7) // 8, 'little') + b'\0' * 4
+
+
+def copies(length_symbol, distance_code):
+    """A 16 x 16 grey image whose rows are a filter byte and one copy."""
+    z = Deflate()
+    z.put(1, 1)  # final block
+    z.put(1, 2)  # fixed codes
+    for _ in range(16):
+        z.fixed(0)
+        z.fixed(length_symbol)
+        if length_symbol == 267:
+            z.put(1, 1)  # 15 + 1: a length of 16
+        z.code(distance_code, 5)
+    z.fixed(256)
+    return png(16, 16, 8, 0, z.zlib())
+
+
+# distance code 30, which DEFLATE forbids: stb_image 2.27 takes a distance
+# of 0 and copies each output byte onto itself, bytes malloc left
+write('stb_deflate_distance_30.png', copies(267, 30))
+# length code 286, forbidden too (stb_image reads a length of 0)
+write('stb_deflate_length_286.png', copies(286, 0))
+# an IDAT chunk claiming 2 GiB: stb_image reallocates its buffer to that
+# before it finds the file ends
+idat = struct.pack('>I', 0x7ffffff0) + b'IDAT' + zlib.compress(b'\0' * 17)
+write('stb_idat_2gib.png',
+      b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 4, 4, 8, 0, 0, 0, 0)) + idat)
+# a palette of 2 entries and indices 0..15: stb_image looks 2..15 up in an
+# uninitialised stack array (issue #1861); mote pads the palette with black
+write('stb_short_palette.png',
+      png(16, 1, 8, 3, zlib.compress(b'\0' + bytes(range(16))),
+          chunk(b'PLTE', bytes([255, 0, 0, 0, 255, 0]))))
