@@ -111,6 +111,15 @@ static mote_result mote__texture_decode(const unsigned char *d, size_t size,
         return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
                               "texture: %d x %d needs %zu bytes, more than the limit of %zu",
                               w, h, bytes, lim.max_texture_bytes);
+    /* stb_image sizes its 16-bit conversions (16-bit PNG and PSD to 8 bits,
+     * 1-3 channels to 4) in int or unsigned arithmetic it does not check:
+     * past 2^28 pixels the buffer wraps small and it writes past it (upstream
+     * issues #1860, #1936, open). Whatever the limits say, 8 bytes a pixel
+     * must fit an int. */
+    if ((size_t)w * (size_t)h > (size_t)INT_MAX / 8)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %d x %d is more pixels than stb_image converts safely "
+                              "(%d)", w, h, INT_MAX / 8);
     if (mote__io_should_fail())
         return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
                               "texture: out of memory decoding %d x %d", w, h);

@@ -6,12 +6,12 @@
  * 2022. It has known faults that a crafted texture reaches through the two
  * calls mote makes (stbi_info_from_memory, then stbi_load_from_memory with 4
  * channels): a JPEG Huffman table of more than 256 codes overruns its arrays
- * (CVE-2022-28042), JPEG DC sums overflow (CVE-2022-28041), and JPEG and PNG
- * files can make it return pixels it never wrote, heap or stack memory of
- * the process. mote cannot patch the library, so each construct is found
- * here and the image refused, or, for the palettes stb_image reads past,
- * padded with black in a copy. README "Hostile input" lists what is
- * handled and what is not.
+ * (CVE-2022-28042), JPEG DC sums overflow (CVE-2022-28041), and JPEG, PNG,
+ * BMP, TGA and PNM files can make it return pixels it never wrote, heap or
+ * stack memory of the process (CVE-2023-45663 and its kin). mote cannot
+ * patch the library, so each construct is found here and the image refused,
+ * or, for the palettes stb_image reads past, padded with black in a copy.
+ * README "Hostile input" lists what is handled and what is not.
  *
  * Each check follows stb_image's own reading of the bytes (which format it
  * takes a file for, where its reader stands), so that what is checked is
@@ -1082,6 +1082,122 @@ static mote_result mote__screen_png(const unsigned char *d, size_t n, unsigned c
     return MOTE_OK;
 }
 
+/* ---- BMP ---------------------------------------------------------------- */
+
+/* stb_image's BMP loader keeps the palette in an uninitialised stack array
+ * too: it fills the entries between the header and the pixel offset and
+ * looks every index up (upstream issue #1929, open), and it takes an offset
+ * inside the header for a palette of a negative number of entries, so that
+ * none is filled. The first is padded with black entries in a copy, the
+ * second refused. */
+static mote_result mote__screen_bmp(const unsigned char *d, size_t n, unsigned char **fixed,
+                                    size_t *fixed_size, char *message, size_t message_size)
+{
+    uint32_t offset = mote__le32(d, n, 10), hsz = mote__le32(d, n, 14);
+    size_t at = hsz == 12 ? 24 : 28;
+    if ((hsz == 12 ? mote__le16(d, n, 22) : mote__le16(d, n, 26)) != 1)
+        return MOTE_OK; /* stb_image: "bad BMP" */
+    uint32_t bpp = mote__le16(d, n, at);
+    /* stb_image refuses compression 1, 2 and 4 up, and 3 (bitfields) below
+     * 16 bits a pixel; it reads a negative one (as an int) as none */
+    if (hsz != 12 && (int32_t)mote__le32(d, n, 30) > 0)
+        return MOTE_OK;
+    if (bpp != 1 && bpp != 4 && bpp != 8)
+        return MOTE_OK;
+    if (offset > INT_MAX)
+        return MOTE_OK; /* a negative offset: stb_image fails */
+    /* stb_image's palette size: (offset - 38) / 3 entries of 3 bytes for
+     * the 12-byte header (sic), (offset - 14 - hsz) / 4 of 4 bytes else */
+    size_t entry = hsz == 12 ? 3 : 4, before = hsz == 12 ? 38 : 14 + hsz;
+    if (offset < before + entry) {
+        if (offset >= before || (hsz == 12 && offset + 2 >= before))
+            return MOTE_OK; /* no entry: stb_image fails ("invalid") */
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                              "texture: corrupt BMP: its pixels start at byte %lu, inside its "
+                              "%lu-byte header (stb_image would read an uninitialised palette)",
+                              (unsigned long)offset, (unsigned long)(14 + hsz));
+    }
+    size_t entries = (offset - before) / entry;
+    if (entries > 256 || entries >= (1u << bpp))
+        return MOTE_OK;
+    size_t where = 14 + hsz + entries * entry, add = ((1u << bpp) - entries) * entry;
+    if (where > n)
+        return MOTE_OK; /* the pixels are past the end: stb_image reads index 0 */
+    unsigned char *out = mote__io_malloc(n + add);
+    if (!out)
+        return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
+                              "texture: out of memory padding a BMP palette");
+    memcpy(out, d, where);
+    memset(out + where, 0, add);
+    memcpy(out + where + add, d + where, n - where);
+    uint32_t moved = offset + (uint32_t)add;
+    for (int k = 0; k < 4; k++)
+        out[10 + k] = (unsigned char)(moved >> (8 * k));
+    *fixed = out;
+    *fixed_size = n + add;
+    return MOTE_OK;
+}
+
+/* ---- TGA and PNM -------------------------------------------------------- */
+
+/* stb_image reads an uncompressed, unpaletted TGA's rows with stbi__getn
+ * and does not look at its result: rows past the end of the file are
+ * malloc'd memory as it was (CVE-2023-45663). */
+static mote_result mote__screen_tga(const unsigned char *d, size_t n, char *message,
+                                    size_t message_size)
+{
+    unsigned indexed = d[1], type = d[2], bpp = mote__byte_at(d, n, 16);
+    if (indexed || (type != 2 && type != 3))
+        return MOTE_OK; /* palette and run-length data go through stb_image's get8 */
+    unsigned comp = bpp == 8 ? 1 : bpp == 16 && type == 3 ? 2 : bpp == 24 ? 3 : bpp == 32 ? 4 : 0;
+    if (!comp)
+        return MOTE_OK; /* 15/16-bit colour: read pixel by pixel too */
+    size_t need = 18 + (size_t)d[0] + (size_t)mote__le16(d, n, 12) * mote__le16(d, n, 14) * comp;
+    if (n >= need)
+        return MOTE_OK;
+    return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                          "texture: truncated TGA: %zu bytes where its header needs %zu "
+                          "(stb_image would show uninitialised memory, CVE-2023-45663)", n, need);
+}
+
+/* stb_image's PNM reader: the header's numbers (which it accumulates in an
+ * int that overflows, oss-fuzz 22620) and then the pixels, read with
+ * stbi__getn unchecked as for TGA. */
+static mote_result mote__screen_pnm(const unsigned char *d, size_t n, char *message,
+                                    size_t message_size)
+{
+    mote__src s = {d, n, 2};
+    unsigned c = mote__get8(&s);
+    unsigned long v[3];
+    for (int k = 0; k < 3; k++) {
+        for (;;) { /* white space and # comments, as stb_image skips them */
+            while (s.pos < n && (c == ' ' || (c >= '\t' && c <= '\r')))
+                c = mote__get8(&s);
+            if (s.pos >= n || c != '#')
+                break;
+            while (s.pos < n && c != '\n' && c != '\r')
+                c = mote__get8(&s);
+        }
+        v[k] = 0;
+        while (s.pos < n && c >= '0' && c <= '9') {
+            if (v[k] > (unsigned long)(INT_MAX - (int)(c - '0')) / 10)
+                return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                                      "texture: corrupt PNM: a header number over %d (stb_image "
+                                      "reads it into an int that overflows)", INT_MAX);
+            v[k] = v[k] * 10 + (c - '0');
+            c = mote__get8(&s);
+        }
+    }
+    if (v[2] > 255 || v[0] > 1u << 24 || v[1] > 1u << 24)
+        return MOTE_OK; /* 16-bit: texture.c refuses it; the rest stb_image does */
+    size_t need = (size_t)v[0] * v[1] * (d[1] == '6' ? 3 : 1);
+    if (n - s.pos >= need)
+        return MOTE_OK;
+    return mote__io_error(message, message_size, MOTE_ERR_PARSE,
+                          "texture: truncated PNM: %zu bytes of pixels where its header needs "
+                          "%zu (stb_image would show uninitialised memory)", n - s.pos, need);
+}
+
 mote_result mote__texture_screen(const unsigned char *data, size_t size, unsigned char **fixed,
                                  size_t *fixed_size, char *message, size_t message_size)
 {
@@ -1092,6 +1208,12 @@ mote_result mote__texture_screen(const unsigned char *data, size_t size, unsigne
         return mote__screen_jpeg(data, size, message, message_size);
     case MOTE__PNG:
         return mote__screen_png(data, size, fixed, fixed_size, message, message_size);
+    case MOTE__BMP:
+        return mote__screen_bmp(data, size, fixed, fixed_size, message, message_size);
+    case MOTE__TGA:
+        return mote__screen_tga(data, size, message, message_size);
+    case MOTE__PNM:
+        return mote__screen_pnm(data, size, message, message_size);
     default:
         return MOTE_OK;
     }

@@ -183,3 +183,35 @@ write('stb_idat_2gib.png',
 write('stb_short_palette.png',
       png(16, 1, 8, 3, zlib.compress(b'\0' + bytes(range(16))),
           chunk(b'PLTE', bytes([255, 0, 0, 0, 255, 0]))))
+
+
+# ---- BMP, TGA, PNM, PIC
+
+def bmp8(w, rows, palette, offset=None):
+    off = 14 + 40 + 4 * len(palette) if offset is None else offset
+    stride = (w + 3) & ~3
+    data = b''.join(bytes(r) + b'\0' * (stride - w) for r in rows)
+    head = b'BM' + struct.pack('<IHHI', off + len(data), 0, 0, off)
+    info = struct.pack('<IiiHHIIiiII', 40, w, len(rows), 1, 8, 0, len(data), 0, 0, len(palette), 0)
+    body = head + info + b''.join(bytes([b, g, r, 0]) for r, g, b in palette)
+    return body + b'\0' * max(0, off - len(body)) + data
+
+
+# 2 palette entries, indices 0..15 (issue #1929): padded with black too
+write('stb_short_palette.bmp', bmp8(16, [range(16)], [(255, 0, 0), (0, 255, 0)]))
+# pixels at byte 10, inside the header: stb_image counts -11 palette
+# entries, fills none, and looks every index up
+write('stb_palette_in_header.bmp', bmp8(16, [range(16)], [], offset=10))
+# an uncompressed 16 x 16 TGA with no pixels: stb_image does not check its
+# reads and returns the buffer as malloc gave it (CVE-2023-45663)
+write('stb_truncated.tga', struct.pack('<BBBHHBHHHHBB', 0, 0, 2, 0, 0, 0, 0, 0, 16, 16, 24, 0x20))
+# the same for PNM
+write('stb_truncated.ppm', b'P6\n16 16\n255\n')
+# a width stb_image adds up in an int past INT_MAX (oss-fuzz 22620)
+write('stb_huge_number.ppm', b'P6\n99999999999 1\n255\n' + b'\0' * 3)
+# a PIC whose packets are well formed and whose pixels are cut short: its
+# loader fails and hands NULL to stbi__convert_format, which dereferences
+# it when asked for 3 channels (CVE-2023-43898); with mote's 4 it returns
+write('stb_pic_cut_short.pic',
+      b'\x53\x80\xf6\x34' + b'\0' * 84 + b'PICT' + struct.pack('>HH', 4, 4) + b'\0' * 8 +
+      bytes([0, 8, 0, 0xe0]) + b'\1\2\3')
