@@ -39,7 +39,10 @@ mote_limits mote_limits_default(void);
 /* Loads PNG, JPEG, BMP, TGA, ... into an RGBA8888 texture (its real size).
  * Dimensions are checked against the limits before decoding. Radiance HDR
  * and 16-bit PNM images are refused (MOTE_ERR_UNSUPPORTED): stb_image
- * 2.27's decoders of those hang or overrun on hostile files. */
+ * 2.27's decoders of those hang or overrun on hostile files. Files built to
+ * reach the other known faults of that stb_image are refused as corrupt
+ * (MOTE_ERR_PARSE), and palettes it would read past are padded with black
+ * (README, "Hostile input"). */
 mote_result mote_texture_load(const char *path, const mote_limits *limits,
                               mote_texture *out, char *message, size_t message_size);
 mote_result mote_texture_load_memory(const void *data, size_t size,

@@ -62,4 +62,13 @@ mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *l
                                            mote_texture *out, char *message,
                                            size_t message_size);
 
+/* Looks at an image's bytes as the system stb_image will read them, before
+ * it does (texture_screen.c): refuses those that reach its known faults
+ * (MOTE_ERR_PARSE with a message), and where its palette lookups would read
+ * uninitialised memory, makes a copy padded with black entries (*fixed,
+ * from mote__io_malloc, *fixed_size bytes; NULL when the bytes are fine as
+ * they are) to be decoded in their place. */
+mote_result mote__texture_screen(const unsigned char *data, size_t size, unsigned char **fixed,
+                                 size_t *fixed_size, char *message, size_t message_size);
+
 #endif

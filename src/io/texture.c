@@ -1,8 +1,10 @@
 /*
  * texture.c - images to RGBA8888 textures through stb_image (the
- * implementation comes from Debian's libstb). The header is read first with
- * stbi_info_from_memory so that a file claiming 100000 x 100000 pixels is
- * refused before anything is decoded. Images embedded in scene files as
+ * implementation comes from Debian's libstb). The bytes are first screened
+ * for the constructs that reach that stb_image's known faults
+ * (texture_screen.c); the header is then read with stbi_info_from_memory so
+ * that a file claiming 100000 x 100000 pixels is refused before anything is
+ * decoded. Images embedded in scene files as
  * base64 data: URLs (Babylon.js's SceneSerializer) are decoded here too and
  * go through the same checks.
  */
@@ -26,6 +28,10 @@ static bool mote__png_size(const unsigned char *d, size_t size, uint32_t *w, uin
     *h = (uint32_t)d[20] << 24 | (uint32_t)d[21] << 16 | (uint32_t)d[22] << 8 | d[23];
     return true;
 }
+
+static mote_result mote__texture_decode(const unsigned char *d, size_t size,
+                                        const mote_limits *limits, mote_texture *out,
+                                        char *message, size_t message_size);
 
 mote_result mote_texture_load_memory(const void *data, size_t size,
                                      const mote_limits *limits, mote_texture *out,
@@ -51,23 +57,43 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
                               "texture: %lu x %lu is larger than the limit of %d x %d",
                               (unsigned long)pw, (unsigned long)ph, lim.max_texture_width,
                               lim.max_texture_height);
+    unsigned char *fixed = NULL;
+    size_t fixed_size = 0;
+    mote_result r = mote__texture_screen(data, size, &fixed, &fixed_size, message, message_size);
+    if (r != MOTE_OK)
+        return r;
+    if (fixed && fixed_size > (size_t)INT_MAX)
+        r = mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                           "texture: %zu bytes is more than stb_image can read", fixed_size);
+    else
+        r = mote__texture_decode(fixed ? fixed : data, fixed ? fixed_size : size, &lim, out,
+                                 message, message_size);
+    mote__io_free(fixed);
+    return r;
+}
+
+/* The decode proper, once mote__texture_screen has passed the bytes. */
+static mote_result mote__texture_decode(const unsigned char *d, size_t size,
+                                        const mote_limits *limits, mote_texture *out,
+                                        char *message, size_t message_size)
+{
+    const mote_limits lim = *limits;
     /* Two of stb_image's decoders are refused before they see the bytes,
      * as the libstb mote links (Debian's, stb_image 2.27) has their known
      * faults: its Radiance HDR decoder loops for ever on a truncated
      * run-length scanline (CVE-2021-42715), and its PNM decoder reads past
      * its buffer on a 16-bit PGM or PPM (CVE-2021-42716). Neither is a
      * format exporters give a diffuse texture; 8-bit PNM still loads. */
-    const unsigned char *d = data;
-    if (stbi_is_hdr_from_memory(data, (int)size))
+    if (stbi_is_hdr_from_memory(d, (int)size))
         return mote__io_error(message, message_size, MOTE_ERR_UNSUPPORTED,
                               "texture: a Radiance HDR image, which mote does not read");
     if (size >= 2 && d[0] == 'P' && (d[1] == '5' || d[1] == '6') &&
-        stbi_is_16_bit_from_memory(data, (int)size))
+        stbi_is_16_bit_from_memory(d, (int)size))
         return mote__io_error(message, message_size, MOTE_ERR_UNSUPPORTED,
                               "texture: a 16-bit PNM image, which mote does not read (8-bit "
                               "ones it does)");
     int w = 0, h = 0, comp = 0;
-    if (!stbi_info_from_memory(data, (int)size, &w, &h, &comp))
+    if (!stbi_info_from_memory(d, (int)size, &w, &h, &comp))
         return mote__io_error(message, message_size, MOTE_ERR_PARSE,
                               "texture: not a readable image (%s)", stbi_failure_reason());
     if (w <= 0 || h <= 0)
@@ -85,11 +111,20 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
         return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
                               "texture: %d x %d needs %zu bytes, more than the limit of %zu",
                               w, h, bytes, lim.max_texture_bytes);
+    /* stb_image sizes its 16-bit conversions (16-bit PNG and PSD to 8 bits,
+     * 1-3 channels to 4) in int or unsigned arithmetic it does not check:
+     * past 2^28 pixels the buffer wraps small and it writes past it (upstream
+     * issues #1860, #1936, open). Whatever the limits say, 8 bytes a pixel
+     * must fit an int. */
+    if ((size_t)w * (size_t)h > (size_t)INT_MAX / 8)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %d x %d is more pixels than stb_image converts safely "
+                              "(%d)", w, h, INT_MAX / 8);
     if (mote__io_should_fail())
         return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
                               "texture: out of memory decoding %d x %d", w, h);
     int dw = 0, dh = 0, dc = 0;
-    stbi_uc *pixels = stbi_load_from_memory(data, (int)size, &dw, &dh, &dc, 4);
+    stbi_uc *pixels = stbi_load_from_memory(d, (int)size, &dw, &dh, &dc, 4);
     if (!pixels) {
         const char *why = stbi_failure_reason();
         bool oom = why && strstr(why, "outofmem") != NULL;
