@@ -52,9 +52,11 @@ void mote_texture_free(mote_texture *texture);
 
 /* A loaded scene: meshes ready for mote_draw (one mesh per sub-mesh, sharing
  * vertex and vertex colour arrays; after the file's meshes, transform
- * nodes and instances, hidden 0-vertex meshes may follow: cameras and
- * lights in the parent tree, and stand-ins for sheared pivot or local
- * matrices), their textures, the active camera and the lights. */
+ * nodes and instances, the thin instances (meshes of their own, sharing
+ * the arrays of the mesh they belong to) and hidden 0-vertex meshes may
+ * follow: cameras and lights in the parent tree, and stand-ins for
+ * sheared pivot or local matrices), their textures, the active camera and
+ * the lights. */
 typedef struct mote_scene {
     mote_mesh *meshes;
     int mesh_count;
@@ -119,7 +121,11 @@ typedef struct mote_scene {
  * data: URLs (base64String, or name). A right-handed file
  * (useRightHandedSystem) loads mirrored in z (mirrored_z); a mesh whose
  * side orientation (its own or its material's) turns its front faces
- * round gets its triangles flipped. */
+ * round gets its triangles flipped. A mesh's thinInstances (matrixData,
+ * 16 numbers each, and instancesCount) become meshes of their own after
+ * the instances, each at the mesh's world matrix times its matrix,
+ * sharing the mesh's arrays; the mesh itself, and its instances, are then
+ * not drawn, as in Babylon.js. */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures

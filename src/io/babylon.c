@@ -60,6 +60,10 @@
  *   material's sideOrientation, other than the scene's default, or a
  *   material's cullBackFaces false, turns its front faces round: its
  *   triangles are drawn flipped (mote__side_indices).
+ * - A mesh's thinInstances become nodes of their own, children of the mesh
+ *   at their matrices, and the mesh and its instances are not drawn
+ *   (mote__thin_count, mote__thin_instances; tested in
+ *   tests/test_loader_transforms.c).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -217,6 +221,20 @@ typedef struct mote__node {
     uint32_t ni;
     mote__sub *subs;
     int sub_count;
+    /* a mesh's thin instances: nodes [first_thin, first_thin + thin_count)
+     * after the instances, each its child at one matrix of matrixData */
+    int first_thin, thin_count;
+    bool is_thin;                 /* a thin instance, of the mesh nodes[host] (its parent) */
+    int host;
+    /* a thin instance whose matrix mirrors: Babylon.js culls all of a
+     * mesh's thin instances by the mesh's own world matrix (one draw), so
+     * such a one shows its back faces (mote__side_indices) */
+    bool thin_mirrored;
+    /* its own meshes are not drawn: a mesh drawn as its thin instances, an
+     * instance of one (Babylon.js draws a mesh's thin instances in place
+     * of it and its instances), or a mesh whose thin instances cannot be
+     * drawn (mote__thin_count) */
+    bool undrawn;
 } mote__node;
 
 /* An entry of geometries.vertexData, parsed by the first mesh that names
@@ -1885,6 +1903,132 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
     return mote__submeshes(ld, mesh, where, nd);
 }
 
+/* ---- thin instances ---------------------------------------------------- */
+
+/* How many thin instances of a mesh Babylon.js draws. Mesh.Parse gives it
+ * thinInstanceSetBuffer("matrix", new Float32Array(matrixData), 16) and
+ * then the file's instancesCount, which hasThinInstances tests and the
+ * instanced draw draws (mesh.ts, thinInstanceMesh.ts); the mesh itself
+ * is then not drawn (_processRendering draws the thin instances only).
+ * *count: the thin instances drawn; *undrawn: the mesh is drawn neither
+ * itself nor by thin instances (a draw of more instances than matrixData
+ * holds, which WebGL refuses). warn: say why, once (when the mesh is
+ * read; its instances are first counted without a word). */
+static R mote__thin_count(mote__ld *ld, const cJSON *mesh, const char *where, bool warn,
+                          uint32_t *count, bool *undrawn)
+{
+    *count = 0;
+    *undrawn = false;
+    const cJSON *thin = mote__get(mesh, "thinInstances");
+    if (!thin)
+        return MOTE_OK;
+    char at[64];
+    snprintf(at, sizeof at, "%s.thinInstances", where);
+    MOTE__TRY(mote__obj_at(ld, thin, at));
+    uint32_t n = 0;
+    MOTE__TRY(mote__uint_member(ld, thin, "instancesCount", at, INT32_MAX, &n));
+    const cJSON *data = mote__get(thin, "matrixData");
+    if (!data) {
+        if (n > 0 && warn)
+            mote__warn(ld, "%s: instancesCount %u without matrixData: Babylon.js draws the mesh "
+                       "itself, and so does mote", at, (unsigned)n);
+        return MOTE_OK;
+    }
+    /* JSON.stringify writes a Float32Array as an object with keys "0",
+     * "1"...: it has no length, so new Float32Array makes no matrix of it */
+    size_t len = 0;
+    if (cJSON_IsArray(data))
+        len = mote__array_len(data);
+    else if (!cJSON_IsObject(data))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s.matrixData: expected an array of numbers, "
+                          "found %s", at, mote__type_name(data));
+    else if (mote__member(data, "length"))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s.matrixData: an object with a \"length\", "
+                          "which mote does not read (expected an array of numbers)", at);
+    size_t matrices = len / 16;
+    if (n == 0) {
+        if (matrices > 0 && warn)
+            mote__warn(ld, "%s: no instancesCount (or 0): Babylon.js draws the mesh itself, "
+                       "not the %zu matri%s of matrixData, and so does mote", at, matrices,
+                       matrices == 1 ? "x" : "ces");
+        return MOTE_OK;
+    }
+    if (n > matrices) {
+        *undrawn = true;
+        if (warn && cJSON_IsObject(data))
+            mote__warn(ld, "%s.matrixData: an object, of which Babylon.js makes no matrix (new "
+                       "Float32Array of it is empty), so its draw of %u instance%s reads past "
+                       "its buffer, which WebGL refuses: the mesh is not drawn", at, (unsigned)n,
+                       n == 1 ? "" : "s");
+        else if (warn)
+            mote__warn(ld, "%s: instancesCount %u, but matrixData holds %zu matri%s: Babylon.js's "
+                       "draw reads past it, which WebGL refuses: the mesh is not drawn", at,
+                       (unsigned)n, matrices, matrices == 1 ? "x" : "ces");
+        return MOTE_OK;
+    }
+    if (len % 16 && warn)
+        mote__warn(ld, "%s.matrixData: %zu numbers, not a multiple of 16: the last %zu are not "
+                   "read", at, len, len % 16);
+    /* thinInstanceSetBuffer of other kinds: per-instance colours (which
+     * multiply the material's) and custom attributes */
+    if (mote__get(thin, "userThinInstance") && warn)
+        mote__warn(ld, "%s.userThinInstance: its per-instance buffers (colours...) are not read: "
+                   "each thin instance is drawn in the mesh's material", at);
+    *count = n;
+    return MOTE_OK;
+}
+
+/* The thin instances of mesh i (nodes[host]): count nodes from `first`,
+ * each a child of the mesh with its matrix of matrixData as a
+ * pre-transform (the shaders' world * instance matrix: the matrix is in
+ * the mesh's own space), drawn with the mesh's arrays, material and
+ * sub-meshes (shared), and shown when the mesh is. The matrix is folded
+ * as a localMatrix is (mote__fold_matrix), so it must be affine. */
+static R mote__thin_instances(mote__ld *ld, const cJSON *mesh, int i, int host, int first,
+                              uint32_t count)
+{
+    const mote__node *h = &ld->nodes[host];
+    const cJSON *data = mote__get(mote__get(mesh, "thinInstances"), "matrixData");
+    char at[80];
+    snprintf(at, sizeof at, "%s.thinInstances.matrixData", h->where);
+    const cJSON *e = data->child;   /* an array of at least 16 count numbers */
+    for (uint32_t k = 0; k < count; k++) {
+        mote__node *t = &ld->nodes[first + (int)k];
+        snprintf(t->where, sizeof t->where, "meshes[%d].thinInstances[%u]", i, (unsigned)k);
+        bool identity = true;
+        for (int j = 0; j < 16; j++, e = e->next) {
+            MOTE__TRY(mote__element_float(ld, e, at, (size_t)k * 16 + (size_t)j, &t->matrix[j]));
+            identity = identity && t->matrix[j] == (j % 5 == 0 ? 1.0f : 0.0f);
+        }
+        const float *f = t->matrix;
+        if (f[3] != 0.0f || f[7] != 0.0f || f[11] != 0.0f || f[15] != 1.0f)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: matrix %u (numbers %zu to %zu) is not an "
+                              "affine transform (its numbers 3, 7, 11 and 15 must be 0, 0, 0 "
+                              "and 1)", at, (unsigned)k, (size_t)k * 16, (size_t)k * 16 + 15);
+        double det = (double)f[0] * ((double)f[5] * f[10] - (double)f[6] * f[9]) -
+                     (double)f[4] * ((double)f[1] * f[10] - (double)f[2] * f[9]) +
+                     (double)f[8] * ((double)f[1] * f[6] - (double)f[2] * f[5]);
+        t->thin_mirrored = det < 0.0;
+        if (ld->right_handed)
+            mote__mirror_matrix(t->matrix);
+        t->has_matrix = !identity;
+        t->matrix_name = "thin instance matrix";
+        t->is_thin = true;
+        t->host = host;
+        t->parent_instance = -1;
+        t->scaling[0] = t->scaling[1] = t->scaling[2] = 1.0f;
+        t->material_id = h->material_id;
+        t->material_unique_id = h->material_unique_id;
+        t->legacy = h->legacy;
+        t->side = h->side;
+        t->invisible = h->invisible;  /* drawn when the mesh is (its parent's flags do the rest) */
+        mote__share_arrays(t, (mote__node *)h);
+        t->subs = h->subs;
+        t->sub_count = h->sub_count;
+    }
+    return MOTE_OK;
+}
+
 static R mote__nodes(mote__ld *ld)
 {
     const cJSON *meshes, *tnodes, *geos = mote__get(ld->root, "geometries");
@@ -1920,24 +2064,34 @@ static R mote__nodes(mote__ld *ld)
             return mote__oom(ld, "geometries");
     }
     /* nh: nodes that may need a helper node (mote__fold_matrix) */
-    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0, nh = 0;
+    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0, nth = 0, nh = 0;
     int i = 0;
     for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
         char at[32];
         snprintf(at, sizeof at, "meshes[%d]", i);
         const cJSON *inst = NULL;
-        if (cJSON_IsObject(m))
+        uint32_t thin = 0;
+        bool unused;
+        if (cJSON_IsObject(m)) {
             MOTE__TRY(mote__arr(ld, m, "instances", at, &inst));
-        ni += mote__array_len(inst);
+            MOTE__TRY(mote__thin_count(ld, m, at, false, &thin, &unused));
+        }
+        size_t n = mote__array_len(inst);
+        ni += n;
+        nth += thin;
         if (mote__may_have_matrix(m))
-            nh += 1 + mote__array_len(inst);
+            nh += 1 + n;
+        if (thin)   /* a thin instance's matrix may be sheared */
+            nh += thin;
+        if (ni + nth > ld->lim.max_meshes)
+            break;   /* no sum past the limit (nor its overflow) */
     }
     for (const cJSON *t = tnodes ? tnodes->child : NULL; t; t = t->next)
         nh += mote__may_have_matrix(t);
-    if (nm + nt + ni > ld->lim.max_meshes)
+    if (nm + nt + ni + nth > ld->lim.max_meshes)
         return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u "
-                          "(transform nodes and instances count)", nm + nt + ni,
-                          (unsigned)ld->lim.max_meshes);
+                          "(transform nodes, instances and thin instances count)",
+                          nm + nt + ni + nth, (unsigned)ld->lim.max_meshes);
     /* cameras and lights may join the tree (mote__xnode), and helpers of
      * nodes with a matrix; each becomes a mesh, so no more than the mesh
      * limit leaves room for */
@@ -1945,25 +2099,38 @@ static R mote__nodes(mote__ld *ld)
     MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
     MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
     size_t nx = mote__array_len(cams) + mote__array_len(lights) + nh;
-    if (nx > ld->lim.max_meshes - (nm + nt + ni))
-        nx = ld->lim.max_meshes - (nm + nt + ni);
-    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni + nx, sizeof *ld->nodes);
+    const size_t base = nm + nt + ni + nth;
+    if (nx > ld->lim.max_meshes - base)
+        nx = ld->lim.max_meshes - base;
+    ld->nodes = mote__store_alloc(&ld->tmp, base + nx, sizeof *ld->nodes);
     if (!ld->nodes)
         return mote__oom(ld, "meshes");
-    ld->node_count = (int)(nm + nt + ni);
-    ld->node_cap = (int)(nm + nt + ni + nx);
+    ld->node_count = (int)base;
+    ld->node_cap = (int)(base + nx);
     /* meshes, then transform nodes, then instances: each the source mesh's
      * geometry, material and sub-meshes with a transform and parent of its
-     * own (Babylon.js's Mesh.Parse and createInstance) */
-    int next_instance = (int)(nm + nt);
+     * own (Babylon.js's Mesh.Parse and createInstance), then thin instances */
+    int next_instance = (int)(nm + nt), next_thin = (int)(nm + nt + ni);
     i = 0;
     for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
         mote__node *nd = &ld->nodes[i];
         snprintf(nd->where, sizeof nd->where, "meshes[%d]", i);
         MOTE__TRY(mote__node_read(ld, m, nd->where, nd));
+        uint32_t thin;
+        MOTE__TRY(mote__thin_count(ld, m, nd->where, true, &thin, &nd->undrawn));
+        if (thin) {
+            nd->undrawn = true;
+            nd->first_thin = next_thin;
+            nd->thin_count = (int)thin;
+            MOTE__TRY(mote__thin_instances(ld, m, i, i, next_thin, thin));
+            next_thin += (int)thin;
+        }
         const cJSON *inst = mote__get(m, "instances");   /* an array: checked above */
         nd->first_instance = next_instance;
         nd->instance_count = (int)mote__array_len(inst);
+        if (nd->undrawn && nd->instance_count)
+            mote__warn(ld, "%s: its instances are not drawn: Babylon.js draws a mesh's thin "
+                       "instances in place of it and its instances", nd->where);
         int k = 0;
         for (const cJSON *e = inst ? inst->child : NULL; e; e = e->next, k++) {
             mote__node *in = &ld->nodes[next_instance++];
@@ -1973,6 +2140,7 @@ static R mote__nodes(mote__ld *ld)
             in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
             in->side = nd->side;   /* drawn through its source mesh */
+            in->undrawn = nd->undrawn;
             /* InstancedMesh's constructor: setPivotMatrix(source's matrix),
              * with the default postMultiplyPivotMatrix, so an instance
              * undoes even a localMatrix (a pre-transform of its source) */
@@ -2540,7 +2708,7 @@ static R mote__parents(mote__ld *ld)
         return mote__oom(ld, "meshes");
     for (int i = 0; i < ld->node_count; i++) {
         mote__node *nd = &ld->nodes[i];
-        nd->parent = -1;
+        nd->parent = nd->is_thin ? nd->host : -1;
         if (!nd->parent_id)
             continue;
         if (nd->parent_by_unique)
@@ -2697,6 +2865,8 @@ static R mote__side_indices(mote__ld *ld, mote__node *nd, int s, const mote__mat
     bool flip = side != MOTE__SIDE_UNSAID && (side == MOTE__SIDE_CW) != ld->right_handed;
     if (mat && mat->cull_front)
         flip = !flip;
+    if (nd->thin_mirrored)
+        flip = !flip;
     if (!flip || !m->indices || m->index_count == 0)
         return MOTE_OK;
     if (nd->sub_count > 0 && (nd->subs[s].own_indices || nd->subs[s].index_start % 3)) {
@@ -2790,7 +2960,7 @@ static R mote__build_meshes(mote__ld *ld)
              * the top row when it says not; unsaid, legacy files (the
              * tutorial's) address the top row, current ones the bottom */
             m->material.v_origin_bottom = mat && mat->invert_y >= 0 ? mat->invert_y != 0 : !nd->legacy;
-            m->hidden = mote__node_hidden(ld, nd);
+            m->hidden = mote__node_hidden(ld, nd) || nd->undrawn;
             mote_mesh_update_bounds(m);
         }
     }
