@@ -16,7 +16,9 @@
  * prints "ms/frame: median X (min Y, max Z)". The image written is always
  * the unturned frame, so it does not depend on --frames or --spin. Frames
  * clear only the tiles drawn into since their last clear (the tool is the
- * only writer of its buffers); --full-clear clears the whole frame. A
+ * only writer of its buffers); --full-clear clears the whole frame. Each
+ * frame draws the levels of detail its camera (the scene's, or --camera,
+ * --fov, --ortho's) chooses for the meshes as turned in it. A
  * texture file that is missing or cannot be read fails the load, unless
  * --allow-missing-textures: its material is then drawn in its colour, and
  * the loader's warning says which file it was.
@@ -443,6 +445,9 @@ int main(int argc, char **argv)
         for (int f = 0; f <= o.frames && r == MOTE_OK; f++) {
             /* frame 0 warms caches and pages the arena in; it is not timed */
             pose_meshes(&scene, posed, o.rotate, spin * (float)f);
+            /* turned, a mesh's distance to the camera changes, and with it
+             * the level of detail drawn */
+            mote_scene_choose_lod(&scene, posed, &frame.camera);
             double t0 = now_ms();
             r = render_frame(&dev, &frame, &scene, posed, &o.draw);
             times[f] = now_ms() - t0;
@@ -457,6 +462,7 @@ int main(int argc, char **argv)
     }
     if (r == MOTE_OK) {
         pose_meshes(&scene, posed, o.rotate, 0.0f);
+        mote_scene_choose_lod(&scene, posed, &frame.camera);
         r = render_frame(&dev, &frame, &scene, posed, &o.draw);
     }
     if (r != MOTE_OK) {

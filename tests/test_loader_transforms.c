@@ -562,6 +562,145 @@ void a_chain_too_deep_by_its_helpers_should_say_why(void)
                                  msg);
 }
 
+/* ---- thin instances ----------------------------------------------------- */
+
+/* A mesh's thin instances are drawn at the mesh's world matrix times
+ * their own (the shaders' world * instance matrix, so each matrix is in
+ * the mesh's own space), sharing its arrays, one mesh per sub-mesh each;
+ * the mesh itself and its instances are not drawn (Mesh._processRendering
+ * draws the thin instances alone), and a sheared matrix gets a helper as
+ * a sheared localMatrix does. The mesh: T = (0, 0, 5), S = 2. */
+void loader_should_draw_thin_instances_where_babylon_puts_them(void)
+{
+    mote_scene s;
+    load_json("{\"meshes\":[{\"id\":\"m\",\"position\":[0,0,5],\"scaling\":[2,2,2],"
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2],"
+              "\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3},"
+              "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}],"
+              "\"instances\":[{\"name\":\"i\",\"position\":[0,9,0]}],"
+              "\"thinInstances\":{\"instancesCount\":3,\"matrixBufferSize\":48,\"matrixData\":["
+              /* translate(1, 0, 0) */
+              "1,0,0,0, 0,1,0,0, 0,0,1,0, 1,0,0,1, "
+              /* a quarter turn about z: x -> y, y -> -x */
+              "0,1,0,0, -1,0,0,0, 0,0,1,0, 0,0,0,1, "
+              /* a shear (x += y) and translate(0, 2, 0) */
+              "1,0,0,0, 1,1,0,0, 0,0,1,0, 0,2,0,1]}}]}", &s);
+    TEST_ASSERT_EQUAL_STRING("meshes[0]: its instances are not drawn: Babylon.js draws a mesh's "
+                             "thin instances in place of it and its instances", s.warning);
+    /* m and its instance (2 sub-meshes each), the thin instances (2
+     * each), the helper of the sheared one */
+    TEST_ASSERT_EQUAL(11, s.mesh_count);
+    for (int i = 0; i < 4; i++)
+        TEST_ASSERT_TRUE(s.meshes[i].hidden);
+    for (int i = 4; i < 10; i++) {
+        TEST_ASSERT_FALSE(s.meshes[i].hidden);
+        TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[i].vertices);
+        TEST_ASSERT_EQUAL_PTR(s.meshes[i % 2].indices, s.meshes[i].indices);
+    }
+    TEST_ASSERT_TRUE(s.meshes[10].hidden);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[10], s.meshes[8].parent);
+    TEST_ASSERT_EQUAL_PTR(&s.meshes[0], s.meshes[10].parent);
+    /* (1,0,0) -> (2,0,0) -> 2 (2,0,0) + (0,0,5); (0,0,0) -> (1,0,0) -> (2,0,5) */
+    ASSERT_WORLD_VERTEX(4.0f, 0.0f, 5.0f, &s.meshes[4], 1);
+    ASSERT_WORLD_VERTEX(2.0f, 0.0f, 5.0f, &s.meshes[5], 0);
+    /* (1,0,0) -> (0,1,0) -> (0,2,5); (0,1,0) -> (-1,0,0) -> (-2,0,5) */
+    ASSERT_WORLD_VERTEX(0.0f, 2.0f, 5.0f, &s.meshes[6], 1);
+    ASSERT_WORLD_VERTEX(-2.0f, 0.0f, 5.0f, &s.meshes[7], 2);
+    /* (0,1,0) -> (1,1,0) + (0,2,0) -> (2,6,5); (1,0,0) -> (1,2,0) -> (2,4,5) */
+    ASSERT_WORLD_VERTEX(2.0f, 6.0f, 5.0f, &s.meshes[8], 2);
+    ASSERT_WORLD_VERTEX(2.0f, 4.0f, 5.0f, &s.meshes[9], 1);
+    mote_scene_free(&s);
+}
+
+/* Drawn, the thin instances of a quad at the origin stand at x = -3 and
+ * x = +3 (left and right of the image), and nothing at the middle, where
+ * the mesh itself would be. */
+void thin_instances_should_be_drawn_in_their_places_and_the_mesh_not(void)
+{
+    int lo, hi;
+    int n = draw_unlit("{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,-10],\"target\":[0,0,0]}],"
+                       "\"materials\":[{\"id\":\"red\",\"diffuse\":[1,0,0],\"emissive\":[1,0,0],"
+                       "\"backFaceCulling\":false}],"
+                       "\"meshes\":[{\"id\":\"q\",\"materialId\":\"red\","
+                       "\"positions\":[-0.5,-0.5,0, 0.5,-0.5,0, 0.5,0.5,0, -0.5,0.5,0],"
+                       "\"indices\":[0,1,2, 0,2,3],\"thinInstances\":{\"instancesCount\":2,"
+                       "\"matrixData\":[1,0,0,0, 0,1,0,0, 0,0,1,0, -3,0,0,1, "
+                       "1,0,0,0, 0,1,0,0, 0,0,1,0, 3,0,0,1]}}]}", &lo, &hi, NULL);
+    TEST_ASSERT_TRUE(n > 0);
+    /* x = +-3 at distance 10 with fov 0.8: 3 / (10 tan 0.4 x 4/3) of the
+     * half width 48, 25.5 pixels from the middle */
+    const uint8_t *left = &color[(H / 2 * W + 22) * 4], *right = &color[(H / 2 * W + 73) * 4],
+                  *middle = &color[(H / 2 * W + W / 2) * 4];
+    TEST_ASSERT_TRUE(left[0] > 0);
+    TEST_ASSERT_TRUE(right[0] > 0);
+    TEST_ASSERT_EQUAL_UINT8(0, middle[0]);
+    TEST_ASSERT_TRUE(lo >= 16 && hi <= W - 16);
+}
+
+/* Babylon.js culls all the thin instances of a mesh by the mesh's own
+ * world matrix (they are one draw), so a thin instance whose matrix
+ * mirrors shows its back faces: of a triangle facing the camera, drawn
+ * with back faces culled, the plain one is drawn and the mirrored one
+ * (scale x by -1) is not. In a right-handed scene a thin instance's
+ * matrix is mirrored with the rest: translate(2, 0, 3) of the file is
+ * (2, 0, -3) here. */
+void a_mirroring_thin_instance_should_be_culled_as_babylon_culls_it(void)
+{
+    mote_scene s;
+    load_json("{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,-10],\"target\":[0,0,0]}],"
+              "\"meshes\":[{\"id\":\"t\",\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2],"
+              "\"thinInstances\":{\"instancesCount\":2,\"matrixData\":[1,0,0,0, 0,1,0,0, 0,0,1,0, "
+              "-2,0,0,1, -1,0,0,0, 0,1,0,0, 0,0,1,0, 2,0,0,1]}}]}", &s);
+    render(&s, true);
+    int lo, hi;
+    drawn_columns(&lo, &hi);
+    TEST_ASSERT_TRUE(lo >= 0);
+    TEST_ASSERT_TRUE(hi < W / 2);
+    mote_scene_free(&s);
+    load_json("{\"useRightHandedSystem\":true,\"meshes\":[{\"id\":\"t\","
+              "\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2],"
+              "\"thinInstances\":{\"instancesCount\":1,\"matrixData\":[1,0,0,0, 0,1,0,0, 0,0,1,0, "
+              "2,0,3,1]}}]}", &s);
+    ASSERT_WORLD_VERTEX(3.0f, 0.0f, -3.0f, &s.meshes[1], 1);
+    mote_scene_free(&s);
+}
+
+/* Thin instances are meshes of the scene: they count against
+ * limits.max_meshes before anything is made for them, and an
+ * instancesCount past the matrices (millions of them) makes none, the
+ * mesh drawn neither, as WebGL draws nothing of Babylon.js's draw call
+ * past its buffer. */
+void thin_instances_should_count_against_the_mesh_limit(void)
+{
+    static const char four[] =
+        "{\"meshes\":[{\"id\":\"a\",\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2],"
+        "\"thinInstances\":{\"instancesCount\":4,\"matrixData\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1,"
+        " 1,0,0,0, 0,1,0,0, 0,0,1,0, 1,0,0,1, 1,0,0,0, 0,1,0,0, 0,0,1,0, 2,0,0,1,"
+        " 1,0,0,0, 0,1,0,0, 0,0,1,0, 3,0,0,1]}}]}";
+    mote_limits lim = mote_limits_default();
+    lim.max_meshes = 4;
+    mote_scene s;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_scene_load_memory(four, strlen(four), "t", NULL, &lim,
+                                                             &s, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("t: meshes: 5 meshes, more than the limit of 4 (transform nodes, "
+                             "instances and thin instances count)", msg);
+    TEST_ASSERT_EQUAL(0, s.mesh_count);
+    lim.max_meshes = 5;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load_memory(four, strlen(four), "t", NULL, &lim,
+                                                              &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(5, s.mesh_count);
+    mote_scene_free(&s);
+    load_json("{\"meshes\":[{\"id\":\"a\",\"positions\":[0,0,0, 1,0,0, 0,1,0],\"indices\":[0,1,2],"
+              "\"thinInstances\":{\"instancesCount\":3000000,\"matrixData\":[1,0,0,0, 0,1,0,0, "
+              "0,0,1,0, 0,0,0,1]}}]}", &s);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    TEST_ASSERT_TRUE(s.meshes[0].hidden);
+    TEST_ASSERT_EQUAL_STRING("meshes[0].thinInstances: instancesCount 3000000, but matrixData holds "
+                             "1 matrix: Babylon.js's draw reads past it, which WebGL refuses: "
+                             "the mesh is not drawn", s.warning);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -577,5 +716,9 @@ int main(void)
     RUN_TEST(loader_should_light_a_sheared_mesh_by_its_turned_normals);
     RUN_TEST(loader_should_count_helper_nodes_against_the_mesh_limit);
     RUN_TEST(a_chain_too_deep_by_its_helpers_should_say_why);
+    RUN_TEST(loader_should_draw_thin_instances_where_babylon_puts_them);
+    RUN_TEST(thin_instances_should_be_drawn_in_their_places_and_the_mesh_not);
+    RUN_TEST(a_mirroring_thin_instance_should_be_culled_as_babylon_culls_it);
+    RUN_TEST(thin_instances_should_count_against_the_mesh_limit);
     return UNITY_END();
 }

@@ -12,6 +12,9 @@
  * Floats are written as C99 hexadecimal literals, so the baked scene is the
  * loaded one bit for bit. --size is the frame the camera's aspect is made
  * for (default 320x240); the header repeats it as NAME_WIDTH/NAME_HEIGHT.
+ * A mesh with levels of detail is baked at the level chosen for the baked
+ * camera (the others hidden), with a warning: the header has no camera
+ * of its own to choose by.
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -504,6 +507,16 @@ int main(int argc, char **argv)
                             "ignores them\n");
             break;
         }
+    /* a header holds one frame's meshes: the levels of detail chosen for
+     * its camera (the one bake() writes), hidden flags and all */
+    if (scene.lod_count > 0) {
+        mote_frame_desc frame;
+        mote_scene_frame(&scene, (float)width / (float)height, &frame);
+        mote_scene_choose_lod(&scene, scene.meshes, &frame.camera);
+        fprintf(stderr, "mote-bake: warning: %d meshes and instances have levels of detail: "
+                        "each is baked at the level chosen for the scene's camera, which the "
+                        "firmware draws whatever camera it draws with\n", scene.lod_count);
+    }
     if (scene.has_camera && scene.camera.projection == MOTE_PROJECTION_ORTHOGRAPHIC)
         fprintf(stderr, "mote-bake: warning: the scene's orthographic camera needs "
                         "MOTE_ENABLE_ORTHOGRAPHIC; mote_begin refuses it in a build without it "

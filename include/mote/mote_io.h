@@ -53,11 +53,40 @@ void mote_texture_free(mote_texture *texture);
 
 /* ---- scenes ------------------------------------------------------------ */
 
+/* One level of detail of a mesh (Babylon.js's MeshLODLevel): what is drawn
+ * in the base mesh's place, at its world matrix, when the camera is
+ * farther than `distance` from it and no level before it in
+ * mote_lod.levels is chosen. */
+typedef struct mote_lod_level {
+    float distance;               /* the lodDistances value */
+    /* what it draws: scene->meshes[first_mesh .. first_mesh + mesh_count)
+     * (its sub-meshes, or its thin instances); mesh_count 0: nothing
+     * (past the last lodDistances, or a level naming an instance, which
+     * stays where it is drawn anyway) */
+    int first_mesh, mesh_count;
+} mote_lod_level;
+
+/* A mesh with levels of detail (lodMeshIds with lodDistances), or an
+ * instance of one (an instance chooses its own level, by its own
+ * bounding sphere, and draws it in its place). Exactly one of the base
+ * and its levels is drawn in a frame (or none): mote_scene_choose_lod. */
+typedef struct mote_lod {
+    int first_mesh, mesh_count;   /* what the base mesh draws, as mote_lod_level's */
+    int bounds_mesh;              /* the camera's distance is measured to this mesh's
+                                     bounding-sphere centre, in world space */
+    bool hidden;                  /* the base is hidden (isVisible false, disabled):
+                                     no level is drawn either */
+    const mote_lod_level *levels; /* in the order getLOD tries them: farthest first */
+    int level_count;
+} mote_lod;
+
 /* A loaded scene: meshes ready for mote_draw (one mesh per sub-mesh, sharing
  * vertex and vertex colour arrays; after the file's meshes, transform
- * nodes and instances, hidden 0-vertex meshes may follow: cameras and
- * lights in the parent tree, and stand-ins for sheared pivot or local
- * matrices), their textures, the active camera and the lights. */
+ * nodes and instances, the thin instances (meshes of their own, sharing
+ * the arrays of the mesh they belong to) and hidden 0-vertex meshes may
+ * follow: cameras and lights in the parent tree, and stand-ins for
+ * sheared pivot or local matrices), their textures, the active camera and
+ * the lights. */
 typedef struct mote_scene {
     mote_mesh *meshes;
     int mesh_count;
@@ -79,7 +108,9 @@ typedef struct mote_scene {
      * by the material colour) at 0. */
     float ambient[3];
     mote_rgba clear_color;
-    float bounds_min[3], bounds_max[3]; /* world space, over the meshes not hidden */
+    /* world space, over the meshes not hidden, each level-of-detail group
+     * counted by its base, as if the camera were near */
+    float bounds_min[3], bounds_max[3];
     /* The file says useRightHandedSystem: Babylon.js draws it right-handed,
      * and mote's core is left-handed, so it was loaded mirrored in z: a
      * point (x, y, z) of the file is (x, y, -z) here (meshes, camera and
@@ -103,6 +134,12 @@ typedef struct mote_scene {
      * mote_draw_desc.unlit, which draws that colour x texture x vertex
      * colour, as Babylon.js does. */
     const bool *unlit;
+    /* The groups of meshes of which one is drawn by the camera's distance
+     * (Babylon.js's levels of detail). mote_scene_load chooses for the
+     * scene's camera (without one, each base); mote_scene_choose_lod
+     * chooses again for any camera. */
+    const mote_lod *lods;
+    int lod_count;
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
@@ -122,7 +159,13 @@ typedef struct mote_scene {
  * data: URLs (base64String, or name). A right-handed file
  * (useRightHandedSystem) loads mirrored in z (mirrored_z); a mesh whose
  * side orientation (its own or its material's) turns its front faces
- * round gets its triangles flipped. */
+ * round gets its triangles flipped. A mesh's thinInstances (matrixData,
+ * 16 numbers each, and instancesCount) become meshes of their own after
+ * the instances, each at the mesh's world matrix times its matrix,
+ * sharing the mesh's arrays; the mesh itself, and its instances, are then
+ * not drawn, as in Babylon.js. A mesh's lodMeshIds with lodDistances
+ * make a level-of-detail group (mote_scene.lods): the levels are drawn at
+ * the base's world matrix, never by themselves. */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from memory; base_dir resolves texture names (NULL: no textures
@@ -144,6 +187,25 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
  * and unlit where it says disableLighting (mote_scene.unlit). */
 void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_desc *base,
                           mote_draw_desc *out);
+
+/* Which level Babylon.js's getLOD draws of scene->lods[lod] for camera:
+ * -1 the base, k its levels[k]. The distance is from the camera's
+ * position to the centre of meshes[bounds_mesh]'s bounding sphere, in
+ * world space (an orthographic camera's: its znear, as Babylon.js takes
+ * its minZ); the base is drawn nearer than the last level's distance,
+ * else the first level whose distance is below it. meshes: the scene's,
+ * or a posed copy of them in the same order (mote-render turns its
+ * copies), so that the distance is the one of the frame drawn. -1 for a
+ * bad argument. */
+int mote_scene_lod_level(const mote_scene *scene, int lod, const mote_mesh *meshes,
+                         const mote_camera *camera);
+
+/* Sets mote_mesh.hidden on meshes (the scene's, or a posed copy as
+ * above) for every level-of-detail group: the level chosen for camera
+ * (mote_scene_lod_level) is drawn, the base and the other levels are
+ * not, and nothing of a hidden group is. Other meshes are left as they
+ * are. Call it once a frame when the camera or the meshes move. */
+void mote_scene_choose_lod(const mote_scene *scene, mote_mesh *meshes, const mote_camera *camera);
 
 /* ---- images ------------------------------------------------------------ */
 

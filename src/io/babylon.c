@@ -60,6 +60,13 @@
  *   material's sideOrientation, other than the scene's default, or a
  *   material's cullBackFaces false, turns its front faces round: its
  *   triangles are drawn flipped (mote__side_indices).
+ * - A mesh's thinInstances become nodes of their own, children of the mesh
+ *   at their matrices, and the mesh and its instances are not drawn
+ *   (mote__thin_count, mote__thin_instances; tested in
+ *   tests/test_loader_transforms.c).
+ * - lodMeshIds with lodDistances make levels of detail: each level takes
+ *   its master's place, and scene.lods says which are shown for a camera
+ *   (mote__lods, mote_scene_choose_lod; tested in tests/test_io.c).
  *
  * Cameras and lights (tested in tests/test_io.c), as Babylon.js does:
  * - A parentId naming no mesh or transform node may name a camera, then a
@@ -217,7 +224,37 @@ typedef struct mote__node {
     uint32_t ni;
     mote__sub *subs;
     int sub_count;
+    /* a mesh's thin instances: nodes [first_thin, first_thin + thin_count)
+     * after the instances, each its child at one matrix of matrixData */
+    int first_thin, thin_count;
+    bool is_thin;                 /* a thin instance, of the mesh nodes[host] (its parent) */
+    int host;
+    /* a thin instance whose matrix mirrors: Babylon.js culls all of a
+     * mesh's thin instances by the mesh's own world matrix (one draw), so
+     * such a one shows its back faces (mote__side_indices) */
+    bool thin_mirrored;
+    /* its own meshes are not drawn: a mesh drawn as its thin instances, an
+     * instance of one (Babylon.js draws a mesh's thin instances in place
+     * of it and its instances), or a mesh whose thin instances cannot be
+     * drawn (mote__thin_count) */
+    bool undrawn;
+    const cJSON *lod_ids, *lod_distances; /* lodMeshIds, lodDistances: arrays, or NULL */
+    bool lod_copy;                /* a level drawn for an instance of its master (mote__lod_copies) */
 } mote__node;
+
+/* A level of detail while loading: its node (-1: it draws nothing), its
+ * distance and its place among its master's levels as the file gives them
+ * (Babylon.js sorts them by distance, equal ones in that order). */
+typedef struct mote__lod_level {
+    float distance;
+    int node, seq;
+} mote__lod_level;
+
+/* A mesh or instance that draws one of its levels: levels
+ * [first_level, first_level + level_count) of mote__ld.lod_levels. */
+typedef struct mote__lod_group {
+    int base, first_level, level_count;
+} mote__lod_group;
 
 /* An entry of geometries.vertexData, parsed by the first mesh that names
  * it; later ones share its arrays. */
@@ -284,6 +321,15 @@ typedef struct mote__ld {
     int texture_cap;
     const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
     bool right_handed;            /* useRightHandedSystem: loaded mirrored (mote__mirror_point) */
+    mote__lod_group *lod_groups;  /* masters, then instances of masters (mote__lods) */
+    int lod_group_count;
+    mote__lod_level *lod_levels;
+    int lod_level_count;
+    /* per node: the master it is a level of detail of (-1: none); NULL
+     * when no mesh has levels */
+    int *lod_master;
+    int file_meshes;              /* meshes[]: nodes [0, file_meshes) */
+    int instances_first, instances_end; /* the instances' nodes */
     mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
     int warning_count;
     unsigned warnings_dropped;    /* given after the list was full */
@@ -1885,6 +1931,132 @@ static R mote__node_read(mote__ld *ld, const cJSON *mesh, const char *where, mot
     return mote__submeshes(ld, mesh, where, nd);
 }
 
+/* ---- thin instances ---------------------------------------------------- */
+
+/* How many thin instances of a mesh Babylon.js draws. Mesh.Parse gives it
+ * thinInstanceSetBuffer("matrix", new Float32Array(matrixData), 16) and
+ * then the file's instancesCount, which hasThinInstances tests and the
+ * instanced draw draws (mesh.ts, thinInstanceMesh.ts); the mesh itself
+ * is then not drawn (_processRendering draws the thin instances only).
+ * *count: the thin instances drawn; *undrawn: the mesh is drawn neither
+ * itself nor by thin instances (a draw of more instances than matrixData
+ * holds, which WebGL refuses). warn: say why, once (when the mesh is
+ * read; its instances are first counted without a word). */
+static R mote__thin_count(mote__ld *ld, const cJSON *mesh, const char *where, bool warn,
+                          uint32_t *count, bool *undrawn)
+{
+    *count = 0;
+    *undrawn = false;
+    const cJSON *thin = mote__get(mesh, "thinInstances");
+    if (!thin)
+        return MOTE_OK;
+    char at[64];
+    snprintf(at, sizeof at, "%s.thinInstances", where);
+    MOTE__TRY(mote__obj_at(ld, thin, at));
+    uint32_t n = 0;
+    MOTE__TRY(mote__uint_member(ld, thin, "instancesCount", at, INT32_MAX, &n));
+    const cJSON *data = mote__get(thin, "matrixData");
+    if (!data) {
+        if (n > 0 && warn)
+            mote__warn(ld, "%s: instancesCount %u without matrixData: Babylon.js draws the mesh "
+                       "itself, and so does mote", at, (unsigned)n);
+        return MOTE_OK;
+    }
+    /* JSON.stringify writes a Float32Array as an object with keys "0",
+     * "1"...: it has no length, so new Float32Array makes no matrix of it */
+    size_t len = 0;
+    if (cJSON_IsArray(data))
+        len = mote__array_len(data);
+    else if (!cJSON_IsObject(data))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s.matrixData: expected an array of numbers, "
+                          "found %s", at, mote__type_name(data));
+    else if (mote__member(data, "length"))
+        return mote__fail(ld, MOTE_ERR_PARSE, "%s.matrixData: an object with a \"length\", "
+                          "which mote does not read (expected an array of numbers)", at);
+    size_t matrices = len / 16;
+    if (n == 0) {
+        if (matrices > 0 && warn)
+            mote__warn(ld, "%s: no instancesCount (or 0): Babylon.js draws the mesh itself, "
+                       "not the %zu matri%s of matrixData, and so does mote", at, matrices,
+                       matrices == 1 ? "x" : "ces");
+        return MOTE_OK;
+    }
+    if (n > matrices) {
+        *undrawn = true;
+        if (warn && cJSON_IsObject(data))
+            mote__warn(ld, "%s.matrixData: an object, of which Babylon.js makes no matrix (new "
+                       "Float32Array of it is empty), so its draw of %u instance%s reads past "
+                       "its buffer, which WebGL refuses: the mesh is not drawn", at, (unsigned)n,
+                       n == 1 ? "" : "s");
+        else if (warn)
+            mote__warn(ld, "%s: instancesCount %u, but matrixData holds %zu matri%s: Babylon.js's "
+                       "draw reads past it, which WebGL refuses: the mesh is not drawn", at,
+                       (unsigned)n, matrices, matrices == 1 ? "x" : "ces");
+        return MOTE_OK;
+    }
+    if (len % 16 && warn)
+        mote__warn(ld, "%s.matrixData: %zu numbers, not a multiple of 16: the last %zu are not "
+                   "read", at, len, len % 16);
+    /* thinInstanceSetBuffer of other kinds: per-instance colours (which
+     * multiply the material's) and custom attributes */
+    if (mote__get(thin, "userThinInstance") && warn)
+        mote__warn(ld, "%s.userThinInstance: its per-instance buffers (colours...) are not read: "
+                   "each thin instance is drawn in the mesh's material", at);
+    *count = n;
+    return MOTE_OK;
+}
+
+/* The thin instances of mesh i (nodes[host]): count nodes from `first`,
+ * each a child of the mesh with its matrix of matrixData as a
+ * pre-transform (the shaders' world * instance matrix: the matrix is in
+ * the mesh's own space), drawn with the mesh's arrays, material and
+ * sub-meshes (shared), and shown when the mesh is. The matrix is folded
+ * as a localMatrix is (mote__fold_matrix), so it must be affine. */
+static R mote__thin_instances(mote__ld *ld, const cJSON *mesh, int i, int host, int first,
+                              uint32_t count)
+{
+    const mote__node *h = &ld->nodes[host];
+    const cJSON *data = mote__get(mote__get(mesh, "thinInstances"), "matrixData");
+    char at[80];
+    snprintf(at, sizeof at, "%s.thinInstances.matrixData", h->where);
+    const cJSON *e = data->child;   /* an array of at least 16 count numbers */
+    for (uint32_t k = 0; k < count; k++) {
+        mote__node *t = &ld->nodes[first + (int)k];
+        snprintf(t->where, sizeof t->where, "meshes[%d].thinInstances[%u]", i, (unsigned)k);
+        bool identity = true;
+        for (int j = 0; j < 16; j++, e = e->next) {
+            MOTE__TRY(mote__element_float(ld, e, at, (size_t)k * 16 + (size_t)j, &t->matrix[j]));
+            identity = identity && t->matrix[j] == (j % 5 == 0 ? 1.0f : 0.0f);
+        }
+        const float *f = t->matrix;
+        if (f[3] != 0.0f || f[7] != 0.0f || f[11] != 0.0f || f[15] != 1.0f)
+            return mote__fail(ld, MOTE_ERR_RANGE, "%s: matrix %u (numbers %zu to %zu) is not an "
+                              "affine transform (its numbers 3, 7, 11 and 15 must be 0, 0, 0 "
+                              "and 1)", at, (unsigned)k, (size_t)k * 16, (size_t)k * 16 + 15);
+        double det = (double)f[0] * ((double)f[5] * f[10] - (double)f[6] * f[9]) -
+                     (double)f[4] * ((double)f[1] * f[10] - (double)f[2] * f[9]) +
+                     (double)f[8] * ((double)f[1] * f[6] - (double)f[2] * f[5]);
+        t->thin_mirrored = det < 0.0;
+        if (ld->right_handed)
+            mote__mirror_matrix(t->matrix);
+        t->has_matrix = !identity;
+        t->matrix_name = "thin instance matrix";
+        t->is_thin = true;
+        t->host = host;
+        t->parent_instance = -1;
+        t->scaling[0] = t->scaling[1] = t->scaling[2] = 1.0f;
+        t->material_id = h->material_id;
+        t->material_unique_id = h->material_unique_id;
+        t->legacy = h->legacy;
+        t->side = h->side;
+        t->invisible = h->invisible;  /* drawn when the mesh is (its parent's flags do the rest) */
+        mote__share_arrays(t, (mote__node *)h);
+        t->subs = h->subs;
+        t->sub_count = h->sub_count;
+    }
+    return MOTE_OK;
+}
+
 static R mote__nodes(mote__ld *ld)
 {
     const cJSON *meshes, *tnodes, *geos = mote__get(ld->root, "geometries");
@@ -1919,51 +2091,89 @@ static R mote__nodes(mote__ld *ld)
         if (!ld->geometry_map)
             return mote__oom(ld, "geometries");
     }
-    /* nh: nodes that may need a helper node (mote__fold_matrix) */
-    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0, nh = 0;
+    /* nh: nodes that may need a helper node (mote__fold_matrix); nl: the
+     * levels of detail that instances of their master may draw (mote__lods) */
+    size_t nm = mote__array_len(meshes), nt = mote__array_len(tnodes), ni = 0, nth = 0, nh = 0,
+           nl = 0;
     int i = 0;
     for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
         char at[32];
         snprintf(at, sizeof at, "meshes[%d]", i);
-        const cJSON *inst = NULL;
-        if (cJSON_IsObject(m))
+        const cJSON *inst = NULL, *lod_ids = NULL;
+        uint32_t thin = 0;
+        bool unused;
+        if (cJSON_IsObject(m)) {
             MOTE__TRY(mote__arr(ld, m, "instances", at, &inst));
-        ni += mote__array_len(inst);
+            MOTE__TRY(mote__arr(ld, m, "lodMeshIds", at, &lod_ids));
+            MOTE__TRY(mote__thin_count(ld, m, at, false, &thin, &unused));
+        }
+        size_t n = mote__array_len(inst);
+        ni += n;
+        nth += thin;
         if (mote__may_have_matrix(m))
-            nh += 1 + mote__array_len(inst);
+            nh += 1 + n;
+        if (thin)   /* a thin instance's matrix may be sheared */
+            nh += thin;
+        nl += n * mote__array_len(lod_ids);
+        if (ni + nth > ld->lim.max_meshes)
+            break;   /* no sum past the limit (nor its overflow) */
     }
     for (const cJSON *t = tnodes ? tnodes->child : NULL; t; t = t->next)
         nh += mote__may_have_matrix(t);
-    if (nm + nt + ni > ld->lim.max_meshes)
+    if (nm + nt + ni + nth > ld->lim.max_meshes)
         return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: %zu meshes, more than the limit of %u "
-                          "(transform nodes and instances count)", nm + nt + ni,
-                          (unsigned)ld->lim.max_meshes);
+                          "(transform nodes, instances and thin instances count)",
+                          nm + nt + ni + nth, (unsigned)ld->lim.max_meshes);
     /* cameras and lights may join the tree (mote__xnode), and helpers of
      * nodes with a matrix; each becomes a mesh, so no more than the mesh
      * limit leaves room for */
     const cJSON *cams, *lights;
     MOTE__TRY(mote__arr(ld, ld->root, "cameras", "", &cams));
     MOTE__TRY(mote__arr(ld, ld->root, "lights", "", &lights));
-    size_t nx = mote__array_len(cams) + mote__array_len(lights) + nh;
-    if (nx > ld->lim.max_meshes - (nm + nt + ni))
-        nx = ld->lim.max_meshes - (nm + nt + ni);
-    ld->nodes = mote__store_alloc(&ld->tmp, nm + nt + ni + nx, sizeof *ld->nodes);
+    size_t nx = mote__array_len(cams) + mote__array_len(lights) + nh + nl;
+    const size_t base = nm + nt + ni + nth;
+    if (nx > ld->lim.max_meshes - base)
+        nx = ld->lim.max_meshes - base;
+    ld->nodes = mote__store_alloc(&ld->tmp, base + nx, sizeof *ld->nodes);
     if (!ld->nodes)
         return mote__oom(ld, "meshes");
-    ld->node_count = (int)(nm + nt + ni);
-    ld->node_cap = (int)(nm + nt + ni + nx);
+    ld->node_count = (int)base;
+    ld->node_cap = (int)(base + nx);
+    ld->file_meshes = (int)nm;
+    ld->instances_first = (int)(nm + nt);
+    ld->instances_end = (int)(nm + nt + ni);
     /* meshes, then transform nodes, then instances: each the source mesh's
      * geometry, material and sub-meshes with a transform and parent of its
-     * own (Babylon.js's Mesh.Parse and createInstance) */
-    int next_instance = (int)(nm + nt);
+     * own (Babylon.js's Mesh.Parse and createInstance), then thin instances */
+    int next_instance = (int)(nm + nt), next_thin = (int)(nm + nt + ni);
     i = 0;
     for (const cJSON *m = meshes ? meshes->child : NULL; m; m = m->next, i++) {
         mote__node *nd = &ld->nodes[i];
         snprintf(nd->where, sizeof nd->where, "meshes[%d]", i);
         MOTE__TRY(mote__node_read(ld, m, nd->where, nd));
+        /* levels of detail, resolved once every mesh is known (mote__lods);
+         * arrays: checked above */
+        nd->lod_ids = mote__get(m, "lodMeshIds");
+        MOTE__TRY(mote__arr(ld, m, "lodDistances", nd->where, &nd->lod_distances));
+        if (nd->lod_ids && nd->lod_ids->child && !nd->lod_distances)
+            mote__warn(ld, "%s: lodMeshIds without lodDistances (Babylon.js's loader reads no "
+                       "lodCoverages): no levels of detail are made, each mesh is drawn by "
+                       "itself, as in Babylon.js", nd->where);
+        uint32_t thin;
+        MOTE__TRY(mote__thin_count(ld, m, nd->where, true, &thin, &nd->undrawn));
+        if (thin) {
+            nd->undrawn = true;
+            nd->first_thin = next_thin;
+            nd->thin_count = (int)thin;
+            MOTE__TRY(mote__thin_instances(ld, m, i, i, next_thin, thin));
+            next_thin += (int)thin;
+        }
         const cJSON *inst = mote__get(m, "instances");   /* an array: checked above */
         nd->first_instance = next_instance;
         nd->instance_count = (int)mote__array_len(inst);
+        if (nd->undrawn && nd->instance_count)
+            mote__warn(ld, "%s: its instances are not drawn: Babylon.js draws a mesh's thin "
+                       "instances in place of it and its instances", nd->where);
         int k = 0;
         for (const cJSON *e = inst ? inst->child : NULL; e; e = e->next, k++) {
             mote__node *in = &ld->nodes[next_instance++];
@@ -1973,6 +2183,7 @@ static R mote__nodes(mote__ld *ld)
             in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
             in->side = nd->side;   /* drawn through its source mesh */
+            in->undrawn = nd->undrawn;
             /* InstancedMesh's constructor: setPivotMatrix(source's matrix),
              * with the default postMultiplyPivotMatrix, so an instance
              * undoes even a localMatrix (a pre-transform of its source) */
@@ -2527,6 +2738,281 @@ static R mote__fold_matrix(mote__ld *ld, int index)
     return MOTE_OK;
 }
 
+/* ---- levels of detail -------------------------------------------------- */
+
+/* A level of detail takes its master's place: AbstractMesh.getWorldMatrix
+ * returns the master's world matrix while the mesh has one (addLODLevel
+ * sets _masterMesh), whatever the level's own transform, pivot and
+ * parent; as the master's child with the identity transform it has that
+ * matrix, and its children follow it as they follow getWorldMatrix. */
+static void mote__lod_take_place(mote__node *nd, int master)
+{
+    memset(nd->position, 0, sizeof nd->position);
+    memset(nd->rotation, 0, sizeof nd->rotation);
+    memset(nd->quat, 0, sizeof nd->quat);
+    nd->use_quat = false;
+    nd->scaling[0] = nd->scaling[1] = nd->scaling[2] = 1.0f;
+    nd->has_matrix = false;
+    nd->parent = master;
+    nd->parent_instance = -1;
+}
+
+/* Farthest first, as Mesh._sortLODLevels sorts them; equal distances in
+ * the order they were added (Array.prototype.sort is stable). */
+static int mote__lod_level_cmp(const void *a, const void *b)
+{
+    const mote__lod_level *x = a, *y = b;
+    if (x->distance != y->distance)
+        return x->distance > y->distance ? -1 : 1;
+    return (x->seq > y->seq) - (x->seq < y->seq);
+}
+
+/* Sorts n levels as getLOD walks them and makes each run of levels that
+ * draw nothing one level, of the run's last (smallest) distance: getLOD
+ * picks the first level below the camera's distance, so the run is
+ * picked exactly when that one would be. Returns the new count. */
+static int mote__lod_sort(mote__lod_level *lv, int n)
+{
+    qsort(lv, (size_t)n, sizeof *lv, mote__lod_level_cmp);
+    int k = 0;
+    for (int j = 0; j < n; j++) {
+        if (k > 0 && lv[j].node < 0 && lv[k - 1].node < 0)
+            lv[k - 1] = lv[j];
+        else
+            lv[k++] = lv[j];
+    }
+    return k;
+}
+
+static bool mote__is_instance(const mote__ld *ld, int node)
+{
+    return node >= ld->instances_first && node < ld->instances_end;
+}
+
+/* A copy of level mesh `level` for instance `inst` of its master, drawn in
+ * the instance's place: InstancedMesh.getLOD asks its source's getLOD with
+ * the instance's own bounding sphere, and the level chosen is drawn as an
+ * instance of the level mesh, at the instance's world matrix. It shares
+ * the level's arrays, material and sub-meshes. */
+static R mote__lod_copy(mote__ld *ld, int level, int inst, int *out)
+{
+    if (ld->node_count >= ld->node_cap)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: more than the limit of %u meshes (each "
+                          "instance of a mesh with levels of detail has its own)",
+                          ld->nodes[inst].where, (unsigned)ld->lim.max_meshes);
+    mote__node *c = &ld->nodes[ld->node_count];
+    const mote__node *l = &ld->nodes[level];
+    *c = *l;
+    c->arrays = l->arrays ? l->arrays : &ld->nodes[level];
+    c->id = c->unique_id = c->parent_id = NULL;
+    c->parent_by_unique = false;
+    c->first_instance = c->instance_count = 0;
+    /* drawn as the level's geometry: the level's thin instances are not
+     * copied */
+    c->first_thin = c->thin_count = 0;
+    c->undrawn = false;
+    c->lod_ids = c->lod_distances = NULL;
+    c->lod_copy = true;
+    c->invisible = c->disabled = false;   /* a level's own flags are not read */
+    c->state = 0;
+    mote__lod_take_place(c, inst);
+    *out = ld->node_count++;
+    return MOTE_OK;
+}
+
+/* Levels for the instances of each master (mote__lod_copy): a group per
+ * instance, its levels those of its master with the copies in place of
+ * the level meshes. Counted against the mesh limit before any is made. */
+static R mote__lod_copies(mote__ld *ld)
+{
+    size_t copies = 0, levels = 0;
+    const int groups = ld->lod_group_count;
+    for (int gi = 0; gi < groups; gi++) {
+        const mote__lod_group *g = &ld->lod_groups[gi];
+        size_t meshes = 0, n = (size_t)ld->nodes[g->base].instance_count;
+        for (int k = 0; k < g->level_count; k++)
+            meshes += ld->lod_levels[g->first_level + k].node >= 0;
+        copies += n * meshes;
+        levels += n * (size_t)g->level_count;
+    }
+    if (levels == 0)
+        return MOTE_OK;
+    if (copies > (size_t)(ld->node_cap - ld->node_count))
+        return mote__fail(ld, MOTE_ERR_LIMIT, "meshes: more than the limit of %u meshes (each "
+                          "instance of a mesh with levels of detail has its own: %zu)",
+                          (unsigned)ld->lim.max_meshes, copies);
+    mote__lod_level *all = mote__store_alloc(&ld->tmp, (size_t)ld->lod_level_count + levels,
+                                             sizeof *all);
+    if (!all)
+        return mote__oom(ld, "meshes");
+    memcpy(all, ld->lod_levels, (size_t)ld->lod_level_count * sizeof *all);
+    ld->lod_levels = all;
+    for (int gi = 0; gi < groups; gi++) {
+        const mote__lod_group g = ld->lod_groups[gi];
+        const mote__node *m = &ld->nodes[g.base];
+        for (int j = 0; j < m->instance_count; j++) {
+            int inst = m->first_instance + j;
+            if (ld->lod_master[inst] >= 0)
+                continue;   /* itself a level: it chooses none (mote__lods) */
+            mote__lod_group *ng = &ld->lod_groups[ld->lod_group_count++];
+            ng->base = inst;
+            ng->first_level = ld->lod_level_count;
+            ng->level_count = g.level_count;
+            for (int k = 0; k < g.level_count; k++) {
+                mote__lod_level lv = ld->lod_levels[g.first_level + k];
+                if (lv.node >= 0)
+                    MOTE__TRY(mote__lod_copy(ld, lv.node, inst, &lv.node));
+                ld->lod_levels[ld->lod_level_count++] = lv;
+            }
+        }
+    }
+    return MOTE_OK;
+}
+
+/* The levels of detail of the meshes that say lodMeshIds with
+ * lodDistances, as babylonFileLoader.ts's loadDetailLevels makes them
+ * (master by master, in the file's order): level k is the mesh
+ * scene.getMeshById(lodMeshIds[k]) finds (the first mesh of that id,
+ * each mesh followed by its instances; none: no level, warned) at
+ * lodDistances[k], and a last lodDistances past the ids, when above 0, is
+ * a level that draws nothing; fewer distances than ids make no levels
+ * (warned, as Babylon.js warns). A mesh already a level of another is not
+ * taken again (addLODLevel: "You cannot use a mesh as LOD level twice").
+ * lodCoverages is not read: loadDetailLevels uses the distances alone.
+ * Each level mesh takes its master's place (mote__lod_take_place); a
+ * master that is itself a level keeps its levels hidden (a level is
+ * blocked: its own getLOD never runs); an instance named as a level stands
+ * in its master's place and is drawn there as it would be anyway (an
+ * InstancedMesh is never blocked), the level drawing nothing more. */
+static R mote__lods(mote__ld *ld)
+{
+    const int nm = ld->file_meshes;
+    size_t cap = 0;
+    for (int i = 0; i < nm; i++)
+        if (ld->nodes[i].lod_ids && ld->nodes[i].lod_distances)
+            cap += mote__array_len(ld->nodes[i].lod_ids) + 1;
+    if (cap == 0)
+        return MOTE_OK;
+    /* the meshes in scene.meshes' order, for getMeshById */
+    int n = 0;
+    int *order = mote__store_alloc(&ld->tmp, (size_t)ld->node_count, sizeof *order);
+    const char **ids = mote__store_alloc(&ld->tmp, (size_t)ld->node_count, sizeof *ids);
+    ld->lod_master = mote__store_alloc(&ld->tmp, (size_t)ld->node_cap, sizeof *ld->lod_master);
+    ld->lod_levels = mote__store_alloc(&ld->tmp, cap, sizeof *ld->lod_levels);
+    ld->lod_groups = mote__store_alloc(&ld->tmp, (size_t)ld->node_count,
+                                       sizeof *ld->lod_groups);
+    if (!order || !ids || !ld->lod_master || !ld->lod_levels || !ld->lod_groups)
+        return mote__oom(ld, "meshes");
+    for (int i = 0; i < nm; i++) {
+        const mote__node *m = &ld->nodes[i];
+        order[n] = i;
+        ids[n++] = m->id;
+        for (int j = 0; j < m->instance_count; j++) {
+            order[n] = m->first_instance + j;
+            ids[n++] = ld->nodes[m->first_instance + j].id;
+        }
+    }
+    int dup;
+    mote__idmap *map = mote__idmap_build(ld, ids, sizeof *ids, n, &dup);
+    if (!map)
+        return mote__oom(ld, "meshes");
+    for (int i = 0; i < ld->node_cap; i++)
+        ld->lod_master[i] = -1;
+    for (int i = 0; i < nm; i++) {
+        const mote__node *m = &ld->nodes[i];
+        if (!m->lod_ids || !m->lod_ids->child || !m->lod_distances)
+            continue;
+        size_t nid = mote__array_len(m->lod_ids), ndist = mote__array_len(m->lod_distances);
+        if (ndist < nid) {
+            mote__warn(ld, "%s: %zu lodDistances for %zu lodMeshIds: Babylon.js makes no levels "
+                       "of detail of them (\"Invalid level of detail distances\"), each mesh is "
+                       "drawn by itself", m->where, ndist, nid);
+            continue;
+        }
+        mote__lod_group *g = &ld->lod_groups[ld->lod_group_count];
+        g->base = i;
+        g->first_level = ld->lod_level_count;
+        int seq = 0;
+        size_t k = 0;
+        const cJSON *d = m->lod_distances->child;
+        for (const cJSON *e = m->lod_ids->child; e; e = e->next, d = d->next, k++) {
+            char at[96];
+            snprintf(at, sizeof at, "%s.lodMeshIds[%zu]", m->where, k);
+            if (cJSON_IsNull(e)) {
+                mote__warn(ld, "%s: null names no mesh; Babylon.js adds no level for it (one "
+                           "past which nothing is drawn is a last lodDistances value past the "
+                           "ids)", at);
+                continue;
+            }
+            if (!cJSON_IsString(e))
+                return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected a string, found %s", at,
+                                  mote__type_name(e));
+            int pos = mote__idmap_find(map, e->valuestring);
+            if (pos < 0) {
+                mote__warn(ld, "%s: \"%s\" names no mesh; Babylon.js adds no level for it", at,
+                           mote__quote(e->valuestring).s);
+                continue;
+            }
+            int l = order[pos];
+            if (l == i)
+                return mote__fail(ld, MOTE_ERR_RANGE, "%s: \"%s\" names the mesh itself (a level "
+                                  "is drawn at its master's world matrix)", at,
+                                  mote__quote(e->valuestring).s);
+            if (ld->lod_master[l] >= 0) {
+                mote__warn(ld, "%s: \"%s\" is a level of detail of %s already; Babylon.js takes "
+                           "a mesh as a level once", at, mote__quote(e->valuestring).s,
+                           ld->nodes[ld->lod_master[l]].where);
+                continue;
+            }
+            char dat[96];
+            float distance;
+            snprintf(dat, sizeof dat, "%s.lodDistances[%zu]", m->where, k);
+            MOTE__TRY(mote__to_float(ld, d, dat, &distance));
+            /* steps: no walk round a cycle of parents (mote__parents
+             * reports it after) */
+            for (int a = m->parent, steps = 0; a >= 0 && steps <= ld->node_count;
+                 a = ld->nodes[a].parent, steps++)
+                if (a == l)
+                    return mote__fail(ld, MOTE_ERR_RANGE, "%s: \"%s\" is a parent of the mesh, "
+                                      "whose place it would take", at,
+                                      mote__quote(e->valuestring).s);
+            ld->lod_master[l] = i;
+            mote__lod_take_place(&ld->nodes[l], i);
+            mote__lod_level *lv = &ld->lod_levels[ld->lod_level_count++];
+            lv->distance = distance;
+            lv->node = mote__is_instance(ld, l) ? -1 : l;
+            lv->seq = seq++;
+        }
+        if (ndist > nid) {
+            const cJSON *last = m->lod_distances->child;
+            for (size_t j = 1; j < ndist; j++)
+                last = last->next;
+            char dat[96];
+            float culling;
+            snprintf(dat, sizeof dat, "%s.lodDistances[%zu]", m->where, ndist - 1);
+            MOTE__TRY(mote__to_float(ld, last, dat, &culling));
+            if (culling > 0.0f) {
+                mote__lod_level *lv = &ld->lod_levels[ld->lod_level_count++];
+                lv->distance = culling;
+                lv->node = -1;
+                lv->seq = seq++;
+            }
+        }
+        g->level_count = mote__lod_sort(&ld->lod_levels[g->first_level],
+                                        ld->lod_level_count - g->first_level);
+        ld->lod_level_count = g->first_level + g->level_count;
+        if (g->level_count > 0)
+            ld->lod_group_count++;
+    }
+    /* a master that is itself a level is blocked: only its master chooses */
+    int kept = 0;
+    for (int gi = 0; gi < ld->lod_group_count; gi++)
+        if (ld->lod_master[ld->lod_groups[gi].base] < 0)
+            ld->lod_groups[kept++] = ld->lod_groups[gi];
+    ld->lod_group_count = kept;
+    return mote__lod_copies(ld);
+}
+
 /* parentId -> node index; then every chain must end (no cycle) within the
  * depth the core follows. */
 static R mote__parents(mote__ld *ld)
@@ -2540,7 +3026,7 @@ static R mote__parents(mote__ld *ld)
         return mote__oom(ld, "meshes");
     for (int i = 0; i < ld->node_count; i++) {
         mote__node *nd = &ld->nodes[i];
-        nd->parent = -1;
+        nd->parent = nd->is_thin ? nd->host : -1;
         if (!nd->parent_id)
             continue;
         if (nd->parent_by_unique)
@@ -2569,6 +3055,9 @@ static R mote__parents(mote__ld *ld)
                               p->instance_count);
         nd->parent = p->first_instance + nd->parent_instance;
     }
+    /* levels of detail take their master's place (and its instances get
+     * levels of their own), before the matrices are folded */
+    MOTE__TRY(mote__lods(ld));
     /* the matrices, now that the parents are known (helpers take them) */
     for (int i = 0, n = ld->node_count; i < n; i++)
         if (ld->nodes[i].has_matrix)
@@ -2697,6 +3186,8 @@ static R mote__side_indices(mote__ld *ld, mote__node *nd, int s, const mote__mat
     bool flip = side != MOTE__SIDE_UNSAID && (side == MOTE__SIDE_CW) != ld->right_handed;
     if (mat && mat->cull_front)
         flip = !flip;
+    if (nd->thin_mirrored)
+        flip = !flip;
     if (!flip || !m->indices || m->index_count == 0)
         return MOTE_OK;
     if (nd->sub_count > 0 && (nd->subs[s].own_indices || nd->subs[s].index_start % 3)) {
@@ -2790,11 +3281,99 @@ static R mote__build_meshes(mote__ld *ld)
              * the top row when it says not; unsaid, legacy files (the
              * tutorial's) address the top row, current ones the bottom */
             m->material.v_origin_bottom = mat && mat->invert_y >= 0 ? mat->invert_y != 0 : !nd->legacy;
-            m->hidden = mote__node_hidden(ld, nd);
+            m->hidden = mote__node_hidden(ld, nd) || nd->undrawn;
             mote_mesh_update_bounds(m);
         }
     }
-    /* world-space box over every drawn vertex (once per node: sub-meshes share) */
+    return MOTE_OK;
+}
+
+/* What a node draws as the base or a level of detail: its sub-meshes, or
+ * its thin instances' (contiguous nodes, so contiguous meshes); nothing
+ * when its own are not drawn and it has no thin instances. */
+static void mote__lod_unit(const mote__ld *ld, int node, int *first, int *count)
+{
+    const mote__node *nd = &ld->nodes[node];
+    *first = nd->first_mesh;
+    *count = 0;
+    if (nd->thin_count > 0) {
+        const mote__node *t = &ld->nodes[nd->first_thin];
+        *first = t->first_mesh;
+        *count = nd->thin_count * t->mesh_count;
+    } else if (!nd->undrawn) {
+        *count = nd->mesh_count;
+    }
+}
+
+/* Shows group g's base (chosen -1) or its level `chosen` in meshes, and
+ * hides the rest of it (all of it when the group is hidden). */
+static void mote__lod_show(const mote_scene *sc, mote_mesh *meshes, int g, int chosen)
+{
+    const mote_lod *lod = &sc->lods[g];
+    for (int k = -1; k < lod->level_count; k++) {
+        int first = k < 0 ? lod->first_mesh : lod->levels[k].first_mesh;
+        int count = k < 0 ? lod->mesh_count : lod->levels[k].mesh_count;
+        if (first < 0 || count < 0 || count > sc->mesh_count - first)
+            continue;
+        for (int i = first; i < first + count; i++)
+            meshes[i].hidden = lod->hidden || k != chosen;
+    }
+}
+
+/* scene.lods from the groups of mote__lods, once the meshes are made, each
+ * showing its base; the levels of groups that are none (masters that are
+ * levels themselves) are hidden for good. */
+static R mote__lod_groups(mote__ld *ld)
+{
+    mote_scene *sc = ld->scene;
+    if (!ld->lod_master)
+        return MOTE_OK;
+    for (int i = 0; i < ld->node_count; i++) {
+        /* an instance taken as a level is drawn as ever (mote__lods) */
+        if ((ld->lod_master[i] < 0 || mote__is_instance(ld, i)) && !ld->nodes[i].lod_copy)
+            continue;
+        int first, count;
+        mote__lod_unit(ld, i, &first, &count);
+        for (int k = first; k < first + count; k++)
+            sc->meshes[k].hidden = true;
+    }
+    if (ld->lod_group_count == 0)
+        return MOTE_OK;
+    mote_lod *lods = mote__store_alloc(ld->keep, (size_t)ld->lod_group_count, sizeof *lods);
+    mote_lod_level *levels = mote__store_alloc(ld->keep, (size_t)ld->lod_level_count,
+                                               sizeof *levels);
+    if (!lods || !levels)
+        return mote__oom(ld, "meshes");
+    for (int g = 0; g < ld->lod_group_count; g++) {
+        const mote__lod_group *lg = &ld->lod_groups[g];
+        mote_lod *lod = &lods[g];
+        mote__lod_unit(ld, lg->base, &lod->first_mesh, &lod->mesh_count);
+        lod->bounds_mesh = ld->nodes[lg->base].first_mesh;
+        lod->hidden = mote__node_hidden(ld, &ld->nodes[lg->base]);
+        lod->levels = levels;
+        lod->level_count = lg->level_count;
+        for (int k = 0; k < lg->level_count; k++) {
+            const mote__lod_level *lv = &ld->lod_levels[lg->first_level + k];
+            levels[k].distance = lv->distance;
+            levels[k].first_mesh = 0;
+            levels[k].mesh_count = 0;
+            if (lv->node >= 0)
+                mote__lod_unit(ld, lv->node, &levels[k].first_mesh, &levels[k].mesh_count);
+        }
+        levels += lg->level_count;
+    }
+    sc->lods = lods;
+    sc->lod_count = ld->lod_group_count;
+    for (int g = 0; g < sc->lod_count; g++)
+        mote__lod_show(sc, sc->meshes, g, -1);
+    return MOTE_OK;
+}
+
+/* scene.bounds: a world-space box over every drawn vertex (once per node:
+ * sub-meshes share). */
+static R mote__scene_bounds(mote__ld *ld)
+{
+    mote_scene *sc = ld->scene;
     bool any = false;
     for (int i = 0; i < ld->node_count; i++) {
         const mote__node *nd = &ld->nodes[i];
@@ -3178,8 +3757,13 @@ static R mote__load(mote__ld *ld, const char *json, size_t size)
     if (r == MOTE_OK) r = mote__camera_light_nodes(ld);
     if (r == MOTE_OK) r = mote__parents(ld);
     if (r == MOTE_OK) r = mote__build_meshes(ld);
+    if (r == MOTE_OK) r = mote__lod_groups(ld);
+    if (r == MOTE_OK) r = mote__scene_bounds(ld);
     if (r == MOTE_OK) r = mote__camera(ld);
     if (r == MOTE_OK) r = mote__lights(ld);
+    /* the levels of detail Babylon.js draws for the scene's camera */
+    if (r == MOTE_OK && ld->scene->has_camera)
+        mote_scene_choose_lod(ld->scene, ld->scene->meshes, &ld->scene->camera);
     cJSON_Delete(root);
     ld->root = NULL;
     return r;
@@ -3305,6 +3889,50 @@ void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_des
      * colour is then the emissive one: mote__emissive) */
     if (scene->unlit && scene->unlit[mesh])
         out->unlit = true;
+}
+
+int mote_scene_lod_level(const mote_scene *scene, int lod, const mote_mesh *meshes,
+                         const mote_camera *camera)
+{
+    if (!scene || !meshes || !camera || lod < 0 || lod >= scene->lod_count)
+        return -1;
+    const mote_lod *g = &scene->lods[lod];
+    if (g->level_count <= 0 || !g->levels || g->bounds_mesh < 0 ||
+        g->bounds_mesh >= scene->mesh_count)
+        return -1;
+    /* Mesh.getLOD: an orthographic camera's minZ, else the distance from
+     * the camera to the bounding sphere's centre in world space */
+    float distance = camera->znear;
+    if (camera->projection != MOTE_PROJECTION_ORTHOGRAPHIC) {
+        const mote_mesh *m = &meshes[g->bounds_mesh];
+        const float *c = m->bounds_center;
+        float w[16];
+        double sum = 0.0;
+        mote_mesh_world_matrix(m, w);
+        for (int k = 0; k < 3; k++) {
+            double d = (double)w[k] * c[0] + (double)w[4 + k] * c[1] + (double)w[8 + k] * c[2] +
+                       (double)w[12 + k] - (double)camera->position[k];
+            sum += d * d;
+        }
+        distance = (float)sqrt(sum);
+    }
+    /* nearer than the last (smallest) distance: the base; else the first
+     * level, farthest first, whose distance is below the camera's (an
+     * equal one is not: the comparisons are strict, as in getLOD) */
+    if (g->levels[g->level_count - 1].distance > distance)
+        return -1;
+    for (int k = 0; k < g->level_count; k++)
+        if (g->levels[k].distance < distance)
+            return k;
+    return -1;
+}
+
+void mote_scene_choose_lod(const mote_scene *scene, mote_mesh *meshes, const mote_camera *camera)
+{
+    if (!scene || !meshes || !camera)
+        return;
+    for (int g = 0; g < scene->lod_count; g++)
+        mote__lod_show(scene, meshes, g, mote_scene_lod_level(scene, g, meshes, camera));
 }
 
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame)

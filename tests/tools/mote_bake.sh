@@ -24,4 +24,22 @@ else
     fail $name "$(cat "$tmp/out")"
 fi
 
+# a scene with levels of detail is baked as its camera sees it, saying so:
+# the camera 5 away draws the base, the level (past 10) is baked hidden
+cat >"$tmp/lod.babylon" <<'JSON'
+{"cameras":[{"id":"c","position":[0,0,-5],"target":[0,0,0]}],
+ "meshes":[{"id":"q","lodMeshIds":["g"],"lodDistances":[10],
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0],"indices":[0,1,2]},
+  {"id":"g","positions":[-1,-1,0, 1,-1,0, 1,1,0],"indices":[0,1,2]}]}
+JSON
+name=levels_of_detail_should_be_baked_as_the_camera_sees_them_with_a_warning
+if "$B" "$tmp/lod.babylon" -o "$tmp/lod.h" >"$tmp/out" 2>&1 &&
+        grep -q "warning: 1 meshes and instances have levels of detail" "$tmp/out" &&
+        [ "$(grep -c '\.hidden = true' "$tmp/lod.h")" = 1 ] &&
+        grep -A12 '{ /\* 1 \*/' "$tmp/lod.h" | grep -q '\.hidden = true'; then
+    pass $name
+else
+    fail $name "$(cat "$tmp/out")"
+fi
+
 summary

@@ -98,4 +98,31 @@ fi
 fails ortho_and_fov_together_should_be_refused any "--fov and --ortho" \
     "$R" "$tmp/far.babylon" -o "$tmp/far.ppm" --ortho 4 --fov 1
 
+# ---- levels of detail follow --camera -------------------------------------------
+# A red quad with a green level of detail past 10 (which stands elsewhere in
+# the file: a level is drawn in its base's place): from 5 away the red one
+# is drawn, from 15 away (--camera) the green one, in the same place.
+cat >"$tmp/lod.babylon" <<'JSON'
+{"materials":[{"id":"red","disableLighting":true,"emissive":[1,0,0],"backFaceCulling":false},
+  {"id":"green","disableLighting":true,"emissive":[0,1,0],"backFaceCulling":false}],
+ "cameras":[{"id":"c","position":[0,0,-5],"target":[0,0,0]}],
+ "meshes":[{"id":"q","materialId":"red","lodMeshIds":["g"],"lodDistances":[10],
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0, -1,1,0],"indices":[0,1,2, 0,2,3]},
+  {"id":"g","materialId":"green","position":[4,0,0],
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0, -1,1,0],"indices":[0,1,2, 0,2,3]}]}
+JSON
+name=the_level_of_detail_drawn_should_be_the_one_for_the_camera
+if "$R" "$tmp/lod.babylon" -o "$tmp/near.ppm" --size 32x32 --threads 1 >"$tmp/out" 2>&1 &&
+        "$R" "$tmp/lod.babylon" -o "$tmp/far.ppm" --size 32x32 --threads 1 \
+            --camera 0,0,-15:0,0,0 >>"$tmp/out" 2>&1; then
+    near=$(pixel "$tmp/near.ppm" 16 16); far=$(pixel "$tmp/far.ppm" 16 16)
+    if [ "$near" = "255 0 0" ] && [ "$far" = "0 255 0" ]; then
+        pass $name
+    else
+        fail $name "the centre is \"$near\" from 5 away and \"$far\" from 15, expected red and green"
+    fi
+else
+    fail $name "exit status $?: $(cat "$tmp/out")"
+fi
+
 summary
