@@ -345,7 +345,9 @@ static void gen_texture(bench_scene *s)
 }
 
 /* Torus of 23 x 21 quads = 966 triangles, the monkey's count. Front faces
- * run counter-clockwise on screen seen from outside (checked in main). */
+ * run counter-clockwise on screen seen from outside (check_winding: until
+ * stop 36 they ran clockwise, and without ../shared the bench timed the
+ * torus's far inside with its near side culled). */
 static mote_mesh gen_torus(bench_scene *s)
 {
     const int nu = 23, nv = 21;
@@ -372,8 +374,8 @@ static mote_mesh gen_torus(bench_scene *s)
         for (int j = 0; j < nv; j++) {
             uint32_t a = (uint32_t)(i * (nv + 1) + j), b = (uint32_t)((i + 1) * (nv + 1) + j);
             uint32_t c = b + 1, d = a + 1;
-            *ix++ = a; *ix++ = c; *ix++ = b;
-            *ix++ = a; *ix++ = d; *ix++ = c;
+            *ix++ = a; *ix++ = b; *ix++ = c;
+            *ix++ = a; *ix++ = c; *ix++ = d;
         }
     mote_mesh m;
     memset(&m, 0, sizeof m);
@@ -1466,10 +1468,14 @@ static void check_winding(bench_scene *s)
     dev_image(&bd, a, ca);
     dev_render(&bd, s, &none, BENCH_ERR_FRAME, 0);
     dev_image(&bd, b, cb);
-    bench_err e = compare(a, ca, b, cb, s->width, s->height);
-    if (e.mismatch || !isinf(e.psnr))
-        fprintf(stderr, "bench: warning: %s differs with and without back-face culling "
-                        "(%ld pixels of coverage): its winding is wrong\n", s->name, e.mismatch);
+    long covered = 0, differ = 0;
+    for (size_t i = 0; i < n; i++) {
+        covered += ca[i] || cb[i];
+        differ += ca[i] != cb[i] || memcmp(a + 4 * i, b + 4 * i, 3) != 0;
+    }
+    if (differ)
+        fprintf(stderr, "bench: warning: %s: %ld of its %ld pixels differ with and without back-face "
+                        "culling: its winding is wrong\n", s->name, differ, covered);
     dev_free(&bd);
     free(a); free(b); free(ca); free(cb);
 }
