@@ -8,8 +8,8 @@
 #   - the Cortex-M4F build (hard float) on mps2-an386 (Cortex-M4 with FPU).
 # Output goes through semihosting. Ends with a Unity-style summary line;
 # ignored (not failed) when the cross compiler or qemu cannot be had.
-# Installs qemu-system-arm through third_party/setup.sh when it is missing
-# and root with apt-get is available.
+# Installs gcc-arm-none-eabi and qemu-system-arm through third_party/setup.sh
+# when they are missing and root with apt-get is available.
 set -u
 cd "$(dirname "$0")/.." || exit 1
 build=${MOTE_BUILD:-build}
@@ -29,14 +29,18 @@ fail() {
     exit 1
 }
 
-command -v arm-none-eabi-gcc >/dev/null 2>&1 || ignore "arm-none-eabi-gcc is not installed"
-if ! command -v qemu-system-arm >/dev/null 2>&1; then
-    if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
-        MOTE_EXTRA_PACKAGES="qemu-system-arm" sh third_party/setup.sh >/dev/null 2>&1
-    fi
-    command -v qemu-system-arm >/dev/null 2>&1 ||
-        ignore "qemu-system-arm is not installed (apt-get install qemu-system-arm)"
+# Root with apt-get installs what is missing (CI's clean machine: without
+# it this test was ignored there, and the freestanding core went unchecked).
+missing=""
+command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing gcc-arm-none-eabi"
+command -v qemu-system-arm >/dev/null 2>&1 || missing="$missing qemu-system-arm"
+if [ -n "$missing" ] && [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
+    MOTE_EXTRA_PACKAGES="$missing" sh third_party/setup.sh >/dev/null 2>&1
 fi
+command -v arm-none-eabi-gcc >/dev/null 2>&1 ||
+    ignore "arm-none-eabi-gcc is not installed (apt-get install gcc-arm-none-eabi)"
+command -v qemu-system-arm >/dev/null 2>&1 ||
+    ignore "qemu-system-arm is not installed (apt-get install qemu-system-arm)"
 
 # A make of our own: not part of an outer make's job server.
 env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s --no-print-directory BUILD="$build" embedded-firmware ||
