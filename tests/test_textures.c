@@ -716,6 +716,59 @@ void textures_should_refuse_more_pixels_than_stb_image_converts_safely(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* A JPEG larger than the limits is refused by its size, before the screen
+ * walks its scans a block at a time: a 65528 x 63738 header over 300
+ * bytes took the fuzzer past its 15 s (tests/fuzz/regressions/texture).
+ * Here the scan uses a Huffman table no DHT segment defines, which the
+ * screen refuses when it walks the scan: a limit error shows it did not. */
+void textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans(void)
+{
+    file.n = 0;
+    put8(&file, 0xff);
+    put8(&file, 0xd8);
+    part.n = 0;
+    put8(&part, 0);
+    for (int i = 0; i < 64; i++)
+        put8(&part, 1);
+    jpeg_segment(&file, 0xdb, &part);
+    for (int small = 0; small < 2; small++) {
+        bytes *b = &file;
+        size_t sof = b->n;
+        part.n = 0; /* baseline, 20000 x 20000 (or 16 x 16), one component */
+        put8(&part, 8);
+        put16be(&part, small ? 16 : 20000);
+        put16be(&part, small ? 16 : 20000);
+        put8(&part, 1);
+        put8(&part, 1);
+        put8(&part, 0x11);
+        put8(&part, 0);
+        jpeg_segment(b, 0xc0, &part);
+        part.n = 0; /* a scan with DC and AC table 0, never defined */
+        put8(&part, 1);
+        put8(&part, 1);
+        put8(&part, 0x00);
+        put8(&part, 0);
+        put8(&part, 63);
+        put8(&part, 0);
+        jpeg_segment(b, 0xda, &part);
+        put8(b, 0x00);
+        put8(b, 0xff);
+        put8(b, 0xd9);
+        mote_texture t;
+        mote_result r = mote_texture_load_memory(file.d, file.n, NULL, &t, msg, sizeof msg);
+        if (!small) {
+            TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_LIMIT, r, msg);
+            TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "20000 x 20000 is larger than the limit"), msg);
+        } else { /* the same file within the limits: the screen walks it and refuses */
+            TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_PARSE, r, msg);
+            TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "which no DHT segment defines"), msg);
+        }
+        TEST_ASSERT_NULL(t.pixels);
+        TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+        file.n = sof; /* the second time, the frame again with a small size */
+    }
+}
+
 /* The screen's own allocations (a copy of a PNG's IDAT data, its padded
  * copies, a JPEG's tables) fail cleanly. */
 void textures_should_free_everything_when_each_allocation_fails(void)
@@ -765,6 +818,7 @@ int main(void)
     RUN_TEST(textures_should_load_bmp_tga_and_the_first_gif_frame);
     RUN_TEST(textures_should_draw_indices_past_a_short_palette_black);
     RUN_TEST(textures_should_refuse_more_pixels_than_stb_image_converts_safely);
+    RUN_TEST(textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans);
     RUN_TEST(textures_should_free_everything_when_each_allocation_fails);
     return UNITY_END();
 }

@@ -67,8 +67,11 @@ mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *l
  * (MOTE_ERR_PARSE with a message), and where its palette lookups would read
  * uninitialised memory, makes a copy padded with black entries (*fixed,
  * from mote__io_malloc, *fixed_size bytes; NULL when the bytes are fine as
- * they are) to be decoded in their place. */
-mote_result mote__texture_screen(const unsigned char *data, size_t size, unsigned char **fixed,
-                                 size_t *fixed_size, char *message, size_t message_size);
+ * they are) to be decoded in their place. An image larger than *limits
+ * allow is passed unlooked-at: the decode refuses it by its size, and its
+ * scans could take long to walk. */
+mote_result mote__texture_screen(const unsigned char *data, size_t size, const mote_limits *limits,
+                                 unsigned char **fixed, size_t *fixed_size, char *message,
+                                 size_t message_size);
 
 #endif

@@ -59,7 +59,8 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
                               lim.max_texture_height);
     unsigned char *fixed = NULL;
     size_t fixed_size = 0;
-    mote_result r = mote__texture_screen(data, size, &fixed, &fixed_size, message, message_size);
+    mote_result r = mote__texture_screen(data, size, &lim, &fixed, &fixed_size, message,
+                                         message_size);
     if (r != MOTE_OK)
         return r;
     if (fixed && fixed_size > (size_t)INT_MAX)

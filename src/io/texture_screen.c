@@ -184,6 +184,7 @@ typedef struct mote__jpeg {
     bool nomore;
     unsigned marker;
     int todo;
+    const mote_limits *limits;
     char *message;
     size_t message_size;
 } mote__jpeg;
@@ -654,6 +655,13 @@ static mote__verdict mote__jwalk(mote__jpeg *j)
     j->progressive = m == 0xc2;
     if ((v = mote__jframe(j)) != MOTE__GO)
         return v;
+    /* An image over the limits is refused by its size before stb_image
+     * decodes it (texture.c): its scans are not walked, a block at a time,
+     * which for 65528 x 63738 pixels of data past the end of the file took
+     * longer than the fuzzer's 15 s */
+    if (j->width > j->limits->max_texture_width || j->height > j->limits->max_texture_height ||
+        (size_t)j->width * (size_t)j->height > j->limits->max_texture_bytes / 4)
+        return MOTE__STB_FAILS;
     m = mote__jmarker(j);
     while (m != 0xd9) {
         if (m == 0xda) {
@@ -686,8 +694,8 @@ static mote__verdict mote__jwalk(mote__jpeg *j)
     return MOTE__GO;
 }
 
-static mote_result mote__screen_jpeg(const unsigned char *d, size_t n, char *message,
-                                     size_t message_size)
+static mote_result mote__screen_jpeg(const unsigned char *d, size_t n, const mote_limits *limits,
+                                     char *message, size_t message_size)
 {
     mote__jpeg *j = mote__io_malloc(sizeof *j);
     if (!j)
@@ -696,6 +704,7 @@ static mote_result mote__screen_jpeg(const unsigned char *d, size_t n, char *mes
     memset(j, 0, sizeof *j);
     j->s.d = d;
     j->s.n = n;
+    j->limits = limits;
     j->message = message;
     j->message_size = message_size;
     mote__verdict v = mote__jwalk(j);
@@ -1198,14 +1207,15 @@ static mote_result mote__screen_pnm(const unsigned char *d, size_t n, char *mess
                           "%zu (stb_image would show uninitialised memory)", n - s.pos, need);
 }
 
-mote_result mote__texture_screen(const unsigned char *data, size_t size, unsigned char **fixed,
-                                 size_t *fixed_size, char *message, size_t message_size)
+mote_result mote__texture_screen(const unsigned char *data, size_t size, const mote_limits *limits,
+                                 unsigned char **fixed, size_t *fixed_size, char *message,
+                                 size_t message_size)
 {
     *fixed = NULL;
     *fixed_size = 0;
     switch (mote__image_kind(data, size)) {
     case MOTE__JPEG:
-        return mote__screen_jpeg(data, size, message, message_size);
+        return mote__screen_jpeg(data, size, limits, message, message_size);
     case MOTE__PNG:
         return mote__screen_png(data, size, fixed, fixed_size, message, message_size);
     case MOTE__BMP:
