@@ -97,7 +97,7 @@ static const char *tf(bool v)
 
 /* whether a material has an emissive colour (the loader's sum of emissive
  * and ambient x the scene's ambient colour) */
-static bool mote__bake_glows(const mote_material *mat)
+static bool glows(const mote_material *mat)
 {
     return (mat->emissive.r | mat->emissive.g | mat->emissive.b) != 0;
 }
@@ -217,7 +217,7 @@ static void write_mesh(baker *b, int i)
     fprintf(f, "            .v_offset = %s,\n", flt(buf, mat->v_offset));
     fprintf(f, "            .v_origin_bottom = %s,\n", tf(mat->v_origin_bottom));
     /* written only when set, as .hidden */
-    if (mote__bake_glows(mat))
+    if (glows(mat))
         fprintf(f, "            .emissive = {%u, %u, %u, %u},\n", mat->emissive.r, mat->emissive.g,
                 mat->emissive.b, mat->emissive.a);
     fputs("        },\n", f);
@@ -501,7 +501,7 @@ int main(int argc, char **argv)
             break;
         }
     for (int i = 0; i < scene.mesh_count; i++)
-        if (mote__bake_glows(&scene.meshes[i].material)) {
+        if (glows(&scene.meshes[i].material)) {
             fprintf(stderr, "mote-bake: warning: the scene's emissive and ambient colours need "
                             "MOTE_ENABLE_EMISSIVE; a build without it (the firmware profile) "
                             "ignores them\n");

@@ -68,8 +68,12 @@ mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *l
  * uninitialised memory, makes a copy padded with black entries (*fixed,
  * from mote__io_malloc, *fixed_size bytes; NULL when the bytes are fine as
  * they are) to be decoded in their place. An image larger than *limits
- * allow is passed unlooked-at: the decode refuses it by its size, and its
- * scans could take long to walk. */
+ * allow (mote__texture_over_limits) is passed unlooked-at: the decode
+ * refuses it by its size, and its scans could take long to walk. */
+/* Whether w x h pixels are more than *limits allow: the decode refuses
+ * every such image by its size, before stb_image decodes it. */
+bool mote__texture_over_limits(const mote_limits *limits, size_t w, size_t h);
+
 mote_result mote__texture_screen(const unsigned char *data, size_t size, const mote_limits *limits,
                                  unsigned char **fixed, size_t *fixed_size, char *message,
                                  size_t message_size);

@@ -73,7 +73,15 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
     return r;
 }
 
-/* The decode proper, once mote__texture_screen has passed the bytes. */
+bool mote__texture_over_limits(const mote_limits *limits, size_t w, size_t h)
+{
+    return w > (size_t)limits->max_texture_width || h > (size_t)limits->max_texture_height ||
+           (h > 0 && w > limits->max_texture_bytes / 4 / h);
+}
+
+/* The decode proper, once mote__texture_screen has passed the bytes. Its
+ * size checks refuse whatever mote__texture_over_limits says is over (the
+ * screen counts on it). */
 static mote_result mote__texture_decode(const unsigned char *d, size_t size,
                                         const mote_limits *limits, mote_texture *out,
                                         char *message, size_t message_size)

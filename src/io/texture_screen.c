@@ -659,8 +659,7 @@ static mote__verdict mote__jwalk(mote__jpeg *j)
      * decodes it (texture.c): its scans are not walked, a block at a time,
      * which for 65528 x 63738 pixels of data past the end of the file took
      * longer than the fuzzer's 15 s */
-    if (j->width > j->limits->max_texture_width || j->height > j->limits->max_texture_height ||
-        (size_t)j->width * (size_t)j->height > j->limits->max_texture_bytes / 4)
+    if (mote__texture_over_limits(j->limits, (size_t)j->width, (size_t)j->height))
         return MOTE__STB_FAILS;
     m = mote__jmarker(j);
     while (m != 0xd9) {
