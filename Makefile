@@ -103,4 +103,4 @@ help:
 	@echo "make clean      remove build outputs"
 	@echo "Options: OPENMP=0 (no OpenMP), SAN=1 (sanitizers), CC=clang"
 
--include $(sort $(wildcard examples/*.mk tests/*.mk tests/*/*.mk embedded/*.mk))
+-include $(sort $(wildcard examples/*.mk tools/*.mk tests/*.mk tests/*/*.mk embedded/*.mk))

@@ -4,7 +4,6 @@
 #                       RV32IMAC, then a table of .text/.data/.bss per target
 #   make test-embedded  render the example on emulated Cortex-M boards (qemu)
 #                       and compare its frame hash with the host's
-#   $(BIN)/mote-bake    .babylon scene -> C header (tools/mote_bake.c)
 #
 # The cross compilers see no C library: -nostdinc -nostdlib, the compiler's
 # own freestanding headers, embedded/include/string.h, a folder holding only
@@ -126,14 +125,6 @@ test-embedded:
 
 TEST_EXTRA += embedded/test-embedded.sh
 export MOTE_BUILD := $(BUILD)
-
-# ---- mote-bake ------------------------------------------------------------
-
-all: $(BIN)/mote-bake
-
-$(BIN)/mote-bake: tools/mote_bake.c $(LIB) | $(DEPS_OK)
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $< $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
 $(FW_HEADER): $(FW_SCENE) $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
