@@ -2,6 +2,6 @@
 # tests/tools/mote_render.sh and tests/tools/mote_bake.sh as part of
 # `make test` (BIN: where the built tools are).
 
-test-build: $(MOTE_RENDER) $(BIN)/mote-bake
+test-build: $(BIN)/mote-render $(BIN)/mote-bake
 TEST_EXTRA += tests/tools/mote_render.sh tests/tools/mote_bake.sh
 test: export BIN := $(BIN)
