@@ -143,34 +143,20 @@ typedef struct mote_scene {
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
-/* Loads a .babylon file, either layout: the legacy interleaved `vertices`
- * (stride 6/8/10 by uvCount) or the current `positions`/`normals`/`uvs`/
- * `colors` (4 or 3 floats per vertex, 0..1, into mote_mesh.colors).
- * Textures resolve relative to the scene's folder. limits may be NULL.
- * A mesh with isVisible false, or isEnabled false on it or a parent, loads
- * hidden (mote_mesh.hidden); a numeric parentId names a node's uniqueId
- * (current Babylon.js); a texture's invertY says whether v = 0 is its
- * bottom row (unsaid: the bottom row, but the top one in legacy files).
- * A mesh's instances become meshes of their own after the file's meshes
- * and transform nodes, sharing its arrays and material. Materials resolve
- * by materialUniqueId, then materialId (the last of equal ids); a texture
- * with coordinatesIndex 1 samples uvs2; backFaceCulling false fills
- * two_sided, disableLighting unlit; images may be embedded as base64
- * data: URLs (base64String, or name). A right-handed file
- * (useRightHandedSystem) loads mirrored in z (mirrored_z); a mesh whose
- * side orientation (its own or its material's) turns its front faces
- * round gets its triangles flipped. A mesh's thinInstances (matrixData,
- * 16 numbers each, and instancesCount) become meshes of their own after
- * the instances, each at the mesh's world matrix times its matrix,
- * sharing the mesh's arrays; the mesh itself, and its instances, are then
- * not drawn, as in Babylon.js. A mesh's lodMeshIds with lodDistances
- * make a level-of-detail group (mote_scene.lods): the levels are drawn at
- * the base's world matrix, never by themselves. */
+/* Loads a scene file. Its format is told by its bytes, whatever its
+ * name: a .babylon scene (Babylon.js's JSON, either layout; what is read,
+ * and how, is docs/babylon.md) loads; anything else fails saying what it
+ * is: MOTE_ERR_UNSUPPORTED for a glTF file (JSON or binary), a Wavefront
+ * OBJ file or an image, MOTE_ERR_IO for a Git LFS pointer in place of the
+ * file, MOTE_ERR_PARSE for none of these. Textures resolve relative to
+ * the scene's folder. limits may be NULL. On failure *out is zeroed and
+ * the message names the file and the place. */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
-/* The same from memory; base_dir resolves texture names (NULL: no textures
- * are loaded, materials keep their colour); name is used in messages. */
-mote_result mote_scene_load_memory(const char *json, size_t size, const char *name,
+/* The same from size bytes of memory; base_dir resolves texture names
+ * (NULL: no textures are loaded, materials keep their colour); name is
+ * used in messages. */
+mote_result mote_scene_load_memory(const char *data, size_t size, const char *name,
                                    const char *base_dir, const mote_limits *limits,
                                    mote_scene *out, char *message, size_t message_size);
 void mote_scene_free(mote_scene *scene);

@@ -5,9 +5,9 @@
  * Not API.
  *
  * src/io, by concern:
- *   scene.c               mote_scene_load*: the bytes parsed and handed to the
- *                         .babylon loader; framing, draw options, levels of
- *                         detail of a loaded scene
+ *   scene.c               mote_scene_load*: tells the format by the bytes and
+ *                         hands them to its loader (or says what they are);
+ *                         framing, draw options, levels of detail
  *   loader.[ch]           the scene being built: stores, limits, messages,
  *                         warnings, freeing
  *   scene_texture.c       the textures a scene names: path rules, URL-encoded

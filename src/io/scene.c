@@ -1,24 +1,182 @@
 /*
  * scene.c - mote_scene_load and what is done with a loaded scene: framing,
- * draw options, levels of detail. Loading hands the bytes to the loader of
- * their format (loader.h lists the files).
+ * draw options, levels of detail. Loading looks at the bytes and hands
+ * them to the loader of their format, or says what they are (loader.h
+ * lists the files).
  */
 #include "babylon.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
-/* The scene in data, of any format mote reads, into ld->scene. */
+/* ---- what the bytes are ------------------------------------------------ */
+
+/* What a file holds, told by its first bytes before anything parses it. */
+typedef enum mote__format {
+    MOTE__FORMAT_JSON,            /* .babylon or glTF: told apart once parsed */
+    MOTE__FORMAT_GLB,             /* binary glTF */
+    MOTE__FORMAT_OBJ,             /* Wavefront OBJ or MTL */
+    MOTE__FORMAT_LFS_POINTER,     /* a Git LFS pointer in place of the file */
+    MOTE__FORMAT_IMAGE,
+    MOTE__FORMAT_UNKNOWN
+} mote__format;
+
+static bool mote__starts_with(const unsigned char *d, size_t n, const char *prefix, size_t len)
+{
+    return n >= len && memcmp(d, prefix, len) == 0;
+}
+
+/* The kind of image d holds ("a PNG image"), by the signatures of the
+ * formats stb_image and other tools read; NULL: none of them. */
+static const char *mote__image_kind(const unsigned char *d, size_t n)
+{
+    static const struct {
+        const char *magic;
+        size_t len;
+        const char *kind;
+    } images[] = {
+        {"\x89PNG\r\n\x1a\n", 8, "a PNG image"},
+        {"\xff\xd8\xff", 3, "a JPEG image"},
+        {"GIF87a", 6, "a GIF image"},
+        {"GIF89a", 6, "a GIF image"},
+        {"8BPS", 4, "a Photoshop (PSD) image"},
+        {"#?RADIANCE", 10, "a Radiance HDR image"},
+        {"#?RGBE", 6, "a Radiance HDR image"},
+        {"\x53\x80\xf6\x34", 4, "a Softimage PIC image"},
+        {"II*\0", 4, "a TIFF image"},
+        {"MM\0*", 4, "a TIFF image"},
+        {"\x76\x2f\x31\x01", 4, "an OpenEXR image"},
+        {"\xabKTX", 4, "a KTX texture"},
+        {"DDS ", 4, "a DDS texture"},
+        {"qoif", 4, "a QOI image"},
+    };
+    for (size_t i = 0; i < sizeof images / sizeof images[0]; i++)
+        if (mote__starts_with(d, n, images[i].magic, images[i].len))
+            return images[i].kind;
+    if (n >= 12 && memcmp(d, "RIFF", 4) == 0 && memcmp(d + 8, "WEBP", 4) == 0)
+        return "a WebP image";
+    /* "BM", then the file size and two reserved 16-bit words, 0 */
+    if (n >= 26 && d[0] == 'B' && d[1] == 'M' && !(d[6] | d[7] | d[8] | d[9]))
+        return "a BMP image";
+    /* P1 to P7 and a white space */
+    if (n >= 3 && d[0] == 'P' && d[1] >= '1' && d[1] <= '7' &&
+        (d[2] == ' ' || d[2] == '\t' || d[2] == '\r' || d[2] == '\n'))
+        return "a PNM image";
+    return NULL;
+}
+
+static bool mote__is_space(unsigned char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
+/* The kind of Wavefront file d is, "a Wavefront OBJ file" or an MTL
+ * file, told by its first line that is neither blank nor a '#' comment
+ * (within 4 KiB); NULL: neither. */
+static const char *mote__obj_kind(const unsigned char *d, size_t n)
+{
+    static const char *const statements[] = {"v", "vt", "vn", "vp", "f", "l", "p", "o", "g",
+                                             "s", "mtllib", "usemtl"};
+    size_t end = n < 4096 ? n : 4096, i = 0;
+    while (i < end) {
+        while (i < end && mote__is_space(d[i]))
+            i++;
+        if (i < end && d[i] == '#') {
+            while (i < end && d[i] != '\n')
+                i++;
+            continue;
+        }
+        size_t word = i;
+        while (i < end && !mote__is_space(d[i]))
+            i++;
+        if (i >= end || (d[i] != ' ' && d[i] != '\t'))
+            return NULL;
+        if (i - word == 6 && memcmp(d + word, "newmtl", 6) == 0)
+            return "a Wavefront MTL file (an OBJ file's materials)";
+        for (size_t k = 0; k < sizeof statements / sizeof statements[0]; k++)
+            if (strlen(statements[k]) == i - word &&
+                memcmp(d + word, statements[k], i - word) == 0)
+                return "a Wavefront OBJ file";
+        return NULL;
+    }
+    return NULL;
+}
+
+/* The format of the n bytes d; *kind names an image's or an OBJ file's. */
+static mote__format mote__scene_format(const unsigned char *d, size_t n, const char **kind)
+{
+    *kind = mote__image_kind(d, n);
+    if (*kind)
+        return MOTE__FORMAT_IMAGE;
+    if (mote__starts_with(d, n, "glTF", 4))
+        return MOTE__FORMAT_GLB;
+    if (mote__starts_with(d, n, "version https://git-lfs", 23))
+        return MOTE__FORMAT_LFS_POINTER;
+    size_t i = mote__starts_with(d, n, "\xef\xbb\xbf", 3) ? 3 : 0;   /* a UTF-8 byte order mark */
+    while (i < n && mote__is_space(d[i]))
+        i++;
+    if (i == n || d[i] == '{' || d[i] == '[')
+        return MOTE__FORMAT_JSON;
+    *kind = mote__obj_kind(d, n);
+    return *kind ? MOTE__FORMAT_OBJ : MOTE__FORMAT_UNKNOWN;
+}
+
+/* The first bytes of d in hex, for a message. */
+static void mote__first_bytes(const unsigned char *d, size_t n, char *out, size_t out_size)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (size_t i = 0; i < n && i < 8 && used + 4 <= out_size; i++)
+        used += (size_t)snprintf(out + used, out_size - used, "%s%02x", i ? " " : "", d[i]);
+}
+
+/* The scene in data into ld->scene: a .babylon scene, or an error that
+ * says what else the file is. */
 static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, size_t size)
 {
+    const unsigned char *d = (const unsigned char *)data;
+    const char *kind;
+    char first[32];
+    switch (mote__scene_format(d, size, &kind)) {
+    case MOTE__FORMAT_JSON:
+        break;
+    case MOTE__FORMAT_GLB:
+        /* Here the glTF loader is to be called for a binary glTF. */
+        return mote__fail(ld, MOTE_ERR_UNSUPPORTED, "a binary glTF file (.glb), which mote does "
+                          "not read (it reads .babylon scenes)");
+    case MOTE__FORMAT_OBJ:
+        return mote__fail(ld, MOTE_ERR_UNSUPPORTED, "%s, which mote does not read (it reads "
+                          ".babylon scenes)", kind);
+    case MOTE__FORMAT_LFS_POINTER:
+        return mote__fail(ld, MOTE_ERR_IO, "a Git LFS pointer, not the file it stands for "
+                          "(git lfs pull fetches it)");
+    case MOTE__FORMAT_IMAGE:
+        return mote__fail(ld, MOTE_ERR_UNSUPPORTED, "%s, not a scene (images are the textures "
+                          "a scene names)", kind);
+    case MOTE__FORMAT_UNKNOWN:
+        mote__first_bytes(d, size, first, sizeof first);
+        return mote__fail(ld, MOTE_ERR_PARSE, "not a scene: neither .babylon JSON nor a format "
+                          "mote knows (it starts with bytes %s)", first);
+    }
     cJSON *root;
     MOTE__TRY(mote__json_parse(ld, data, size, &root));
-    mote_result r = mote__babylon_load(ld, root);
+    mote_result r;
+    const cJSON *gltf_version = mote__json_member(mote__json_member(root, "asset"), "version");
+    if (gltf_version) {
+        /* Here the glTF loader is to be called for a glTF JSON file. */
+        mote__quoted version = mote__quote(cJSON_IsString(gltf_version)
+                                               ? gltf_version->valuestring : "?");
+        r = mote__fail(ld, MOTE_ERR_UNSUPPORTED, "a glTF file (asset.version \"%s\"), which mote "
+                       "does not read (it reads .babylon scenes)", version.s);
+    } else {
+        r = mote__babylon_load(ld, root);
+    }
     cJSON_Delete(root);
     return r;
 }
 
-mote_result mote_scene_load_memory(const char *json, size_t size, const char *name,
+mote_result mote_scene_load_memory(const char *data, size_t size, const char *name,
                                    const char *base_dir, const mote_limits *limits,
                                    mote_scene *out, char *message, size_t message_size)
 {
@@ -28,14 +186,14 @@ mote_result mote_scene_load_memory(const char *json, size_t size, const char *na
         return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
                               "scene: no output scene given");
     memset(out, 0, sizeof *out);
-    if (!json && size > 0)
+    if (!data && size > 0)
         return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
-                              "scene: no JSON text given");
+                              "scene: no data given");
     mote__loader ld;
     mote_result r = mote__loader_begin(&ld, name, base_dir, limits, size, out, message,
                                        message_size);
     if (r == MOTE_OK)
-        r = mote__scene_from_bytes(&ld, json ? json : "", size);
+        r = mote__scene_from_bytes(&ld, data ? data : "", size);
     return mote__loader_end(&ld, r);
 }
 
