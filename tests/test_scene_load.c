@@ -103,6 +103,8 @@ void scene_load_should_name_an_image(void)
         {"P6\n1 1\n255\n\0\0\0", 14, "a PNM image"},
         {"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n", 34, "a Radiance HDR image"},
         {"RIFF\x1a\0\0\0WEBPVP8 ", 16, "a WebP image"},
+        /* no signature: told last, by stb_image's own test of its header */
+        {"\0\0\2\0\0\0\0\0\0\0\0\0\1\0\1\0\x18\0\0\0\xff", 21, "a TGA image"},
     };
     for (size_t i = 0; i < sizeof images / sizeof images[0]; i++)
         assert_refused(images[i].bytes, images[i].size, MOTE_ERR_UNSUPPORTED, images[i].says);

@@ -1,9 +1,9 @@
 /*
  * test_textures.c - textures of every format mote lets through to the
  * system stb_image, written here: the ordinary shapes of each still load to
- * the right pixels past mote's screen (src/io/texture_screen.c), and what
- * the screen pads or bounds does what it should. The crafted files that
- * reach stb_image's known faults, refused by the screen, are in
+ * the right pixels past mote's guard (src/io/stb_guard*.c), and what
+ * the guard pads or bounds does what it should. The crafted files that
+ * reach stb_image's known faults, refused by the guard, are in
  * tests/data/bad/ (make_stb_textures.py, EXPECTED.txt).
  */
 #include <mote/mote.h>
@@ -109,7 +109,7 @@ static void stb_sink(void *context, void *data, int size)
     put_all(context, data, (size_t)size);
 }
 
-/* Decodes the file through mote (screen and stb_image). */
+/* Decodes the file through mote (guard and stb_image). */
 static mote_texture load(const bytes *b)
 {
     mote_texture t;
@@ -631,7 +631,7 @@ void textures_should_load_bmp_tga_and_the_first_gif_frame(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
-/* ---- what the screen pads and bounds ----------------------------------- */
+/* ---- what the guard pads and bounds ------------------------------------ */
 
 /* Fills a stretch of the stack below this frame with 0x5a, where the
  * frames of the decode that follows will lie: stb_image's palettes are
@@ -716,11 +716,11 @@ void textures_should_refuse_more_pixels_than_stb_image_converts_safely(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
-/* A JPEG larger than the limits is refused by its size, before the screen
+/* A JPEG larger than the limits is refused by its size, before the guard
  * walks its scans a block at a time: a 65528 x 63738 header over 300
  * bytes took the fuzzer past its 15 s (tests/fuzz/regressions/texture).
  * Here the scan uses a Huffman table no DHT segment defines, which the
- * screen refuses when it walks the scan: a limit error shows it did not. */
+ * guard refuses when it walks the scan: a limit error shows it did not. */
 void textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans(void)
 {
     file.n = 0;
@@ -759,7 +759,7 @@ void textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans(void
         if (!small) {
             TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_LIMIT, r, msg);
             TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "20000 x 20000 is larger than the limit"), msg);
-        } else { /* the same file within the limits: the screen walks it and refuses */
+        } else { /* the same file within the limits: the guard walks it and refuses */
             TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_PARSE, r, msg);
             TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "which no DHT segment defines"), msg);
         }
@@ -769,7 +769,7 @@ void textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans(void
     }
 }
 
-/* The screen's own allocations (a copy of a PNG's IDAT data, its padded
+/* The guard's own allocations (a copy of a PNG's IDAT data, its padded
  * copies, a JPEG's tables) fail cleanly. */
 void textures_should_free_everything_when_each_allocation_fails(void)
 {
@@ -806,7 +806,7 @@ void textures_should_free_everything_when_each_allocation_fails(void)
             TEST_ASSERT_NULL(t.pixels);
             TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
         }
-        TEST_ASSERT_TRUE(failed >= 2); /* the screen's and the decode's */
+        TEST_ASSERT_TRUE(failed >= 2); /* the guard's and the decode's */
     }
 }
 

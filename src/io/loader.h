@@ -17,8 +17,9 @@
  *   matrix_fold.[ch]      right-handed files mirrored in z; a node's affine
  *                         matrix folded into the core's T R S
  *   babylon*.[ch]         the .babylon loader (docs/babylon.md)
- *   texture.c             images through stb_image (texture_screen.c: its
- *                         known faults kept from it)
+ *   texture.c             images through the system stb_image
+ *   stb_guard*.[ch]       stb_image's known faults kept from it (PNG and
+ *                         JPEG in files of their own)
  *   image_write.c         PNG and PPM output
  *   common.c, io_internal.h  allocator, messages, limits, file reading
  *

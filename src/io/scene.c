@@ -27,23 +27,26 @@ static bool mote__starts_with(const unsigned char *d, size_t n, const char *pref
     return n >= len && memcmp(d, prefix, len) == 0;
 }
 
-/* The kind of image d holds ("a PNG image"), by the signatures of the
- * formats stb_image and other tools read; NULL: none of them. */
-static const char *mote__image_kind(const unsigned char *d, size_t n)
+/* The kind of image d holds ("a PNG image"): a format stb_image reads,
+ * told as it tells them (but TGA, which has no signature: *tga), or one
+ * of a few others by their signatures; NULL: none of them. */
+static const char *mote__image_kind(const unsigned char *d, size_t n, bool *tga)
 {
+    static const char *const stb_kinds[] = {
+        [MOTE__IMAGE_PNG] = "a PNG image",
+        [MOTE__IMAGE_BMP] = "a BMP image",
+        [MOTE__IMAGE_GIF] = "a GIF image",
+        [MOTE__IMAGE_PSD] = "a Photoshop (PSD) image",
+        [MOTE__IMAGE_PIC] = "a Softimage PIC image",
+        [MOTE__IMAGE_JPEG] = "a JPEG image",
+        [MOTE__IMAGE_PNM] = "a PNM image",
+        [MOTE__IMAGE_HDR] = "a Radiance HDR image",
+    };
     static const struct {
         const char *magic;
         size_t len;
         const char *kind;
-    } images[] = {
-        {"\x89PNG\r\n\x1a\n", 8, "a PNG image"},
-        {"\xff\xd8\xff", 3, "a JPEG image"},
-        {"GIF87a", 6, "a GIF image"},
-        {"GIF89a", 6, "a GIF image"},
-        {"8BPS", 4, "a Photoshop (PSD) image"},
-        {"#?RADIANCE", 10, "a Radiance HDR image"},
-        {"#?RGBE", 6, "a Radiance HDR image"},
-        {"\x53\x80\xf6\x34", 4, "a Softimage PIC image"},
+    } others[] = {
         {"II*\0", 4, "a TIFF image"},
         {"MM\0*", 4, "a TIFF image"},
         {"\x76\x2f\x31\x01", 4, "an OpenEXR image"},
@@ -51,18 +54,15 @@ static const char *mote__image_kind(const unsigned char *d, size_t n)
         {"DDS ", 4, "a DDS texture"},
         {"qoif", 4, "a QOI image"},
     };
-    for (size_t i = 0; i < sizeof images / sizeof images[0]; i++)
-        if (mote__starts_with(d, n, images[i].magic, images[i].len))
-            return images[i].kind;
+    mote__image_format f = mote__stb_image_format(d, n);
+    *tga = f == MOTE__IMAGE_TGA;
+    if (f != MOTE__IMAGE_NONE && !*tga)
+        return stb_kinds[f];
+    for (size_t i = 0; i < sizeof others / sizeof others[0]; i++)
+        if (mote__starts_with(d, n, others[i].magic, others[i].len))
+            return others[i].kind;
     if (n >= 12 && memcmp(d, "RIFF", 4) == 0 && memcmp(d + 8, "WEBP", 4) == 0)
         return "a WebP image";
-    /* "BM", then the file size and two reserved 16-bit words, 0 */
-    if (n >= 26 && d[0] == 'B' && d[1] == 'M' && !(d[6] | d[7] | d[8] | d[9]))
-        return "a BMP image";
-    /* P1 to P7 and a white space */
-    if (n >= 3 && d[0] == 'P' && d[1] >= '1' && d[1] <= '7' &&
-        (d[2] == ' ' || d[2] == '\t' || d[2] == '\r' || d[2] == '\n'))
-        return "a PNM image";
     return NULL;
 }
 
@@ -106,7 +106,8 @@ static const char *mote__obj_kind(const unsigned char *d, size_t n)
 /* The format of the n bytes d; *kind names an image's or an OBJ file's. */
 static mote__format mote__scene_format(const unsigned char *d, size_t n, const char **kind)
 {
-    *kind = mote__image_kind(d, n);
+    bool tga;
+    *kind = mote__image_kind(d, n, &tga);
     if (*kind)
         return MOTE__FORMAT_IMAGE;
     if (mote__starts_with(d, n, "glTF", 4))
@@ -119,7 +120,11 @@ static mote__format mote__scene_format(const unsigned char *d, size_t n, const c
     if (i == n || d[i] == '{' || d[i] == '[')
         return MOTE__FORMAT_JSON;
     *kind = mote__obj_kind(d, n);
-    return *kind ? MOTE__FORMAT_OBJ : MOTE__FORMAT_UNKNOWN;
+    if (*kind)
+        return MOTE__FORMAT_OBJ;
+    /* last: stb_image takes for a TGA what no other test claims */
+    *kind = tga ? "a TGA image" : NULL;
+    return tga ? MOTE__FORMAT_IMAGE : MOTE__FORMAT_UNKNOWN;
 }
 
 /* The first bytes of d in hex, for a message. */
