@@ -1,13 +1,14 @@
 /*
- * test_scene_load.c - mote_scene_load tells a file's format by its bytes,
- * whatever its name: .babylon JSON loads, and anything else fails with a
- * message that says what it is, leaving the scene zeroed and nothing
- * allocated.
+ * test_scene.c - src/io/scene.c: mote_scene_load tells a file's format by
+ * its bytes, whatever its name (.babylon JSON loads, anything else fails
+ * with a message that says what it is, leaving the scene zeroed and
+ * nothing allocated), and mote_scene_frame frames a scene.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
 #include "io/io_internal.h"
+#include "support/io_test.h"
 #include "unity.h"
 
 #include <stdio.h>
@@ -186,6 +187,36 @@ void scene_load_should_go_by_the_bytes_not_the_file_name(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+void frame_should_look_at_the_box_from_the_front_top_right_without_a_camera(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"m\",\"positions\":[-1,-1,-1, 1,1,1, 1,-1,1],"
+                    "\"indices\":[0,1,2]}]}";
+    mote_scene s;
+    io_load_json(j, "f", &s);
+    TEST_ASSERT_FALSE(s.has_camera);
+    TEST_ASSERT_EQUAL(0, s.light_count);
+    mote_frame_desc f;
+    mote_scene_frame(&s, 4.0f / 3.0f, &f);
+    ASSERT_VEC3(0.0f, 0.0f, 0.0f, f.camera.target, 0.0f);
+    const float *p = f.camera.position;
+    float dist = sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    float radius = sqrtf(3.0f);
+    /* from the direction (1, 0.6, -1.4) */
+    float dir[3] = {p[0] / dist, p[1] / dist, p[2] / dist};
+    ASSERT_VEC3(1.0f / 1.8220867f, 0.6f / 1.8220867f, -1.4f / 1.8220867f, dir, 1e-6f);
+    /* the bounding sphere fits the vertical fov: sin(fov/2) >= r / dist */
+    TEST_ASSERT_EQUAL_FLOAT(0.8f, f.camera.fov);
+    TEST_ASSERT_TRUE(radius / dist <= sinf(0.4f));
+    TEST_ASSERT_TRUE(radius / dist > sinf(0.4f) * 0.7f);
+    TEST_ASSERT_TRUE(f.camera.znear > 0.0f && f.camera.znear < dist - radius);
+    TEST_ASSERT_TRUE(f.camera.zfar > dist + radius);
+    /* one point light above the camera */
+    TEST_ASSERT_EQUAL(1, f.light_count);
+    TEST_ASSERT_EQUAL(MOTE_LIGHT_POINT, f.lights[0].type);
+    ASSERT_VEC3(p[0], p[1] + radius, p[2], f.lights[0].position, 1e-5f);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -198,5 +229,6 @@ int main(void)
     RUN_TEST(scene_load_should_keep_the_json_messages_for_json);
     RUN_TEST(scene_load_should_load_babylon_json_whatever_its_keys);
     RUN_TEST(scene_load_should_go_by_the_bytes_not_the_file_name);
+    RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
     return UNITY_END();
 }
