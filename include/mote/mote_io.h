@@ -94,45 +94,36 @@ typedef struct mote_scene {
     int texture_count;
     mote_camera camera;           /* the scene's active camera, if has_camera */
     bool has_camera;
-    /* The camera's fovMode is 1 (Babylon.js's FOVMODE_HORIZONTAL_FIXED):
-     * camera.fov is the horizontal field of view, which mote_scene_frame
+    /* camera.fov is the horizontal field of view, which mote_scene_frame
      * turns into the vertical one for its aspect ratio. */
     bool camera_fov_is_horizontal;
     mote_light lights[MOTE_MAX_LIGHTS];
     int light_count;
     bool has_lights;              /* the file lists lights, perhaps all disabled */
-    /* The scene's ambientColor. Babylon.js adds it times each material's
-     * ambient colour (black by default) to the lit colour, untinted: the
-     * loader folds that into the materials' emissive colours, so
-     * mote_scene_frame leaves the frame's ambient (which mote multiplies
-     * by the material colour) at 0. */
+    /* The scene's ambient colour. The materials' emissive colours already
+     * hold what it adds (docs/babylon.md, Materials), so mote_scene_frame
+     * leaves the frame's ambient at 0. */
     float ambient[3];
     mote_rgba clear_color;
     /* world space, over the meshes not hidden, each level-of-detail group
      * counted by its base, as if the camera were near */
     float bounds_min[3], bounds_max[3];
-    /* The file says useRightHandedSystem: Babylon.js draws it right-handed,
-     * and mote's core is left-handed, so it was loaded mirrored in z: a
-     * point (x, y, z) of the file is (x, y, -z) here (meshes, camera and
-     * lights alike, triangles' winding reversed to keep their front faces),
-     * which draws the image Babylon.js draws. A camera of the caller's,
-     * given in the file's coordinates, needs its z negated too. */
+    /* The file is right-handed and was loaded mirrored in z, as mote's core
+     * is left-handed: a point (x, y, z) of the file is (x, y, -z) here, and
+     * a camera of the caller's, given in the file's coordinates, needs its
+     * z negated too (docs/babylon.md, Winding and right-handed scenes). */
     bool mirrored_z;
     /* Non-fatal notes (downgraded textures, ...), "; " between them: each
      * distinct one once, " (x12)" after one given 12 times, and "; N more
      * warnings" for those that do not fit. */
     char warning[256];
-    /* One flag per mesh (mesh_count): its material says backFaceCulling
-     * false, so Babylon.js draws both of its sides. The core's culling is a
-     * per-draw option (mote_draw_desc.cull), not a material property:
-     * mote_scene_draw_desc applies these. */
+    /* One flag per mesh (mesh_count): drawn with both sides (its material
+     * says so). The core's culling is a draw option (mote_draw_desc.cull),
+     * not a material property: mote_scene_draw_desc applies these. */
     const bool *two_sided;
-    /* One flag per mesh: its material says disableLighting (or a PBR
-     * material unlit), so Babylon.js draws it without lights: the material
-     * colour is then clamp(emissive + ambient x the scene's ambient colour)
-     * (a PBR material's: its albedo), and mote_scene_draw_desc sets
-     * mote_draw_desc.unlit, which draws that colour x texture x vertex
-     * colour, as Babylon.js does. */
+    /* One flag per mesh: drawn without lights, in its material colour x
+     * texture x vertex colour (its material says so);
+     * mote_scene_draw_desc sets mote_draw_desc.unlit for these. */
     const bool *unlit;
     /* The groups of meshes of which one is drawn by the camera's distance
      * (Babylon.js's levels of detail). mote_scene_load chooses for the

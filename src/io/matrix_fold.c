@@ -2,9 +2,8 @@
  * matrix_fold.c - node transforms for the loaders (matrix_fold.h): the
  * mirroring of right-handed files, and affine matrices folded into T R S
  * through a 3x3 SVD. The fold is worked in double, not with cglm's float
- * mat4 (mul, inv, quat): that rounds differently, moving the folded
- * transforms of sheared pivots by an ulp, and its SIMD and scalar builds
- * sum in different orders.
+ * mat4 (mul, inv, quat): float rounding would change the folded
+ * transforms, and cglm's SIMD and scalar builds sum in different orders.
  */
 #include "matrix_fold.h"
 
