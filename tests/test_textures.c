@@ -1,14 +1,15 @@
 /*
  * test_textures.c - textures of every format mote lets through to the
  * system stb_image, written here: the ordinary shapes of each still load to
- * the right pixels past mote's screen (src/io/texture_screen.c), and what
- * the screen pads or bounds does what it should. The crafted files that
- * reach stb_image's known faults, refused by the screen, are in
+ * the right pixels past mote's guard (src/io/stb_guard*.c), and what
+ * the guard pads or bounds does what it should. The crafted files that
+ * reach stb_image's known faults, refused by the guard, are in
  * tests/data/bad/ (make_stb_textures.py, EXPECTED.txt).
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
 #include "io/io_internal.h"
+#include "support/io_test.h"
 #include "unity.h"
 
 #include <limits.h>
@@ -109,7 +110,7 @@ static void stb_sink(void *context, void *data, int size)
     put_all(context, data, (size_t)size);
 }
 
-/* Decodes the file through mote (screen and stb_image). */
+/* Decodes the file through mote (guard and stb_image). */
 static mote_texture load(const bytes *b)
 {
     mote_texture t;
@@ -631,7 +632,7 @@ void textures_should_load_bmp_tga_and_the_first_gif_frame(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
-/* ---- what the screen pads and bounds ----------------------------------- */
+/* ---- what the guard pads and bounds ------------------------------------ */
 
 /* Fills a stretch of the stack below this frame with 0x5a, where the
  * frames of the decode that follows will lie: stb_image's palettes are
@@ -716,11 +717,11 @@ void textures_should_refuse_more_pixels_than_stb_image_converts_safely(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
-/* A JPEG larger than the limits is refused by its size, before the screen
+/* A JPEG larger than the limits is refused by its size, before the guard
  * walks its scans a block at a time: a 65528 x 63738 header over 300
  * bytes took the fuzzer past its 15 s (tests/fuzz/regressions/texture).
  * Here the scan uses a Huffman table no DHT segment defines, which the
- * screen refuses when it walks the scan: a limit error shows it did not. */
+ * guard refuses when it walks the scan: a limit error shows it did not. */
 void textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans(void)
 {
     file.n = 0;
@@ -759,7 +760,7 @@ void textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans(void
         if (!small) {
             TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_LIMIT, r, msg);
             TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "20000 x 20000 is larger than the limit"), msg);
-        } else { /* the same file within the limits: the screen walks it and refuses */
+        } else { /* the same file within the limits: the guard walks it and refuses */
             TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_PARSE, r, msg);
             TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "which no DHT segment defines"), msg);
         }
@@ -769,7 +770,7 @@ void textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans(void
     }
 }
 
-/* The screen's own allocations (a copy of a PNG's IDAT data, its padded
+/* The guard's own allocations (a copy of a PNG's IDAT data, its padded
  * copies, a JPEG's tables) fail cleanly. */
 void textures_should_free_everything_when_each_allocation_fails(void)
 {
@@ -806,8 +807,85 @@ void textures_should_free_everything_when_each_allocation_fails(void)
             TEST_ASSERT_NULL(t.pixels);
             TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
         }
-        TEST_ASSERT_TRUE(failed >= 2); /* the screen's and the decode's */
+        TEST_ASSERT_TRUE(failed >= 2); /* the guard's and the decode's */
     }
+}
+
+/* ---- mote_texture_load --------------------------------------------------- */
+
+void texture_should_round_trip_a_png_exactly(void)
+{
+    enum { TW = 7, TH = 5 };
+    uint8_t px[TW * TH * 4];
+    for (int i = 0; i < TW * TH * 4; i++)
+        px[i] = (uint8_t)(i * 37 + 11);
+    const char *path = io_tmp_path("round.png");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_rgba(path, px, TW, TH, 0, msg, sizeof msg), msg);
+    mote_texture t;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_texture_load(path, NULL, &t, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(TW, t.width);
+    TEST_ASSERT_EQUAL(TH, t.height);
+    TEST_ASSERT_EQUAL(MOTE_FORMAT_RGBA8888, t.format);
+    TEST_ASSERT_EQUAL(TW * 4, t.stride);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, t.pixels, TW * TH * 4);
+    mote_texture_free(&t);
+    TEST_ASSERT_NULL(t.pixels);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+void texture_should_refuse_dimensions_over_the_limit_before_decoding(void)
+{
+    uint8_t px[16 * 4 * 4];
+    memset(px, 200, sizeof px);
+    const char *path = io_tmp_path("wide.png");
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(path, px, 16, 4, 0, msg, sizeof msg));
+    mote_limits lim = mote_limits_default();
+    lim.max_texture_width = 8;
+    mote_texture t;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_texture_load(path, &lim, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL(strstr(msg, "16 x 4 is larger than the limit of 8 x 16384"));
+    TEST_ASSERT_NULL(t.pixels);
+    lim = mote_limits_default();
+    lim.max_texture_bytes = 16 * 4 * 4 - 1;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_texture_load(path, &lim, &t, msg, sizeof msg));
+    lim = mote_limits_default();
+    lim.max_file_bytes = 10;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, mote_texture_load(path, &lim, &t, msg, sizeof msg));
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_texture_load(io_tmp_path("none.png"), NULL, &t, msg,
+                                                     sizeof msg));
+    TEST_ASSERT_EQUAL(MOTE_ERR_PARSE, mote_texture_load_memory("not an image", 12, NULL, &t,
+                                                               msg, sizeof msg));
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+/* The decoders of Debian's stb_image 2.27 that have known faults are not
+ * run: a truncated run-length HDR scanline looped for ever in
+ * stbi_load_from_memory (CVE-2021-42715), and a 16-bit PGM was read past
+ * the end of its buffer (CVE-2021-42716). An 8-bit PPM, as mote writes
+ * them, still loads. */
+void texture_should_refuse_the_hdr_and_16_bit_pnm_that_stb_mishandles(void)
+{
+    mote_texture t;
+    /* the PNM first: without the check it fails here, not in a loop */
+    unsigned char pgm[64] = "P5\n4 4\n65535\n";
+    size_t head = strlen((const char *)pgm);
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED,
+                      mote_texture_load_memory(pgm, head + 4 * 4 * 2, NULL, &t, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "16-bit PNM"), msg);
+    TEST_ASSERT_NULL(t.pixels);
+    static const char hdr[] = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n\x02\x02\x00\x08";
+    TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_texture_load_memory(hdr, sizeof hdr - 1, NULL, &t,
+                                                                     msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "Radiance HDR"), msg);
+    TEST_ASSERT_NULL(t.pixels);
+    static const uint8_t px[2 * 4] = {10, 20, 30, 255, 40, 50, 60, 255};
+    const char *path = io_tmp_path("eight.ppm");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_rgba(path, px, 2, 1, 0, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_texture_load(path, NULL, &t, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(2, t.width);
+    TEST_ASSERT_EQUAL_UINT8_ARRAY(px, t.pixels, sizeof px);
+    mote_texture_free(&t);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
 int main(void)
@@ -820,5 +898,8 @@ int main(void)
     RUN_TEST(textures_should_refuse_more_pixels_than_stb_image_converts_safely);
     RUN_TEST(textures_should_refuse_a_jpeg_over_the_limits_before_walking_its_scans);
     RUN_TEST(textures_should_free_everything_when_each_allocation_fails);
+    RUN_TEST(texture_should_round_trip_a_png_exactly);
+    RUN_TEST(texture_should_refuse_dimensions_over_the_limit_before_decoding);
+    RUN_TEST(texture_should_refuse_the_hdr_and_16_bit_pnm_that_stb_mishandles);
     return UNITY_END();
 }

@@ -94,45 +94,36 @@ typedef struct mote_scene {
     int texture_count;
     mote_camera camera;           /* the scene's active camera, if has_camera */
     bool has_camera;
-    /* The camera's fovMode is 1 (Babylon.js's FOVMODE_HORIZONTAL_FIXED):
-     * camera.fov is the horizontal field of view, which mote_scene_frame
+    /* camera.fov is the horizontal field of view, which mote_scene_frame
      * turns into the vertical one for its aspect ratio. */
     bool camera_fov_is_horizontal;
     mote_light lights[MOTE_MAX_LIGHTS];
     int light_count;
     bool has_lights;              /* the file lists lights, perhaps all disabled */
-    /* The scene's ambientColor. Babylon.js adds it times each material's
-     * ambient colour (black by default) to the lit colour, untinted: the
-     * loader folds that into the materials' emissive colours, so
-     * mote_scene_frame leaves the frame's ambient (which mote multiplies
-     * by the material colour) at 0. */
+    /* The scene's ambient colour. The materials' emissive colours already
+     * hold what it adds (docs/babylon.md, Materials), so mote_scene_frame
+     * leaves the frame's ambient at 0. */
     float ambient[3];
     mote_rgba clear_color;
     /* world space, over the meshes not hidden, each level-of-detail group
      * counted by its base, as if the camera were near */
     float bounds_min[3], bounds_max[3];
-    /* The file says useRightHandedSystem: Babylon.js draws it right-handed,
-     * and mote's core is left-handed, so it was loaded mirrored in z: a
-     * point (x, y, z) of the file is (x, y, -z) here (meshes, camera and
-     * lights alike, triangles' winding reversed to keep their front faces),
-     * which draws the image Babylon.js draws. A camera of the caller's,
-     * given in the file's coordinates, needs its z negated too. */
+    /* The file is right-handed and was loaded mirrored in z, as mote's core
+     * is left-handed: a point (x, y, z) of the file is (x, y, -z) here, and
+     * a camera of the caller's, given in the file's coordinates, needs its
+     * z negated too (docs/babylon.md, Winding and right-handed scenes). */
     bool mirrored_z;
     /* Non-fatal notes (downgraded textures, ...), "; " between them: each
      * distinct one once, " (x12)" after one given 12 times, and "; N more
      * warnings" for those that do not fit. */
     char warning[256];
-    /* One flag per mesh (mesh_count): its material says backFaceCulling
-     * false, so Babylon.js draws both of its sides. The core's culling is a
-     * per-draw option (mote_draw_desc.cull), not a material property:
-     * mote_scene_draw_desc applies these. */
+    /* One flag per mesh (mesh_count): drawn with both sides (its material
+     * says so). The core's culling is a draw option (mote_draw_desc.cull),
+     * not a material property: mote_scene_draw_desc applies these. */
     const bool *two_sided;
-    /* One flag per mesh: its material says disableLighting (or a PBR
-     * material unlit), so Babylon.js draws it without lights: the material
-     * colour is then clamp(emissive + ambient x the scene's ambient colour)
-     * (a PBR material's: its albedo), and mote_scene_draw_desc sets
-     * mote_draw_desc.unlit, which draws that colour x texture x vertex
-     * colour, as Babylon.js does. */
+    /* One flag per mesh: drawn without lights, in its material colour x
+     * texture x vertex colour (its material says so);
+     * mote_scene_draw_desc sets mote_draw_desc.unlit for these. */
     const bool *unlit;
     /* The groups of meshes of which one is drawn by the camera's distance
      * (Babylon.js's levels of detail). mote_scene_load chooses for the
@@ -143,34 +134,20 @@ typedef struct mote_scene {
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
-/* Loads a .babylon file, either layout: the legacy interleaved `vertices`
- * (stride 6/8/10 by uvCount) or the current `positions`/`normals`/`uvs`/
- * `colors` (4 or 3 floats per vertex, 0..1, into mote_mesh.colors).
- * Textures resolve relative to the scene's folder. limits may be NULL.
- * A mesh with isVisible false, or isEnabled false on it or a parent, loads
- * hidden (mote_mesh.hidden); a numeric parentId names a node's uniqueId
- * (current Babylon.js); a texture's invertY says whether v = 0 is its
- * bottom row (unsaid: the bottom row, but the top one in legacy files).
- * A mesh's instances become meshes of their own after the file's meshes
- * and transform nodes, sharing its arrays and material. Materials resolve
- * by materialUniqueId, then materialId (the last of equal ids); a texture
- * with coordinatesIndex 1 samples uvs2; backFaceCulling false fills
- * two_sided, disableLighting unlit; images may be embedded as base64
- * data: URLs (base64String, or name). A right-handed file
- * (useRightHandedSystem) loads mirrored in z (mirrored_z); a mesh whose
- * side orientation (its own or its material's) turns its front faces
- * round gets its triangles flipped. A mesh's thinInstances (matrixData,
- * 16 numbers each, and instancesCount) become meshes of their own after
- * the instances, each at the mesh's world matrix times its matrix,
- * sharing the mesh's arrays; the mesh itself, and its instances, are then
- * not drawn, as in Babylon.js. A mesh's lodMeshIds with lodDistances
- * make a level-of-detail group (mote_scene.lods): the levels are drawn at
- * the base's world matrix, never by themselves. */
+/* Loads a scene file. Its format is told by its bytes, whatever its
+ * name: a .babylon scene (Babylon.js's JSON, either layout; what is read,
+ * and how, is docs/babylon.md) loads; anything else fails saying what it
+ * is: MOTE_ERR_UNSUPPORTED for a glTF file (JSON or binary), a Wavefront
+ * OBJ file or an image, MOTE_ERR_IO for a Git LFS pointer in place of the
+ * file, MOTE_ERR_PARSE for none of these. Textures resolve relative to
+ * the scene's folder. limits may be NULL. On failure *out is zeroed and
+ * the message names the file and the place. */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
-/* The same from memory; base_dir resolves texture names (NULL: no textures
- * are loaded, materials keep their colour); name is used in messages. */
-mote_result mote_scene_load_memory(const char *json, size_t size, const char *name,
+/* The same from size bytes of memory; base_dir resolves texture names
+ * (NULL: no textures are loaded, materials keep their colour); name is
+ * used in messages. */
+mote_result mote_scene_load_memory(const char *data, size_t size, const char *name,
                                    const char *base_dir, const mote_limits *limits,
                                    mote_scene *out, char *message, size_t message_size);
 void mote_scene_free(mote_scene *scene);

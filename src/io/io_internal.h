@@ -62,20 +62,31 @@ mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *l
                                            mote_texture *out, char *message,
                                            size_t message_size);
 
-/* Looks at an image's bytes as the system stb_image will read them, before
- * it does (texture_screen.c): refuses those that reach its known faults
- * (MOTE_ERR_PARSE with a message), and where its palette lookups would read
- * uninitialised memory, makes a copy padded with black entries (*fixed,
- * from mote__io_malloc, *fixed_size bytes; NULL when the bytes are fine as
- * they are) to be decoded in their place. An image larger than *limits
- * allow (mote__texture_over_limits) is passed unlooked-at: the decode
- * refuses it by its size, and its scans could take long to walk. */
 /* Whether w x h pixels are more than *limits allow: the decode refuses
  * every such image by its size, before stb_image decodes it. */
 bool mote__texture_over_limits(const mote_limits *limits, size_t w, size_t h);
 
-mote_result mote__texture_screen(const unsigned char *data, size_t size, const mote_limits *limits,
-                                 unsigned char **fixed, size_t *fixed_size, char *message,
-                                 size_t message_size);
+/* The image format stb_image takes size bytes for: its tests in its order
+ * (PNG, BMP, GIF, PSD, PIC, JPEG, PNM, HDR, TGA), the first that passes
+ * (stb_guard.c). */
+typedef enum mote__image_format {
+    MOTE__IMAGE_NONE, MOTE__IMAGE_PNG, MOTE__IMAGE_BMP, MOTE__IMAGE_GIF, MOTE__IMAGE_PSD,
+    MOTE__IMAGE_PIC, MOTE__IMAGE_JPEG, MOTE__IMAGE_PNM, MOTE__IMAGE_HDR, MOTE__IMAGE_TGA
+} mote__image_format;
+
+mote__image_format mote__stb_image_format(const unsigned char *data, size_t size);
+
+/* The guard of the system stb_image (stb_guard.c): looks at an image's
+ * bytes as stb_image will read them, before it does, and refuses those
+ * that reach its known faults (MOTE_ERR_PARSE with a message); where its
+ * palette lookups would read uninitialised memory, makes a copy padded
+ * with black entries (*fixed, from mote__io_malloc, *fixed_size bytes;
+ * NULL when the bytes are fine as they are) to be decoded in their place.
+ * An image larger than *limits allow (mote__texture_over_limits) is
+ * passed unlooked-at: the decode refuses it by its size, and its scans
+ * could take long to walk. */
+mote_result mote__stb_guard(const unsigned char *data, size_t size, const mote_limits *limits,
+                            unsigned char **fixed, size_t *fixed_size, char *message,
+                            size_t message_size);
 
 #endif

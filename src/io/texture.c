@@ -1,8 +1,8 @@
 /*
  * texture.c - images to RGBA8888 textures through stb_image (the
- * implementation comes from Debian's libstb). The bytes are first screened
+ * implementation comes from Debian's libstb). The bytes are first checked
  * for the constructs that reach that stb_image's known faults
- * (texture_screen.c); the header is then read with stbi_info_from_memory so
+ * (stb_guard.c); the header is then read with stbi_info_from_memory so
  * that a file claiming 100000 x 100000 pixels is refused before anything is
  * decoded. Images embedded in scene files as
  * base64 data: URLs (Babylon.js's SceneSerializer) are decoded here too and
@@ -59,8 +59,8 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
                               lim.max_texture_height);
     unsigned char *fixed = NULL;
     size_t fixed_size = 0;
-    mote_result r = mote__texture_screen(data, size, &lim, &fixed, &fixed_size, message,
-                                         message_size);
+    mote_result r = mote__stb_guard(data, size, &lim, &fixed, &fixed_size, message,
+                                    message_size);
     if (r != MOTE_OK)
         return r;
     if (fixed && fixed_size > (size_t)INT_MAX)
@@ -79,9 +79,9 @@ bool mote__texture_over_limits(const mote_limits *limits, size_t w, size_t h)
            (h > 0 && w > limits->max_texture_bytes / 4 / h);
 }
 
-/* The decode proper, once mote__texture_screen has passed the bytes. Its
- * size checks refuse whatever mote__texture_over_limits says is over (the
- * screen counts on it). */
+/* The decode proper, once mote__stb_guard has passed the bytes. Its size
+ * checks refuse whatever mote__texture_over_limits says is over (the
+ * guard counts on it). */
 static mote_result mote__texture_decode(const unsigned char *d, size_t size,
                                         const mote_limits *limits, mote_texture *out,
                                         char *message, size_t message_size)

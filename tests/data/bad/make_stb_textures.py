@@ -4,7 +4,7 @@ the system stb_image (Debian 12's libstb: stb_image 2.27 with upstream fixes
 to September 2022), and a scene naming each (texture_stb_*.babylon).
 
 Every byte is made here, for mote; none comes from a published proof of
-concept. src/io/texture_screen.c refuses (or pads) each before stb_image
+concept. src/io/stb_guard*.c refuses (or pads) each before stb_image
 sees it; EXPECTED.txt says what each must give, and tests/valgrind.sh runs
 mote-render on every scene under memcheck against the real library.
 

@@ -1,5 +1,5 @@
 /*
- * test_loader_errors.c - malformed scenes must fail with the right code and
+ * test_babylon_errors.c - malformed scenes must fail with the right code and
  * a message that says where, free everything and leave the scene zeroed.
  * The corpus is tests/data/bad/: EXPECTED.txt pairs each file with its
  * result code and a message substring. Every load is also repeated with

@@ -1,5 +1,5 @@
 /*
- * test_loader_transforms.c - how the .babylon loader places things, where
+ * test_babylon_transforms.c - how the .babylon loader places things, where
  * Babylon.js's rules are more than position, rotation and scaling: a
  * right-handed scene (useRightHandedSystem), loaded mirrored in z so that
  * mote's left-handed core draws what Babylon.js draws, and pivot and local

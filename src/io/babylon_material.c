@@ -1,0 +1,346 @@
+/*
+ * babylon_material.c - a .babylon file's materials and multi-materials:
+ * colours, textures, culling and lighting flags, resolved for each mesh.
+ */
+#include "babylon.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* A material's texture: how it maps (scales, offsets, invertY, uv set,
+ * wrap) and its image, a file named by "name", or a base64 data: URL in
+ * "base64String" (Babylon.js's SceneSerializer; "name" is then no file)
+ * or in "name" itself (mote__scene_texture). A texture without a name is
+ * none. */
+static mote_result mote__material_texture(mote__babylon *bl, const cJSON *tex, const char *at,
+                                          mote__mat *mm)
+{
+    mote_material *m = &mm->material;
+    MOTE__TRY(mote__json_object(bl->load, tex, at));
+    const char *name, *embedded;
+    MOTE__TRY(mote__json_string(bl->load, tex, "name", at, &name));
+    MOTE__TRY(mote__json_string(bl->load, tex, "base64String", at, &embedded));
+    /* Texture.Parse makes no texture of one without a name (null, absent
+     * or ""), base64String or not: old 3ds Max exports write "name": null
+     * for a map without a bitmap, and Babylon.js draws the material's
+     * colour alone */
+    if (!name || !name[0])
+        return MOTE_OK;
+    const char *key = embedded ? "base64String" : "name";
+    if (!embedded && mote__io_is_data_url(name))
+        embedded = name;
+    m->u_scale = 1.0f;
+    m->v_scale = 1.0f;
+    MOTE__TRY(mote__json_number(bl->load, tex, "uScale", at, &m->u_scale));
+    MOTE__TRY(mote__json_number(bl->load, tex, "vScale", at, &m->v_scale));
+    MOTE__TRY(mote__json_number(bl->load, tex, "uOffset", at, &m->u_offset));
+    MOTE__TRY(mote__json_number(bl->load, tex, "vOffset", at, &m->v_offset));
+    if (mote__json_get(tex, "invertY")) {
+        bool inv = true;
+        MOTE__TRY(mote__json_flag(bl->load, tex, "invertY", at, &inv));
+        mm->invert_y = inv;
+    }
+    /* which uv set the texture samples: uvs (0) or uvs2 (1); Babylon.js
+     * has more (uvs3...), which mote does not read */
+    uint32_t ci = 0;
+    MOTE__TRY(mote__json_uint_member(bl->load, tex, "coordinatesIndex", at, 5, &ci));
+    if (ci) {
+        if (ci > 1)
+            mote__warn(bl->load,
+                       "%s.coordinatesIndex: %u: only uvs and uvs2 are read; uvs are used", at,
+                       (unsigned)ci);
+        mm->uv2 = ci == 1;
+        bl->any_uv2 = bl->any_uv2 || mm->uv2;
+    }
+    static const char *const wrap_keys[2] = {"wrapU", "wrapV"};
+    for (int k = 0; k < 2; k++) {
+        const cJSON *w = mote__json_get(tex, wrap_keys[k]);
+        mote_wrap mode = MOTE_WRAP_REPEAT;
+        if (cJSON_IsBool(w)) {
+            mode = cJSON_IsTrue(w) ? MOTE_WRAP_REPEAT : MOTE_WRAP_CLAMP;
+        } else if (w) {
+            char at2[176];
+            snprintf(at2, sizeof at2, "%s.%s", at, wrap_keys[k]);
+            uint32_t v;
+            MOTE__TRY(mote__json_uint(bl->load, w, at2, 0, 2, &v));
+            mode = v == 0 ? MOTE_WRAP_CLAMP : v == 1 ? MOTE_WRAP_REPEAT : MOTE_WRAP_MIRROR;
+        }
+        if (k == 0)
+            m->wrap_u = mode;
+        else
+            m->wrap_v = mode;
+    }
+    return mote__scene_texture(bl->load, at, key, name, embedded, m);
+}
+
+/* A colour's channels from 0..1 (clamped); alpha as it was. */
+static void mote__set_rgb(mote_rgba *out, const float c[3])
+{
+    out->r = mote__unit_byte(c[0]);
+    out->g = mote__unit_byte(c[1]);
+    out->b = mote__unit_byte(c[2]);
+}
+
+/* A material's colour from 0..1 channels (clamped). */
+static void mote__set_color(mote_material *mat, const float c[3])
+{
+    mote__set_rgb(&mat->color, c);
+    mat->color.a = 255;
+    mat->color_set = true;
+}
+
+/* Babylon.js's StandardMaterial draws clamp(lights x diffuse + emissive +
+ * ambient x the scene's ambient colour) x texture x vertex colour: mote's
+ * lit colour (mote.h, Lighting) with the last two sums as the material's
+ * emissive colour. So the scene's ambient colour is taken in here, and
+ * mote_scene_frame leaves the frame's (which mote multiplies by the
+ * diffuse colour) at 0: a material without an ambient colour (Babylon.js's
+ * default is black) gets none of it. With disableLighting Babylon.js binds
+ * no lights, so those two alone, clamped, multiply the texture and the
+ * vertex colours: exactly mote's unlit draw with that as the material
+ * colour. A PBR material's unlit shows its albedo as it is. */
+static mote_result mote__emissive(mote__babylon *bl, const cJSON *m, const char *at, mote__mat *mm)
+{
+    float emissive[3] = {0, 0, 0}, ambient[3] = {0, 0, 0};
+    const char *key = mote__json_get(m, "emissiveColor") && !mote__json_get(m, "emissive")
+                          ? "emissiveColor"
+                          : "emissive";
+    MOTE__TRY(mote__json_floats(bl->load, m, key, at, 3, 4, emissive));
+    MOTE__TRY(mote__json_floats(bl->load, m, "ambient", at, 3, 4, ambient));
+    /* an emissive texture (one with a name: Texture.Parse makes none
+     * otherwise) adds its colour, lit or not, as no mote draw can: named,
+     * as a glowing colour is (Maya's incandescence map is one) */
+    const cJSON *glow = mote__json_get(m, "emissiveTexture");
+    const cJSON *glow_name = cJSON_IsObject(glow) ? mote__json_get(glow, "name") : NULL;
+    if (cJSON_IsString(glow_name) && glow_name->valuestring[0])
+        mote__warn(bl->load,
+                   "%s.emissiveTexture: \"%s\" is not drawn (mote adds no texture's light "
+                   "to a material)",
+                   at, mote__quote(glow_name->valuestring).s);
+    bool pbr_unlit = false;
+    MOTE__TRY(mote__json_flag(bl->load, m, "unlit", at, &pbr_unlit));
+    if (pbr_unlit) {
+        mm->unlit = true;
+        return MOTE_OK;
+    }
+    float c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = emissive[k] + ambient[k] * bl->load->scene->ambient[k];
+    if (mm->unlit) {
+        mote__set_color(&mm->material, c);
+        return MOTE_OK;
+    }
+    mote__set_rgb(&mm->material.emissive, c);
+    return MOTE_OK;
+}
+
+mote_result mote__babylon_materials(mote__babylon *bl)
+{
+    const cJSON *list;
+    MOTE__TRY(mote__json_array(bl->load, bl->root, "materials", "", &list));
+    size_t n = mote__json_length(list);
+    MOTE__TRY(mote__check_count(bl->load, "materials", n, "materials", bl->load->lim.max_meshes));
+    bl->mats = mote__store_alloc(&bl->load->tmp, n, sizeof *bl->mats);
+    if (!bl->mats)
+        return mote__oom(bl->load, "materials");
+    /* one texture per material at most */
+    MOTE__TRY(mote__texture_slots(bl->load, n, "materials"));
+    int i = 0;
+    for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
+        char at[64];
+        snprintf(at, sizeof at, "materials[%d]", i);
+        MOTE__TRY(mote__json_object(bl->load, m, at));
+        mote__mat *mm = &bl->mats[i];
+        mm->invert_y = -1;
+        MOTE__TRY(mote__json_string(bl->load, m, "id", at, &mm->id));
+        if (!mm->id)
+            MOTE__TRY(mote__json_string(bl->load, m, "name", at, &mm->id));
+        if (!mm->id)
+            return mote__fail(bl->load, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        MOTE__TRY(mote__babylon_number_text(bl, m, "uniqueId", at, &mm->unique_id));
+        bl->mat_count = i + 1;
+    }
+    int dup, unused;
+    bl->mat_map = mote__idmap_build(bl, &bl->mats[0].id, sizeof *bl->mats, bl->mat_count, &dup);
+    bl->mat_unique_map = mote__idmap_build(bl, &bl->mats[0].unique_id, sizeof *bl->mats,
+                                           bl->mat_count, &unused);
+    if (!bl->mat_map || !bl->mat_unique_map)
+        return mote__oom(bl->load, "materials");
+    if (dup >= 0)
+        mote__warn(bl->load, "materials[%d]: id \"%s\" is used before; the last one is kept", dup,
+                   mote__quote(bl->mats[dup].id).s);
+    i = 0;
+    for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
+        char at[64];
+        snprintf(at, sizeof at, "materials[%d]", i);
+        mote__mat *mm = &bl->mats[i];
+        /* shadowed by a later one of the same id, and not reachable by a
+         * uniqueId: never used, so its texture is not loaded */
+        if (mote__idmap_find_last(bl->mat_map, mm->id) != i && !mm->unique_id)
+            continue;
+        /* other types (the materials library's sky, grid, water..., node
+         * materials) draw by rules of their own */
+        const cJSON *type = mote__json_get(m, "customType");
+        static const char *const read_types[4] = {
+            "BABYLON.StandardMaterial", "BABYLON.PBRMaterial",
+            "BABYLON.PBRMetallicRoughnessMaterial", "BABYLON.PBRSpecularGlossinessMaterial"};
+        bool read_type = !cJSON_IsString(type);
+        for (int k = 0; k < 4 && !read_type; k++)
+            read_type = strcmp(type->valuestring, read_types[k]) == 0;
+        if (!read_type)
+            mote__warn(bl->load,
+                       "%s: customType \"%s\" is not read; drawn as a standard material of "
+                       "its diffuse colour",
+                       at, mote__quote(type->valuestring).s);
+        bool cull_back = true, cull_back_faces = true;
+        MOTE__TRY(mote__json_flag(bl->load, m, "backFaceCulling", at, &cull_back));
+        mm->two_sided = !cull_back;
+        MOTE__TRY(mote__babylon_side(bl, m, "sideOrientation", at, &mm->side));
+        MOTE__TRY(mote__json_flag(bl->load, m, "cullBackFaces", at, &cull_back_faces));
+        mm->cull_front = !cull_back_faces;
+        MOTE__TRY(mote__json_flag(bl->load, m, "disableLighting", at, &mm->unlit));
+        /* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR
+         * material) serialises its albedo as baseColor and baseTexture
+         * and reads no other key for them; the other types write diffuse
+         * (standard, specular-glossiness) or albedo (PBRMaterial) */
+        const bool metal_rough =
+            cJSON_IsString(type) && strcmp(type->valuestring, read_types[2]) == 0;
+        static const char *const color_keys[5] = {"diffuse", "diffuseColor", "albedo",
+                                                  "albedoColor", "baseColor"};
+        for (int k = metal_rough ? 4 : 0; k < (metal_rough ? 5 : 4); k++) {
+            float c[4] = {1, 1, 1, 1};
+            if (!mote__json_get(m, color_keys[k]))
+                continue;
+            MOTE__TRY(mote__json_floats(bl->load, m, color_keys[k], at, 3, 4, c));
+            mote__set_color(&mm->material, c);
+            break;
+        }
+        MOTE__TRY(mote__emissive(bl, m, at, mm));
+        static const char *const tex_keys[3] = {"diffuseTexture", "albedoTexture", "baseTexture"};
+        for (int k = metal_rough ? 2 : 0; k < (metal_rough ? 3 : 2); k++) {
+            const cJSON *t = mote__json_get(m, tex_keys[k]);
+            if (!t)
+                continue;
+            char at2[96];
+            snprintf(at2, sizeof at2, "%s.%s", at, tex_keys[k]);
+            MOTE__TRY(mote__material_texture(bl, t, at2, mm));
+            break;
+        }
+    }
+    return MOTE_OK;
+}
+
+mote_result mote__babylon_multi_materials(mote__babylon *bl)
+{
+    const cJSON *list;
+    MOTE__TRY(mote__json_array(bl->load, bl->root, "multiMaterials", "", &list));
+    size_t n = mote__json_length(list);
+    MOTE__TRY(mote__check_count(bl->load, "multiMaterials", n, "entries",
+                                bl->load->lim.max_meshes));
+    bl->multis = mote__store_alloc(&bl->load->tmp, n, sizeof *bl->multis);
+    if (!bl->multis)
+        return mote__oom(bl->load, "multiMaterials");
+    int i = 0;
+    for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
+        char at[64];
+        snprintf(at, sizeof at, "multiMaterials[%d]", i);
+        MOTE__TRY(mote__json_object(bl->load, m, at));
+        mote__multi *mm = &bl->multis[i];
+        MOTE__TRY(mote__json_string(bl->load, m, "id", at, &mm->id));
+        if (!mm->id)
+            return mote__fail(bl->load, MOTE_ERR_PARSE, "%s: expected an \"id\" string", at);
+        MOTE__TRY(mote__babylon_number_text(bl, m, "uniqueId", at, &mm->unique_id));
+        /* the SceneSerializer writes the slots by uniqueId as well, and
+         * Babylon.js then resolves them so (materials sharing an id, as
+         * playgrounds name them, stay apart) */
+        const cJSON *slots, *unique_slots;
+        MOTE__TRY(mote__json_array(bl->load, m, "materials", at, &slots));
+        MOTE__TRY(mote__json_array(bl->load, m, "materialsUniqueIds", at, &unique_slots));
+        if (unique_slots)
+            slots = unique_slots;
+        size_t count = mote__json_length(slots);
+        if (count > bl->load->lim.max_meshes)
+            return mote__fail(bl->load, MOTE_ERR_LIMIT, "%s.materials: %zu slots, more than the "
+                              "limit of %u", at, count, (unsigned)bl->load->lim.max_meshes);
+        mm->slots = mote__store_alloc(&bl->load->tmp, count, sizeof *mm->slots);
+        if (!mm->slots)
+            return mote__oom(bl->load, at);
+        mm->slot_count = (int)count;
+        int k = 0;
+        for (const cJSON *s = slots ? slots->child : NULL; s; s = s->next, k++) {
+            mm->slots[k] = -1;
+            if (cJSON_IsNull(s))
+                continue;
+            if (unique_slots) {
+                char at2[96];
+                snprintf(at2, sizeof at2, "%s.materialsUniqueIds[%d]", at, k);
+                const char *text;
+                MOTE__TRY(mote__babylon_number_value_text(bl, s, at2, &text));
+                mm->slots[k] = mote__idmap_find_last(bl->mat_unique_map, text);
+                if (mm->slots[k] < 0)
+                    mote__warn(bl->load, "%s: %s is the uniqueId of no material", at2, text);
+                continue;
+            }
+            if (!cJSON_IsString(s))
+                return mote__fail(bl->load, MOTE_ERR_PARSE,
+                                  "%s.materials[%d]: expected a material id, found %s", at,
+                                  k, mote__json_type_name(s));
+            mm->slots[k] = mote__idmap_find_last(bl->mat_map, s->valuestring);
+            if (mm->slots[k] < 0)
+                mote__warn(bl->load, "%s.materials[%d]: \"%s\" names no material", at, k,
+                           mote__quote(s->valuestring).s);
+        }
+        bl->multi_count = i + 1;
+    }
+    int dup, unused;
+    bl->multi_map = mote__idmap_build(bl, &bl->multis[0].id, sizeof *bl->multis,
+                                      bl->multi_count, &dup);
+    bl->multi_unique_map = mote__idmap_build(bl, &bl->multis[0].unique_id, sizeof *bl->multis,
+                                             bl->multi_count, &unused);
+    if (!bl->multi_map || !bl->multi_unique_map)
+        return mote__oom(bl->load, "multiMaterials");
+    if (dup >= 0)
+        mote__warn(bl->load, "multiMaterials[%d]: id \"%s\" is used before; the last one is kept",
+                   dup, mote__quote(bl->multis[dup].id).s);
+    return MOTE_OK;
+}
+
+/* The material of a (sub-)mesh: a material, a multi-material slot, or NULL
+ * for the default (white) one, with a warning when nothing is named.
+ * materialUniqueId comes first, as in Babylon.js (materials re-exported from
+ * glTF often share an id); when it matches nothing, materialId is tried.
+ * Either resolves to the last holder, as getLastMaterialById does. */
+const mote__mat *mote__babylon_resolve_material(mote__babylon *bl, const mote__node *nd,
+                                                uint32_t material_index)
+{
+    int m = -1, mm = -1;
+    if (nd->material_unique_id) {
+        m = mote__idmap_find_last(bl->mat_unique_map, nd->material_unique_id);
+        if (m < 0)
+            mm = mote__idmap_find_last(bl->multi_unique_map, nd->material_unique_id);
+    }
+    if (m < 0 && mm < 0 && nd->material_id) {
+        m = mote__idmap_find_last(bl->mat_map, nd->material_id);
+        if (m < 0)
+            mm = mote__idmap_find_last(bl->multi_map, nd->material_id);
+    }
+    if (m >= 0)
+        return &bl->mats[m];
+    if (mm < 0) {
+        if (nd->material_id)
+            mote__warn(bl->load, "%s.materialId: \"%s\" names no material", nd->where,
+                       mote__quote(nd->material_id).s);
+        else if (nd->material_unique_id)
+            mote__warn(bl->load, "%s.materialUniqueId: %s is the uniqueId of no material",
+                       nd->where, nd->material_unique_id);
+        return NULL;
+    }
+    const mote__multi *multi = &bl->multis[mm];
+    if (material_index >= (uint32_t)multi->slot_count) {
+        mote__warn(bl->load, "%s: materialIndex %u is past the %d materials of \"%s\"", nd->where,
+                   (unsigned)material_index, multi->slot_count, mote__quote(multi->id).s);
+        return NULL;
+    }
+    int slot = multi->slots[material_index];
+    return slot >= 0 ? &bl->mats[slot] : NULL;
+}

@@ -1,0 +1,178 @@
+/*
+ * loader.c - the scene being built, as every loader builds it: allocations
+ * recorded for release together, messages that start with the file's
+ * name, warnings given once each, and the scene freed whole on failure.
+ */
+#include "loader.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void mote__store_release(mote__store *s)
+{
+    for (size_t i = 0; i < s->count; i++)
+        mote__io_free(s->ptrs[i]);
+    mote__io_free(s->ptrs);
+    s->ptrs = NULL;
+    s->count = s->cap = 0;
+}
+
+void *mote__store_alloc(mote__store *s, size_t count, size_t size)
+{
+    if (size && count > SIZE_MAX / size)
+        return NULL;
+    if (s->count == s->cap) {
+        size_t ncap = s->cap ? s->cap * 2 : 32;
+        void **np = mote__io_malloc(ncap * sizeof *np);
+        if (!np)
+            return NULL;
+        if (s->count)
+            memcpy(np, s->ptrs, s->count * sizeof *np);
+        mote__io_free(s->ptrs);
+        s->ptrs = np;
+        s->cap = ncap;
+    }
+    void *p = mote__io_calloc(count ? count : 1, size ? size : 1);
+    if (p)
+        s->ptrs[s->count++] = p;
+    return p;
+}
+
+mote_result mote__fail(mote__loader *ld, mote_result code, const char *fmt, ...)
+{
+    char what[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return mote__io_error(ld->msg, ld->msg_size, code, "%s: %s", ld->name, what);
+}
+
+mote_result mote__oom(mote__loader *ld, const char *at)
+{
+    return mote__fail(ld, MOTE_ERR_OUT_OF_MEMORY, "%s: out of memory", at);
+}
+
+mote_result mote__check_count(mote__loader *ld, const char *at, size_t count,
+                              const char *what, size_t limit)
+{
+    if (count > limit || count > (size_t)INT32_MAX)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%s: %zu %s, more than the limit of %zu", at,
+                          count, what, limit);
+    return MOTE_OK;
+}
+
+/* scene.warning from ld->warnings: each distinct warning once, "(xN)"
+ * when it was given N times, so that a warning repeated per sub-mesh does
+ * not crowd out the ones after it; what does not fit is counted at the
+ * end. */
+static void mote__show_warnings(mote__loader *ld)
+{
+    char *w = ld->scene->warning;
+    const size_t cap = sizeof ld->scene->warning, tail = 24; /* "; 99 more warnings" */
+    size_t used = 0;
+    int shown = 0;
+    w[0] = '\0';
+    for (; shown < ld->warning_count; shown++) {
+        const mote__warning *e = &ld->warnings[shown];
+        char count[24] = "";
+        if (e->count > 1)
+            snprintf(count, sizeof count, " (x%u)", e->count);
+        size_t need = (used ? 2 : 0) + strlen(e->text) + strlen(count);
+        if (used && used + need + tail >= cap)
+            break;                /* the first is shown, cut short if it must be */
+        snprintf(w + used, cap - used, "%s%s%s", used ? "; " : "", e->text, count);
+        used = strlen(w);
+    }
+    unsigned more = ld->warnings_dropped + (unsigned)(ld->warning_count - shown);
+    if (more)
+        snprintf(w + used, cap - used, "; %u more warning%s", more, more > 1 ? "s" : "");
+}
+
+void mote__warn(mote__loader *ld, const char *fmt, ...)
+{
+    char text[sizeof ld->warnings[0].text];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    int i = 0;
+    while (i < ld->warning_count && strcmp(ld->warnings[i].text, text) != 0)
+        i++;
+    if (i < ld->warning_count) {
+        ld->warnings[i].count++;
+    } else if (i < MOTE__MAX_WARNINGS) {
+        memcpy(ld->warnings[i].text, text, sizeof text);
+        ld->warnings[i].count = 1;
+        ld->warning_count++;
+    } else {
+        ld->warnings_dropped++;
+    }
+    mote__show_warnings(ld);
+}
+
+mote__quoted mote__quote(const char *s)
+{
+    mote__quoted q;
+    mote__io_clean_name(q.s, sizeof q.s, s ? s : "");
+    return q;
+}
+
+uint8_t mote__unit_byte(float c)
+{
+    if (!(c > 0.0f))
+        return 0;
+    if (c >= 1.0f)
+        return 255;
+    return (uint8_t)(c * 255.0f + 0.5f);
+}
+
+static void mote__free_storage(mote_scene *scene)
+{
+    mote__store *keep = scene->storage_;
+    if (scene->textures)
+        for (int i = 0; i < scene->texture_count; i++)
+            mote_texture_free(&scene->textures[i]);
+    if (keep) {
+        mote__store_release(keep);
+        mote__io_free(keep);
+    }
+}
+
+void mote_scene_free(mote_scene *scene)
+{
+    if (!scene)
+        return;
+    mote__free_storage(scene);
+    memset(scene, 0, sizeof *scene);
+}
+
+mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *base_dir,
+                               const mote_limits *limits, size_t size, mote_scene *out,
+                               char *message, size_t message_size)
+{
+    memset(ld, 0, sizeof *ld);
+    mote__io_clean_name(ld->name, sizeof ld->name, name ? name : "scene");
+    ld->base_dir = base_dir;
+    ld->lim = mote__io_limits(limits);
+    ld->msg = message;
+    ld->msg_size = message_size;
+    ld->scene = out;
+    memset(out, 0, sizeof *out);
+    if (size > ld->lim.max_file_bytes)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%zu bytes, more than the limit of %zu", size,
+                          ld->lim.max_file_bytes);
+    ld->keep = mote__io_calloc(1, sizeof *ld->keep);
+    if (!ld->keep)
+        return mote__oom(ld, "scene");
+    out->storage_ = ld->keep;
+    return MOTE_OK;
+}
+
+mote_result mote__loader_end(mote__loader *ld, mote_result r)
+{
+    mote__store_release(&ld->tmp);
+    if (r != MOTE_OK)
+        mote_scene_free(ld->scene);
+    return r;
+}

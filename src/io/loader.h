@@ -1,0 +1,150 @@
+/*
+ * loader.h - what every scene loader shares: the scene being built (the
+ * allocations it keeps and the load's temporaries), the limits, the
+ * message of a failure and the warnings, and the textures a scene names.
+ * Not API.
+ *
+ * src/io, by concern:
+ *   scene.c               mote_scene_load*: tells the format by the bytes and
+ *                         hands them to its loader (or says what they are);
+ *                         framing, draw options, levels of detail
+ *   loader.[ch]           the scene being built: stores, limits, messages,
+ *                         warnings, freeing
+ *   scene_texture.c       the textures a scene names: path rules, URL-encoded
+ *                         names, data: URLs, one decode per file
+ *   json.[ch]             cJSON getters that name the JSON path in messages,
+ *                         number checks, the nesting limit
+ *   matrix_fold.[ch]      right-handed files mirrored in z; a node's affine
+ *                         matrix folded into the core's T R S
+ *   babylon*.[ch]         the .babylon loader (docs/babylon.md)
+ *   texture.c             images through the system stb_image
+ *   stb_guard*.[ch]       stb_image's known faults kept from it (PNG and
+ *                         JPEG in files of their own)
+ *   image_write.c         PNG and PPM output
+ *   common.c, io_internal.h  allocator, messages, limits, file reading
+ *
+ * A loader of another format includes loader.h, json.h when it reads JSON,
+ * and matrix_fold.h, and is called from scene.c.
+ */
+#ifndef MOTE_IO_LOADER_H
+#define MOTE_IO_LOADER_H
+
+#include "io_internal.h"
+
+#include <stdint.h>
+
+/* Returns from the calling function with expr's result unless it is MOTE_OK. */
+#define MOTE__TRY(expr)               \
+    do {                              \
+        mote_result r__ = (expr);     \
+        if (r__ != MOTE_OK)           \
+            return r__;               \
+    } while (0)
+
+/* ---- allocations ------------------------------------------------------- */
+
+/* Allocations released together: a scene's (scene->storage_) or a load's
+ * temporaries. */
+typedef struct mote__store {
+    void **ptrs;
+    size_t count, cap;
+} mote__store;
+
+/* Zeroed memory recorded in s; NULL when out of memory or when count x
+ * size overflows (nothing leaks). */
+void *mote__store_alloc(mote__store *s, size_t count, size_t size);
+void mote__store_release(mote__store *s);
+
+/* ---- a load in progress ------------------------------------------------ */
+
+/* A distinct warning and how many times it was given. */
+typedef struct mote__warning {
+    char text[256];
+    unsigned count;
+} mote__warning;
+
+/* More distinct warnings than scene.warning (256 bytes) can show anyway. */
+#define MOTE__MAX_WARNINGS 16
+
+typedef struct mote__loader {
+    char name[128];               /* the file's name, first in every message */
+    const char *base_dir;         /* texture files resolve here; NULL: none are loaded */
+    mote_limits lim;              /* the caller's, zero fields filled with the defaults */
+    char *msg;                    /* the caller's message buffer */
+    size_t msg_size;
+    mote_scene *scene;            /* what is built; zeroed again when the load fails */
+    mote__store *keep;            /* becomes scene->storage_ */
+    mote__store tmp;              /* released when the load ends */
+    int texture_cap;              /* room in scene->textures (mote__texture_slots) */
+    const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
+    mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
+    int warning_count;
+    unsigned warnings_dropped;    /* given after the list was full */
+} mote__loader;
+
+/* Starts loading size bytes into *out (zeroed): the name cleaned for
+ * messages, the limits filled in, the size checked against them, the
+ * scene's store made. A failure here leaves nothing to free. */
+mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *base_dir,
+                               const mote_limits *limits, size_t size, mote_scene *out,
+                               char *message, size_t message_size);
+/* Ends the load whose result is r: the temporaries released and, when r
+ * is an error, the scene freed and zeroed. Returns r. */
+mote_result mote__loader_end(mote__loader *ld, mote_result r);
+
+/* The message "NAME: what" (printf-style); returns code. */
+mote_result mote__fail(mote__loader *ld, mote_result code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+/* "NAME: at: out of memory", MOTE_ERR_OUT_OF_MEMORY. */
+mote_result mote__oom(mote__loader *ld, const char *at);
+/* MOTE_ERR_LIMIT, "NAME: at: COUNT WHAT, more than the limit of LIMIT",
+ * when count is over limit or past what an int counts: counts are checked
+ * so before anything is allocated for them. */
+mote_result mote__check_count(mote__loader *ld, const char *at, size_t count,
+                              const char *what, size_t limit);
+
+/* A non-fatal note in scene->warning: each distinct one once, " (xN)" when
+ * given N times, "; N more warnings" for those that do not fit. */
+void mote__warn(mote__loader *ld, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* A name from the file, safe to print (no control bytes, bounded). */
+typedef struct mote__quoted {
+    char s[72];
+} mote__quoted;
+
+mote__quoted mote__quote(const char *s);
+
+/* A 0..1 colour channel as a byte, rounded, clamped (NaN: 0). */
+uint8_t mote__unit_byte(float c);
+
+/* ---- textures (scene_texture.c) ---------------------------------------- */
+
+/* Room for n textures in scene->textures, allocated once so that the
+ * pointers materials keep stay valid; at names the place in messages. */
+mote_result mote__texture_slots(mote__loader *ld, size_t n, const char *at);
+
+/* The texture a material names into m->texture: `embedded`, a base64
+ * data: URL, or else `name`, a file in the scene's folder (as written,
+ * else read as a URL: "?query" dropped, %XX decoded), under the path rules
+ * (limits.allow_any_texture_path); a web address is never downloaded.
+ * Each path or URL is decoded once however many materials name it. at and
+ * key name the place in messages; with no base_dir, nothing is loaded. A
+ * texture that cannot be loaded fails the load, or with
+ * limits.missing_texture_is_warning leaves m untextured with a warning. */
+mote_result mote__scene_texture(mote__loader *ld, const char *at, const char *key,
+                                const char *name, const char *embedded, mote_material *m);
+
+/* ---- the loaded scene (scene.c) ---------------------------------------- */
+
+/* Shows lods[g]'s base (chosen -1) or its level `chosen` in meshes, and
+ * hides the rest of the group (all of it when the group is hidden). */
+void mote__lod_show(const mote_scene *sc, mote_mesh *meshes, int g, int chosen);
+
+#endif
