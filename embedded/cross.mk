@@ -129,3 +129,8 @@ export MOTE_BUILD := $(BUILD)
 $(FW_HEADER): $(FW_SCENE) $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
 	$(BIN)/mote-bake $(FW_SCENE) -o $@ --name scene --format rgb565 --size $(FW_SIZE)
+
+# GCC would turn the mini libc's loops into calls to memcpy and memset
+# (themselves, on the targets; the host's, in its test).
+MINI_LIBC_FLAGS := -fno-tree-loop-distribute-patterns
+$(CROSS_DIR)/%/fw/firmware/mini_libc.c.o: CROSS_CFLAGS += $(MINI_LIBC_FLAGS)
