@@ -4,8 +4,8 @@
 #                       RV32IMAC, then a table of .text/.data/.bss and the
 #                       worst-case stack per target
 #   make test-embedded  render on emulated boards (qemu) and compare with the
-#                       host, the unaligned trap, the stack bound, the
-#                       instruction counter (embedded/test-embedded.sh)
+#                       host, the LCD path, the unaligned trap, the stack
+#                       bound, the instruction counter (embedded/test-embedded.sh)
 #   make bench-embedded instructions per frame (embedded/bench.mk)
 #
 # The cross compilers see no C library: -nostdinc -nostdlib, the compiler's
@@ -21,9 +21,10 @@
 # profile, and so does the host reference it is compared with.
 #
 # The firmware comes in variants, one ELF each, so that its static buffers
-# are sized for what it renders: $(CROSS_DIR)/TARGET/SCENE-ROWS/
-# (embedded/firmware/main.c: ROWS a band, 240 the whole frame), beside the
-# same source built for the host in $(CROSS_DIR)/host/SCENE-ROWS/.
+# are sized for what it renders: $(CROSS_DIR)/TARGET/SCENE-ROWS[-lcd]/
+# (embedded/firmware/main.c: ROWS a band, 240 the whole frame; -lcd through
+# the fake LCD), beside the same source built for the host in
+# $(CROSS_DIR)/host/SCENE-ROWS[-lcd]/.
 
 CROSS_DIR     := $(BUILD)/cross
 CROSS_TARGETS := cortex-m0plus cortex-m4f rv32imac
@@ -76,14 +77,15 @@ FW_SCENES         := cube suzanne box sphere torus demo
 # The example `make cross` sizes, the variants test-embedded runs, and
 # those bench-embedded counts (Suzanne when ../shared/assets has it).
 FW_EXAMPLE          := cube-30
-FW_TEST_VARIANTS    := cube-30
+FW_TEST_VARIANTS    := cube-30 cube-16-lcd
 FW_BENCH_SCENES     := $(if $(wildcard $(FW_SCENE.suzanne)),suzanne) cube box sphere torus demo
 FW_BENCH_ROWS       := 16 30 $(FW_FULL_ROWS)
 FW_BENCH_VARIANTS   := $(foreach s,$(FW_BENCH_SCENES),$(foreach r,$(FW_BENCH_ROWS),$(s)-$(r)))
 
 FW_SRC    := embedded/firmware/platform_semihost.c embedded/firmware/util.c \
-             embedded/firmware/mini_libc.c
-FW_HOST_SRC := embedded/firmware/platform_host.c embedded/firmware/util.c
+             embedded/firmware/mini_libc.c embedded/firmware/lcd.c embedded/firmware/lcd_fake.c
+FW_HOST_SRC := embedded/firmware/platform_host.c embedded/firmware/util.c \
+             embedded/firmware/lcd.c embedded/firmware/lcd_fake.c
 FW_DEPS   := $(wildcard embedded/firmware/*.h embedded/include/*.h include/mote/*.h src/core/*.h) embedded/cross.mk
 
 CROSS_CGLM := $(CROSS_DIR)/sysinclude/cglm
@@ -105,9 +107,10 @@ $(CROSS_DIR)/scene/$(1)/scene.h: $(FW_SCENE.$(1)) $(BIN)/mote-bake
 endef
 $(foreach s,$(FW_SCENES),$(eval $(call FW_SCENE_RULES,$(s))))
 
-# The parts of a variant's name: scene and rows.
+# The parts of a variant's name: scene, rows, and 1 when it drives the LCD.
 fw_scene = $(word 1,$(subst -, ,$(1)))
 fw_rows  = $(word 2,$(subst -, ,$(1)))
+fw_lcd   = $(if $(filter lcd,$(word 3,$(subst -, ,$(1)))),1,0)
 # RAM budget of a variant: 64 KB for bands, more for a whole frame.
 fw_ram   = $(if $(filter $(FW_FULL_ROWS),$(call fw_rows,$(1))),384K,64K)
 
@@ -158,7 +161,7 @@ $(CROSS_DIR)/$(1)/$(2)/main.o: embedded/firmware/main.c $(CROSS_DIR)/scene/$(cal
         $$(FW_DEPS) | $(CROSS_CGLM)
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_PROFILE) -Iembedded/firmware \
-	    -I$(CROSS_DIR)/scene/$(call fw_scene,$(2)) -DFW_BAND=$(call fw_rows,$(2)) \
+	    -I$(CROSS_DIR)/scene/$(call fw_scene,$(2)) -DFW_BAND=$(call fw_rows,$(2)) -DFW_LCD=$(call fw_lcd,$(2)) \
 	    $$(CROSS_INCLUDE.$(1)) -c $$< -o $$@
 
 $(CROSS_DIR)/$(1)/$(2)/mote-firmware.elf: $(CROSS_DIR)/$(1)/$(2)/main.o $$(CROSS_FW_OBJ.$(1)) \
@@ -186,7 +189,7 @@ $(CROSS_DIR)/host/$(1)/mote-firmware: embedded/firmware/main.c $(FW_HOST_SRC) $(
         $(CROSS_DIR)/scene/$(call fw_scene,$(1))/scene.h $(FW_DEPS)
 	@mkdir -p $$(dir $$@)
 	$(CC) $(CROSS_HOST_CFLAGS) -Iembedded/firmware -I$(CROSS_DIR)/scene/$(call fw_scene,$(1)) \
-	    -DFW_BAND=$(call fw_rows,$(1)) \
+	    -DFW_BAND=$(call fw_rows,$(1)) -DFW_LCD=$(call fw_lcd,$(1)) \
 	    embedded/firmware/main.c $(FW_HOST_SRC) $(CROSS_HOST_CORE) -o $$@
 endef
 

@@ -4,6 +4,9 @@
 # M4F, RV32IMAC), each checked against the host:
 #   firmware_hash_should_match_host           the example (cube, 30-row
 #       bands, RGB565) renders the host's frame
+#   lcd_image_should_match_frame_and_host     the same through the LCD
+#       driver (16-row bands, RGB565_SWAPPED) into the fake panel, which
+#       must find the driver's commands by the rules and receive the frame
 #   stack_bound_should_cover_measured_stack   embedded/stack-usage.sh's
 #       worst case is at least what the runs used, and fits the stack
 #   insn_count_should_count_exactly           the instruction counter
@@ -35,8 +38,8 @@ finish() {
 
 # The tests each target runs.
 target_tests() {
-    for name in firmware_hash_should_match_host stack_bound_should_cover_measured_stack \
-                insn_count_should_count_exactly; do
+    for name in firmware_hash_should_match_host lcd_image_should_match_frame_and_host \
+                stack_bound_should_cover_measured_stack insn_count_should_count_exactly; do
         echo "${name}_on_$1"
     done
     case $1 in
@@ -66,17 +69,21 @@ env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s --no-print-directory BUILD="$MOT
 
 host_hash() { "$dir/host/$1/mote-firmware" | sed -n 's/.*frame fnv1a //p'; }
 want=$(host_hash cube-30)
-echo "host: fnv1a $want"
+want_lcd=$(host_hash cube-16-lcd)
+echo "host: fnv1a $want (RGB565), $want_lcd (RGB565_SWAPPED)"
 
 for t in $ready; do
     tools=$(board_tools "$t")
     stack_result=ok; stack_note=""
-    for v in cube-30; do
+    for v in cube-30 cube-16-lcd; do
         out=$(board_run "$t" "$dir/$t/$v/mote-firmware.elf")
         rc=$?
         echo "$out" | sed "s/^/  $t $v: /"
         got=$(echo "$out" | sed -n 's/.*frame fnv1a //p')
-        name=firmware_hash_should_match_host; expect=$want
+        if [ "$v" = cube-30 ]; then name=firmware_hash_should_match_host; expect=$want
+        else name=lcd_image_should_match_frame_and_host; expect=$want_lcd; fi
+        # the LCD run itself fails when the panel saw a broken protocol or
+        # an image other than the frame
         if [ "$rc" -ne 0 ] || [ -z "$got" ] || [ "$got" != "$expect" ]; then
             fail "${name}_on_$t" "exit $rc, fnv1a '$got', the host's '$expect'"
         else

@@ -6,8 +6,13 @@
  * source built for the host gives the reference hash that
  * embedded/test-embedded.sh and embedded/bench-embedded.sh compare with.
  *
+ * FW_LCD 0: RGB565, the frame only hashed. FW_LCD 1: RGB565_SWAPPED, the
+ * byte order of SPI LCDs, each band sent to an ST7789 through lcd.c; on the
+ * emulated boards and the host the panel is lcd_fake.c, and the image it
+ * received must hash as the frame does.
+ *
  * RAM for the library is static and sized for the band: fw_color and
- * fw_depth (mote_band_bytes(W, rows, RGB565, DEPTH16)) and fw_device;
+ * fw_depth (mote_band_bytes(W, rows, format, DEPTH16)) and fw_device;
  * bench-embedded reads their sizes from the ELF's symbols (and fw_bins',
  * a binning arena, where there is one).
  *
@@ -17,20 +22,29 @@
  */
 #include <mote/mote.h>
 
+#include "lcd.h"
+#include "lcd_fake.h"
 #include "platform.h"
 #include "scene.h"
 
 #ifndef FW_BAND
 #define FW_BAND 30
 #endif
+#ifndef FW_LCD
+#define FW_LCD 0
+#endif
 
 #define W SCENE_WIDTH
 #define H SCENE_HEIGHT
 #define ROWS (FW_BAND < H ? FW_BAND : H)
+#define FORMAT (FW_LCD ? MOTE_FORMAT_RGB565_SWAPPED : MOTE_FORMAT_RGB565)
 
 static uint16_t fw_color[W * ROWS];
 static uint16_t fw_depth[W * ROWS];
 static mote_device fw_device;
+#if FW_LCD
+static lcd fw_lcd;
+#endif
 
 /* What the flush callback saw: the hash so far and the next row expected. */
 typedef struct frame_check {
@@ -39,14 +53,18 @@ typedef struct frame_check {
     bool out_of_order;
 } frame_check;
 
-/* Rows of the frame, done: hashed. A display driver would send them to
- * the panel here. */
+/* Rows of the frame, done: hashed, and sent to the LCD. */
 static void take_rows(frame_check *fc, int y0, int rows, const void *color, int stride)
 {
     if (y0 != fc->next_row || stride != W * 2)
         fc->out_of_order = true;
     fc->hash = fw_fnv1a(fc->hash, color, (size_t)rows * W * 2);
     fc->next_row = y0 + rows;
+#if FW_LCD
+    /* one band buffer: the band must be sent before mote draws the next */
+    lcd_start_rows(&fw_lcd, y0, rows, color);
+    lcd_wait(&fw_lcd);
+#endif
 }
 
 static void flush(void *user, int y0, int rows, const void *color, int stride)
@@ -89,7 +107,7 @@ int main(void)
     mote_device_desc desc = {0};
     desc.width = W;
     desc.height = H;
-    desc.color_format = MOTE_FORMAT_RGB565;
+    desc.color_format = FORMAT;
     desc.color = fw_color;
     desc.depth_format = MOTE_DEPTH_FORMAT_16;
     desc.depth = fw_depth;
@@ -102,6 +120,9 @@ int main(void)
     mote_result r = mote_device_init(&fw_device, &desc);
     if (r != MOTE_OK)
         fail("mote_device_init", r);
+#if FW_LCD
+    lcd_init(&fw_lcd, LCD_ST7789, W, H);
+#endif
 
     fw_count_start();
     render();
@@ -115,10 +136,11 @@ int main(void)
     }
     fw_put_uint("mote-firmware: ", W, 10);
     fw_put_uint("x", H, 10);
-    fw_put_uint(" RGB565 depth16, bands of ", ROWS, 10);
+    fw_puts(FW_LCD ? " RGB565_SWAPPED" : " RGB565");
+    fw_put_uint(" depth16, bands of ", ROWS, 10);
     fw_put_uint(" rows, triangles drawn ", mote_device_stats(&fw_device)->triangles_drawn, 10);
     fw_puts("\n");
-    size_t buffers = mote_band_bytes(W, ROWS, MOTE_FORMAT_RGB565, MOTE_DEPTH_FORMAT_16);
+    size_t buffers = mote_band_bytes(W, ROWS, FORMAT, MOTE_DEPTH_FORMAT_16);
     fw_put_uint("mote-firmware: RAM for mote: band buffers ", (uint32_t)buffers, 10);
     fw_put_uint(" + device ", (uint32_t)sizeof fw_device, 10);
     fw_put_uint(" = ", (uint32_t)(buffers + sizeof fw_device), 10);
@@ -127,6 +149,21 @@ int main(void)
         fw_put_uint("mote-firmware: stack used ", fw_stack_used(), 10);
         fw_puts(" bytes\n");
     }
+#if FW_LCD
+    uint32_t image_hash, value;
+    const char *lcd_error = lcd_fake_finish(W, H, &image_hash, &value);
+    if (lcd_error) {
+        fw_puts("mote-firmware: LCD: ");
+        fw_puts(lcd_error);
+        fw_put_uint(" ", value, 16);
+        fw_puts("\n");
+        fw_exit(1);
+    }
+    fw_put_uint("mote-firmware: LCD image fnv1a ", image_hash, 16);
+    fw_puts(image_hash == fc.hash ? ", the frame's\n" : ", not the frame's\n");
+    if (image_hash != fc.hash)
+        fw_exit(1);
+#endif
     fw_put_uint("mote-firmware: frame fnv1a ", fc.hash, 16);
     fw_puts("\n");
     fw_exit(0);

@@ -32,4 +32,12 @@ unsigned fw_stack_used(void);
 void fw_count_start(void);
 void fw_count_stop(void);
 
+/* Data that stands for memory outside the chip (the fake LCD's pixels):
+ * linked where the board has room, outside the firmware's RAM budget. */
+#if defined(__arm__) || defined(__riscv)
+#define FW_OFF_CHIP __attribute__((section(".off_chip")))
+#else
+#define FW_OFF_CHIP
+#endif
+
 #endif
