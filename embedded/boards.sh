@@ -35,41 +35,42 @@ board_packages() {
 # missing, when root with apt-get can (CI's clean machine: otherwise the
 # checks would be skipped there unseen).
 boards_install() {
-    missing=""
-    for t in "$@"; do
-        for pair in $(board_packages "$t"); do
-            command -v "${pair#*:}" >/dev/null 2>&1 || missing="$missing ${pair%%:*}"
+    board_need=""
+    for board_target in "$@"; do
+        for board_pair in $(board_packages "$board_target"); do
+            command -v "${board_pair#*:}" >/dev/null 2>&1 || board_need="$board_need ${board_pair%%:*}"
         done
     done
-    if [ -n "$missing" ] && [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
-        MOTE_EXTRA_PACKAGES="$missing" sh third_party/setup.sh >/dev/null 2>&1 || true
+    if [ -n "$board_need" ] && [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
+        MOTE_EXTRA_PACKAGES="$board_need" sh third_party/setup.sh >/dev/null 2>&1 || true
     fi
 }
 
 # Empty when the target's tools are here, else what is missing.
 board_missing() {
-    for pair in $(board_packages "$1"); do
-        command -v "${pair#*:}" >/dev/null 2>&1 ||
-            { echo "${pair#*:} is not installed (apt-get install ${pair%%:*})"; return; }
+    for board_pair in $(board_packages "$1"); do
+        command -v "${board_pair#*:}" >/dev/null 2>&1 ||
+            { echo "${board_pair#*:} is not installed (apt-get install ${board_pair%%:*})"; return; }
     done
 }
 
 # Runs ELF on the target's board; prints what the firmware printed, and
 # with "count", the instruction counter's line (embedded/qemu/insn_count.c,
 # between fw_count_start and fw_count_stop). Exit status: the firmware's.
+# (the board_ variables are this file's: sh has no locals)
 board_run() {
-    target=$1; elf=$2; count=${3:-}
-    set -- $(board_qemu "$target") -nographic -monitor none -serial none \
-        -semihosting-config enable=on,target=native -kernel "$elf"
-    if [ "$count" = count ]; then
-        log=$(mktemp)
-        marks=$("$(board_tools "$target")nm" "$elf" |
+    board_target=$1; board_elf=$2; board_count=${3:-}
+    set -- $(board_qemu "$board_target") -nographic -monitor none -serial none \
+        -semihosting-config enable=on,target=native -kernel "$board_elf"
+    if [ "$board_count" = count ]; then
+        board_log=$(mktemp)
+        board_marks=$("$(board_tools "$board_target")nm" "$board_elf" |
             awk '$3 == "fw_count_start" { s = $1 } $3 == "fw_count_stop" { e = $1 } END { print "0x" s ",stop=0x" e }')
-        timeout 300 "$@" -plugin "$MOTE_BUILD/qemu/libinsn_count.so,start=$marks" -d plugin -D "$log" 2>&1
-        rc=$?
-        cat "$log"
-        rm -f "$log"
-        return $rc
+        timeout 300 "$@" -plugin "$MOTE_BUILD/qemu/libinsn_count.so,start=$board_marks" -d plugin -D "$board_log" 2>&1
+        board_rc=$?
+        cat "$board_log"
+        rm -f "$board_log"
+        return $board_rc
     fi
     timeout 300 "$@" 2>&1
 }
