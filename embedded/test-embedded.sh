@@ -1,94 +1,137 @@
 #!/bin/sh
-# Renders the firmware example on emulated Cortex-M boards and checks that
-# its frame hash equals the host's (same source, same baked scene), and that
-# the Cortex-M0+ firmware-profile core keeps within its 16 KB flash budget.
-#   - the Cortex-M0+ build (soft float) on mps2-an385: qemu has no M0+
-#     board, so it runs on the AN385's Cortex-M3 (ARMv6-M code is ARMv7-M
-#     code); the instructions and float routines are the M0+ build's.
-#   - the Cortex-M4F build (hard float) on mps2-an386 (Cortex-M4 with FPU).
-# Output goes through semihosting. Ends with a Unity-style summary line;
-# ignored (not failed) when the cross compiler or qemu cannot be had.
-# Installs gcc-arm-none-eabi and qemu-system-arm through third_party/setup.sh
-# when they are missing and root with apt-get is available.
+# Tests that behave like the chips: the firmware example and the harness's
+# self-test on the emulated boards of embedded/boards.sh (Cortex-M0+ and
+# M4F, RV32IMAC), each checked against the host:
+#   firmware_hash_should_match_host           the example (cube, 30-row
+#       bands, RGB565) renders the host's frame
+#   lcd_image_should_match_frame_and_host     the same through the LCD
+#       driver (16-row bands, RGB565_SWAPPED) into the fake panel, which
+#       must find the driver's commands by the rules and receive the frame
+#   stack_bound_should_cover_measured_stack   embedded/stack-usage.sh's
+#       worst case is at least what the runs used, and fits the stack
+#   insn_count_should_count_exactly           the instruction counter
+#       counts the self-test's known stretch (embedded/tests/selftest.c)
+#   unaligned_access_should_fault_only_on_m0plus  the M0+ build faults on
+#       an unaligned load, as an M0+ does; the M4F reads it
+#   firmware_profile_core_should_fit_16k_on_m0plus
+# A fault prints "fault at pc ..." and fails the run. Ends with a
+# Unity-style summary; a target whose compiler or emulator cannot be
+# installed (third_party/setup.sh, as root with apt-get) is ignored, not
+# failed, with the reason.
 set -u
 cd "$(dirname "$0")/.." || exit 1
-build=${MOTE_BUILD:-build}
-dir=$build/cross
+export MOTE_BUILD=${MOTE_BUILD:-build}
+. embedded/boards.sh
+dir=$MOTE_BUILD/cross
+targets="cortex-m0plus cortex-m4f rv32imac"
+tests=0; failures=0; ignored=0
 
-ignore() {
-    echo "embedded/test-embedded.sh:0:firmware_hash_should_match_host:IGNORE: $1"
+pass() { tests=$((tests + 1)); echo "embedded/test-embedded.sh:0:$1:PASS${2:+ ($2)}"; }
+fail() { tests=$((tests + 1)); failures=$((failures + 1)); echo "embedded/test-embedded.sh:0:$1:FAIL: $2"; }
+ignore() { tests=$((tests + 1)); ignored=$((ignored + 1)); echo "embedded/test-embedded.sh:0:$1:IGNORE: $2"; }
+check() { if [ "$2" = ok ]; then pass "$1" "$3"; else fail "$1" "$2"; fi; }
+finish() {
     echo "-----------------------"
-    echo "1 Tests 0 Failures 1 Ignored"
-    exit 0
-}
-fail() {
-    echo "embedded/test-embedded.sh:0:firmware_hash_should_match_host:FAIL: $1"
-    echo "-----------------------"
-    echo "1 Tests 1 Failures 0 Ignored"
-    echo "FAIL"
-    exit 1
+    echo "$tests Tests $failures Failures $ignored Ignored"
+    if [ "$failures" -eq 0 ]; then echo OK; exit 0; else echo FAIL; exit 1; fi
 }
 
-# Root with apt-get installs what is missing (CI's clean machine: without
-# it this test was ignored there, and the freestanding core went unchecked).
-missing=""
-command -v arm-none-eabi-gcc >/dev/null 2>&1 || missing="$missing gcc-arm-none-eabi"
-command -v qemu-system-arm >/dev/null 2>&1 || missing="$missing qemu-system-arm"
-if [ -n "$missing" ] && [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
-    MOTE_EXTRA_PACKAGES="$missing" sh third_party/setup.sh >/dev/null 2>&1
-fi
-command -v arm-none-eabi-gcc >/dev/null 2>&1 ||
-    ignore "arm-none-eabi-gcc is not installed (apt-get install gcc-arm-none-eabi)"
-command -v qemu-system-arm >/dev/null 2>&1 ||
-    ignore "qemu-system-arm is not installed (apt-get install qemu-system-arm)"
+# The tests each target runs.
+target_tests() {
+    for name in firmware_hash_should_match_host lcd_image_should_match_frame_and_host \
+                stack_bound_should_cover_measured_stack insn_count_should_count_exactly; do
+        echo "${name}_on_$1"
+    done
+    case $1 in
+        cortex-m0plus) echo unaligned_access_should_fault_only_on_m0plus firmware_profile_core_should_fit_16k_on_m0plus ;;
+        cortex-m4f) echo unaligned_access_should_fault_only_on_m0plus_not_m4f ;;
+    esac
+}
 
-# A make of our own: not part of an outer make's job server.
-env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s --no-print-directory BUILD="$build" embedded-firmware ||
-    fail "building the firmware example failed"
-
-want=$("$dir/host/mote-firmware" | sed -n 's/.*frame fnv1a //p')
-[ -n "$want" ] || fail "the host build printed no hash"
-echo "host:                        fnv1a $want"
-
-failures=0
-for run in mps2-an385:cortex-m0plus mps2-an386:cortex-m4f; do
-    board=${run%%:*}; target=${run#*:}
-    out=$(timeout 60 qemu-system-arm -M "$board" -nographic -monitor none -serial none \
-              -semihosting-config enable=on,target=native \
-              -kernel "$dir/$target/mote-firmware.elf" 2>&1)
-    rc=$?
-    echo "$out" | sed "s/^/  $target on $board: /"
-    got=$(echo "$out" | sed -n 's/.*frame fnv1a //p')
-    if [ "$rc" -ne 0 ] || [ "$got" != "$want" ]; then
-        echo "  $target on $board: exit $rc, fnv1a '$got', want '$want'"
-        failures=$((failures + 1))
+boards_install $targets
+ready=""
+for t in $targets; do
+    why=$(board_missing "$t")
+    if [ -n "$why" ]; then
+        for name in $(target_tests "$t"); do ignore "$name" "$why"; done
     else
-        echo "$target on $board: fnv1a $got, the same as the host"
+        ready="$ready $t"
     fi
 done
-result=0
-if [ "$failures" -eq 0 ]; then
-    echo "embedded/test-embedded.sh:0:firmware_hash_should_match_host:PASS"
-else
-    echo "embedded/test-embedded.sh:0:firmware_hash_should_match_host:FAIL: $failures emulated run(s) differ from the host"
-    result=1
-fi
+[ -n "$ready" ] || finish
 
-# The flash budget of issue 5: the core as the firmware profile builds it
-# (the MOTE_ENABLE_* features the example does not use left out) stays under
-# 16 KB of .text on Cortex-M0+; `make cross` prints the same figure.
-budget=16384
-used=$(arm-none-eabi-size -t "$dir/cortex-m0plus/libmote-fw.a" | awk 'END { print $1 }')
-if [ -n "$used" ] && [ "$used" -le "$budget" ]; then
-    echo "embedded/test-embedded.sh:0:firmware_profile_core_should_fit_16k_on_m0plus:PASS ($used bytes)"
-else
-    echo "embedded/test-embedded.sh:0:firmware_profile_core_should_fit_16k_on_m0plus:FAIL: '$used' bytes, budget $budget"
-    result=$((result + 2))
-fi
-echo "-----------------------"
-case $result in
-    0) echo "2 Tests 0 Failures 0 Ignored"; echo "OK" ;;
-    3) echo "2 Tests 2 Failures 0 Ignored"; echo "FAIL" ;;
-    *) echo "2 Tests 1 Failures 0 Ignored"; echo "FAIL" ;;
-esac
-[ "$result" -eq 0 ]
+# A make of our own: not part of an outer make's job server.
+env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s --no-print-directory BUILD="$MOTE_BUILD" \
+    fw-test-host insn-count-plugin $(for t in $ready; do echo "fw-test-$t"; done) || {
+    fail firmware_should_build "building the firmware failed"
+    finish
+}
+
+host_hash() { "$dir/host/$1/mote-firmware" | sed -n 's/.*frame fnv1a //p'; }
+want=$(host_hash cube-30)
+want_lcd=$(host_hash cube-16-lcd)
+echo "host: fnv1a $want (RGB565), $want_lcd (RGB565_SWAPPED)"
+
+for t in $ready; do
+    tools=$(board_tools "$t")
+    stack_result=ok; stack_note=""
+    for v in cube-30 cube-16-lcd; do
+        out=$(board_run "$t" "$dir/$t/$v/mote-firmware.elf")
+        rc=$?
+        echo "$out" | sed "s/^/  $t $v: /"
+        got=$(echo "$out" | sed -n 's/.*frame fnv1a //p')
+        if [ "$v" = cube-30 ]; then name=firmware_hash_should_match_host; expect=$want
+        else name=lcd_image_should_match_frame_and_host; expect=$want_lcd; fi
+        # the LCD run itself fails when the panel saw a broken protocol or
+        # an image other than the frame
+        if [ "$rc" -ne 0 ] || [ -z "$got" ] || [ "$got" != "$expect" ]; then
+            fail "${name}_on_$t" "exit $rc, fnv1a '$got', the host's '$expect'"
+        else
+            pass "${name}_on_$t" "fnv1a $got"
+        fi
+        # the run's stack high-water mark against the static bound of its ELF
+        used=$(echo "$out" | sed -n 's/.*stack used \([0-9]*\) bytes/\1/p')
+        e=$dir/$t/$v/mote-firmware.elf
+        bound=$(sh embedded/stack-usage.sh "$tools" "$e" "$dir/$t/core-fw" "$dir/$t/fw" "$dir/$t/$v") || bound=""
+        bound=${bound%% *}
+        region=$("${tools}nm" "$e" | awk '$3 == "__stack_top" { t = $1 } $3 == "__stack_bottom" { b = $1 } END { print t, b }')
+        region=$((0x${region% *} - 0x${region#* }))
+        if [ -z "$bound" ]; then r="$v: no bound (embedded/stack-usage.sh)"
+        elif [ -z "$used" ] || [ "$bound" -lt "$used" ]; then r="$v: bound $bound bytes, '$used' measured"
+        elif [ "$bound" -gt "$region" ]; then r="$v: bound $bound bytes, over the $region-byte stack"
+        else r=ok; fi
+        [ "$r" = ok ] || stack_result=$r
+        stack_note="$stack_note${stack_note:+, }$v $used <= $bound of $region"
+    done
+    check "stack_bound_should_cover_measured_stack_on_$t" "$stack_result" "$stack_note"
+
+    out=$(board_run "$t" "$dir/$t/selftest/selftest.elf" count)
+    rc=$?
+    echo "$out" | sed "s/^/  $t selftest: /"
+    want_count=$(echo "$out" | sed -n 's/^selftest: counted stretch of \([0-9]*\) .*/\1/p')
+    count=$(echo "$out" | sed -n 's/^insn_count: counted \([0-9]*\) instructions in 1 intervals.*/\1/p')
+    if [ -n "$count" ] && [ "$count" = "$want_count" ]; then r=ok
+    else r="counted '$count', the stretch is '$want_count' instructions"; fi
+    check "insn_count_should_count_exactly_on_$t" "$r" "$count"
+
+    case $t in
+        cortex-m0plus)
+            if [ "$rc" -ne 0 ] && echo "$out" | grep -q "fault at pc"; then r=ok
+            else r="the unaligned load did not fault (exit $rc)"; fi
+            check unaligned_access_should_fault_only_on_m0plus "$r" "faulted" ;;
+        cortex-m4f)
+            if [ "$rc" -eq 0 ] && echo "$out" | grep -q "unaligned load read .*, right"; then r=ok
+            else r="the unaligned load did not read the word (exit $rc)"; fi
+            check unaligned_access_should_fault_only_on_m0plus_not_m4f "$r" "read" ;;
+    esac
+
+    # The flash budget: the core as the firmware profile builds it stays
+    # under 16 KB of .text on Cortex-M0+; `make cross` prints the figure.
+    if [ "$t" = cortex-m0plus ]; then
+        budget=16384
+        size=$(arm-none-eabi-size -t "$dir/cortex-m0plus/libmote-fw.a" | awk 'END { print $1 }')
+        if [ -n "$size" ] && [ "$size" -le "$budget" ]; then r=ok; else r="'$size' bytes, budget $budget"; fi
+        check firmware_profile_core_should_fit_16k_on_m0plus "$r" "$size bytes"
+    fi
+done
+finish

@@ -7,14 +7,15 @@
  * firmware then renders with no file system, no JSON and no heap.
  *
  *   mote-bake SCENE.babylon -o scene.h [--format rgb565|rgba8888|grey8]
- *             [--name NAME] [--size WxH]
+ *             [--name NAME] [--size WxH] [--texture-size WxH]
  *
  * Floats are written as C99 hexadecimal literals, so the baked scene is the
  * loaded one bit for bit. --size is the frame the camera's aspect is made
  * for (default 320x240); the header repeats it as NAME_WIDTH/NAME_HEIGHT.
  * A mesh with levels of detail is baked at the level chosen for the baked
  * camera (the others hidden), with a warning: the header has no camera
- * of its own to choose by.
+ * of its own to choose by. --texture-size resamples every texture to WxH
+ * with a box filter, so that a large image fits a small chip's flash.
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -26,10 +27,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define MOTE_BAKE_MAX(a, b) ((a) > (b) ? (a) : (b))
+
 typedef struct baker {
     FILE *f;
     const char *name;             /* C identifier prefix */
     mote_format format;           /* of the baked textures */
+    int texture_width, texture_height; /* --texture-size; 0: as loaded */
     const mote_scene *scene;
     int *texture_slot;            /* per scene texture: index in the baked array, or -1 */
     int *vertex_array;            /* per mesh: which vertices array it uses, or -1 */
@@ -41,10 +45,11 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: mote-bake SCENE.babylon -o OUT.h [--format rgb565|rgba8888|grey8]\n"
-            "                 [--name NAME] [--size WxH]\n"
+            "                 [--name NAME] [--size WxH] [--texture-size WxH]\n"
             "Writes a C header with the scene's meshes, textures (in FORMAT, default\n"
             "rgb565), camera and lights as const mote structs (identifiers NAME_*,\n"
-            "default scene) for a frame of WxH pixels (default 320x240).\n");
+            "default scene) for a frame of WxH pixels (default 320x240).\n"
+            "--texture-size resamples every texture to WxH (a box filter).\n");
 }
 
 /* A float as a C expression that gives exactly the same bits. */
@@ -102,16 +107,66 @@ static bool glows(const mote_material *mat)
     return (mat->emissive.r | mat->emissive.g | mat->emissive.b) != 0;
 }
 
-/* One texture converted to the target format, row by row. */
-static int write_texture(baker *b, const mote_texture *t, int slot)
+/* The texture resampled to width x height as RGBA8888 by a box filter:
+ * each texel is the rounded mean of the whole source texels under it
+ * (exact for a size that divides the source's, as 512 to 128; a larger
+ * size repeats texels). NULL when out of memory. */
+static uint8_t *box_filter(const mote_texture *t, int width, int height)
 {
+    int src_stride = t->stride ? t->stride : t->width * mote_format_bytes(t->format);
+    uint8_t *out = malloc((size_t)width * (size_t)height * 4);
+    uint8_t *src = malloc((size_t)t->width * (size_t)t->height * 4);
+    if (!out || !src) {
+        free(out);
+        free(src);
+        return NULL;
+    }
+    for (int y = 0; y < t->height; y++)
+        mote_convert_row((const unsigned char *)t->pixels + (size_t)y * (size_t)src_stride, t->format,
+                         src + (size_t)y * (size_t)t->width * 4, MOTE_FORMAT_RGBA8888, t->width);
+    for (int y = 0; y < height; y++) {
+        int y0 = (int)((int64_t)y * t->height / height);
+        int y1 = MOTE_BAKE_MAX(y0 + 1, (int)((int64_t)(y + 1) * t->height / height));
+        for (int x = 0; x < width; x++) {
+            int x0 = (int)((int64_t)x * t->width / width);
+            int x1 = MOTE_BAKE_MAX(x0 + 1, (int)((int64_t)(x + 1) * t->width / width));
+            uint64_t sum[4] = {0, 0, 0, 0}, n = (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
+            for (int sy = y0; sy < y1; sy++)
+                for (int sx = x0; sx < x1; sx++)
+                    for (int c = 0; c < 4; c++)
+                        sum[c] += src[((size_t)sy * (size_t)t->width + (size_t)sx) * 4 + (size_t)c];
+            for (int c = 0; c < 4; c++)
+                out[((size_t)y * (size_t)width + (size_t)x) * 4 + (size_t)c] = (uint8_t)((sum[c] + n / 2) / n);
+        }
+    }
+    free(src);
+    return out;
+}
+
+/* One texture converted to the target format (resampled first with
+ * --texture-size), row by row. */
+static int write_texture(baker *b, const mote_texture *loaded, int slot)
+{
+    mote_texture resized = *loaded;
+    uint8_t *resized_pixels = NULL;
+    if (b->texture_width) {
+        resized_pixels = box_filter(loaded, b->texture_width, b->texture_height);
+        if (!resized_pixels)
+            return -1;
+        resized = (mote_texture){b->texture_width, b->texture_height, MOTE_FORMAT_RGBA8888, 0,
+                                 resized_pixels};
+    }
+    const mote_texture *t = &resized;
     int bpp = mote_format_bytes(b->format);
     int src_stride = t->stride ? t->stride : t->width * mote_format_bytes(t->format);
     unsigned char *row = malloc((size_t)t->width * (size_t)bpp);
-    if (!row)
+    if (!row) {
+        free(resized_pixels);
         return -1;
-    fprintf(b->f, "static const %s %s_texture%d_pixels[%d * %d] = {\n",
-            bpp == 2 ? "uint16_t" : "uint8_t", b->name, slot, t->width, t->height);
+    }
+    /* RGB565 in uint16_t, one a texel; the others in bytes, bpp a texel */
+    fprintf(b->f, "static const %s %s_texture%d_pixels[%d * %d * %d] = {\n",
+            bpp == 2 ? "uint16_t" : "uint8_t", b->name, slot, t->width, t->height, bpp == 2 ? 1 : bpp);
     for (int y = 0; y < t->height; y++) {
         mote_convert_row((const unsigned char *)t->pixels + (size_t)y * (size_t)src_stride, t->format,
                          row, b->format, t->width);
@@ -130,6 +185,7 @@ static int write_texture(baker *b, const mote_texture *t, int slot)
     }
     fprintf(b->f, "};\n\n");
     free(row);
+    free(resized_pixels);
     return 0;
 }
 
@@ -348,10 +404,12 @@ static int bake(baker *b, int width, int height, const char *source)
         fprintf(f, "static const mote_texture %s_textures[%d] = {\n", b->name, slots);
         for (int t = 0; t < s->texture_count; t++) {
             const mote_texture *tx = &s->textures[t];
-            if (b->texture_slot[t] >= 0)
-                fprintf(f, "    {%d, %d, %s, %d, %s_texture%d_pixels},\n", tx->width, tx->height,
-                        format_name(b->format), tx->width * mote_format_bytes(b->format), b->name,
-                        b->texture_slot[t]);
+            if (b->texture_slot[t] >= 0) {
+                int w = b->texture_width ? b->texture_width : tx->width;
+                int h = b->texture_width ? b->texture_height : tx->height;
+                fprintf(f, "    {%d, %d, %s, %d, %s_texture%d_pixels},\n", w, h, format_name(b->format),
+                        w * mote_format_bytes(b->format), b->name, b->texture_slot[t]);
+            }
         }
         fprintf(f, "};\n\n");
     }
@@ -434,6 +492,7 @@ int main(int argc, char **argv)
     const char *in = NULL, *out = NULL, *name = "scene";
     mote_format format = MOTE_FORMAT_RGB565;
     int width = 320, height = 240;
+    int texture_width = 0, texture_height = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         bool has_value = i + 1 < argc;
@@ -462,11 +521,18 @@ int main(int argc, char **argv)
                         argv[i]);
                 return 2;
             }
+        } else if (!strcmp(a, "--texture-size") && has_value) {
+            if (!parse_size(argv[++i], &texture_width, &texture_height)) {
+                fprintf(stderr, "mote-bake: --texture-size wants WxH within 1..%d, got '%s'\n",
+                        MOTE_MAX_SIZE, argv[i]);
+                return 2;
+            }
         } else if (a[0] != '-' && !in) {
             in = a;
         } else {
             if (a[0] == '-' && !has_value && (!strcmp(a, "-o") || !strcmp(a, "--name")
-                                              || !strcmp(a, "--format") || !strcmp(a, "--size")))
+                                              || !strcmp(a, "--format") || !strcmp(a, "--size")
+                                              || !strcmp(a, "--texture-size")))
                 fprintf(stderr, "mote-bake: %s needs a value\n", a);
             else
                 fprintf(stderr, "mote-bake: unexpected argument '%s'\n", a);
@@ -525,8 +591,8 @@ int main(int argc, char **argv)
     int status = 1;
     size_t n = (size_t)(scene.mesh_count > 0 ? scene.mesh_count : 1);
     size_t nt = (size_t)(scene.texture_count > 0 ? scene.texture_count : 1);
-    baker b = {NULL, name, format, &scene, calloc(nt, sizeof(int)), calloc(n, sizeof(int)),
-               calloc(n, sizeof(int)), calloc(n, sizeof(int))};
+    baker b = {NULL, name, format, texture_width, texture_height, &scene, calloc(nt, sizeof(int)),
+               calloc(n, sizeof(int)), calloc(n, sizeof(int)), calloc(n, sizeof(int))};
     if (!b.texture_slot || !b.vertex_array || !b.index_array || !b.color_array) {
         fprintf(stderr, "mote-bake: out of memory\n");
         goto done;

@@ -1,29 +1,50 @@
 /*
  * main.c - the mote firmware example: renders a baked scene (a header made
- * by mote-bake, no files, no JSON, no heap) at its baked size in RGB565 with
- * a 16-bit depth buffer, FW_BAND rows at a time, and prints the FNV-1a hash
- * of the assembled frame. The same source built for the host gives the
- * reference hash (embedded/test-embedded.sh compares them).
+ * by mote-bake, no files, no JSON, no heap) at its baked size with a
+ * 16-bit depth buffer, FW_BAND rows at a time (at least the height: the
+ * whole frame at once), and prints the FNV-1a hash of the frame. The same
+ * source built for the host gives the reference hash that
+ * embedded/test-embedded.sh and embedded/bench-embedded.sh compare with.
  *
- * RAM for the library: the two band buffers and the device, all static
- * (30 rows: 38400 + 800 bytes on a 32-bit target, MOTE_MAX_DRAWS=8):
- *   mote_band_bytes(W, FW_BAND, RGB565, DEPTH16) + sizeof(mote_device).
+ * FW_LCD 0: RGB565, the frame only hashed. FW_LCD 1: RGB565_SWAPPED, the
+ * byte order of SPI LCDs, each band sent to an ST7789 through lcd.c; on the
+ * emulated boards and the host the panel is lcd_fake.c, and the image it
+ * received must hash as the frame does.
+ *
+ * RAM for the library is static and sized for the band: fw_color and
+ * fw_depth (mote_band_bytes(W, rows, format, DEPTH16)) and fw_device;
+ * bench-embedded reads their sizes from the ELF's symbols (and fw_bins',
+ * a binning arena, where there is one).
+ *
+ * Counted per frame (fw_count_start to fw_count_stop): mote_begin, the
+ * draws and mote_end, less the flush callback, which stands for the
+ * display.
  */
 #include <mote/mote.h>
 
+#include "lcd.h"
+#include "lcd_fake.h"
 #include "platform.h"
 #include "scene.h"
 
 #ifndef FW_BAND
 #define FW_BAND 30
 #endif
+#ifndef FW_LCD
+#define FW_LCD 0
+#endif
 
 #define W SCENE_WIDTH
 #define H SCENE_HEIGHT
+#define ROWS (FW_BAND < H ? FW_BAND : H)
+#define FORMAT (FW_LCD ? MOTE_FORMAT_RGB565_SWAPPED : MOTE_FORMAT_RGB565)
 
-static uint16_t band_color[W * FW_BAND];
-static uint16_t band_depth[W * FW_BAND];
-static mote_device dev;
+static uint16_t fw_color[W * ROWS];
+static uint16_t fw_depth[W * ROWS];
+static mote_device fw_device;
+#if FW_LCD
+static lcd fw_lcd;
+#endif
 
 /* What the flush callback saw: the hash so far and the next row expected. */
 typedef struct frame_check {
@@ -32,34 +53,25 @@ typedef struct frame_check {
     bool out_of_order;
 } frame_check;
 
-/* A display driver would send the rows to the panel here; the example
- * hashes them (FNV-1a 32 over the frame's bytes, top row first). */
-static void flush(void *user, int y0, int rows, const void *color, int stride)
+/* Rows of the frame, done: hashed, and sent to the LCD. */
+static void take_rows(frame_check *fc, int y0, int rows, const void *color, int stride)
 {
-    frame_check *fc = user;
-    if (y0 != fc->next_row)
+    if (y0 != fc->next_row || stride != W * 2)
         fc->out_of_order = true;
-    for (int y = 0; y < rows; y++) {
-        const uint8_t *row = (const uint8_t *)color + y * stride;
-        for (int i = 0; i < W * 2; i++)
-            fc->hash = (fc->hash ^ row[i]) * 16777619u;
-    }
+    fc->hash = fw_fnv1a(fc->hash, color, (size_t)rows * W * 2);
     fc->next_row = y0 + rows;
+#if FW_LCD
+    /* one band buffer: the band must be sent before mote draws the next */
+    lcd_start_rows(&fw_lcd, y0, rows, color);
+    lcd_wait(&fw_lcd);
+#endif
 }
 
-static void put_uint(const char *label, uint32_t v, int base)
+static void flush(void *user, int y0, int rows, const void *color, int stride)
 {
-    char buf[16];
-    int n = sizeof buf - 1;
-    buf[n] = '\0';
-    do {
-        buf[--n] = "0123456789abcdef"[v % (uint32_t)base];
-        v /= (uint32_t)base;
-    } while ((v || (base == 16 && n > (int)sizeof buf - 9)) && n > 0); /* hex: 8 digits */
-    fw_puts(label);
-    if (base == 16)
-        fw_puts("0x");
-    fw_puts(buf + n);
+    fw_count_stop();
+    take_rows(user, y0, rows, color, stride);
+    fw_count_start();
 }
 
 static void fail(const char *what, mote_result r)
@@ -72,55 +84,87 @@ static void fail(const char *what, mote_result r)
     fw_exit(1);
 }
 
-int main(void)
+static void render(void)
 {
-    fw_stack_paint();
-    frame_check fc = {2166136261u, 0, false};
-    mote_device_desc desc = {0};
-    desc.width = W;
-    desc.height = H;
-    desc.color_format = MOTE_FORMAT_RGB565;
-    desc.color = band_color;
-    desc.depth_format = MOTE_DEPTH_FORMAT_16;
-    desc.depth = band_depth;
-    desc.band_height = FW_BAND;
-    desc.clear_color = scene_clear_color;
-    desc.flush = flush;
-    desc.flush_user = &fc;
-    mote_result r = mote_device_init(&dev, &desc);
-    if (r != MOTE_OK)
-        fail("mote_device_init", r);
-    if ((r = mote_begin(&dev, &scene_frame)) != MOTE_OK)
+    mote_result r;
+    if ((r = mote_begin(&fw_device, &scene_frame)) != MOTE_OK)
         fail("mote_begin", r);
     for (int i = 0; i < SCENE_MESH_COUNT; i++) {
         mote_draw_desc draw = {0};
         draw.cull = scene_two_sided[i] ? MOTE_CULL_NONE : MOTE_CULL_DEFAULT;
         draw.unlit = scene_unlit[i];
-        if ((r = mote_draw(&dev, &scene_meshes[i], &draw)) != MOTE_OK)
+        if ((r = mote_draw(&fw_device, &scene_meshes[i], &draw)) != MOTE_OK)
             fail("mote_draw", r);
     }
-    if ((r = mote_end(&dev)) != MOTE_OK)
+    if ((r = mote_end(&fw_device)) != MOTE_OK)
         fail("mote_end", r);
+}
+
+int main(void)
+{
+    fw_stack_paint();
+    frame_check fc = {FW_FNV1A_START, 0, false};
+    mote_device_desc desc = {0};
+    desc.width = W;
+    desc.height = H;
+    desc.color_format = FORMAT;
+    desc.color = fw_color;
+    desc.depth_format = MOTE_DEPTH_FORMAT_16;
+    desc.depth = fw_depth;
+    desc.band_height = ROWS;
+    desc.clear_color = scene_clear_color;
+    if (ROWS < H) {
+        desc.flush = flush;
+        desc.flush_user = &fc;
+    }
+    mote_result r = mote_device_init(&fw_device, &desc);
+    if (r != MOTE_OK)
+        fail("mote_device_init", r);
+#if FW_LCD
+    lcd_init(&fw_lcd, LCD_ST7789, W, H);
+#endif
+
+    fw_count_start();
+    render();
+    fw_count_stop();
+    if (ROWS == H)
+        take_rows(&fc, 0, H, fw_color, W * 2);
+
     if (fc.out_of_order || fc.next_row != H) {
         fw_puts("mote-firmware: the bands did not cover the frame in order\n");
         fw_exit(1);
     }
-    put_uint("mote-firmware: ", W, 10);
-    put_uint("x", H, 10);
-    put_uint(" RGB565 depth16, bands of ", FW_BAND, 10);
-    put_uint(" rows, triangles drawn ", mote_device_stats(&dev)->triangles_drawn, 10);
+    fw_put_uint("mote-firmware: ", W, 10);
+    fw_put_uint("x", H, 10);
+    fw_puts(FW_LCD ? " RGB565_SWAPPED" : " RGB565");
+    fw_put_uint(" depth16, bands of ", ROWS, 10);
+    fw_put_uint(" rows, triangles drawn ", mote_device_stats(&fw_device)->triangles_drawn, 10);
     fw_puts("\n");
-    put_uint("mote-firmware: RAM for mote: band buffers ",
-             (uint32_t)mote_band_bytes(W, FW_BAND, MOTE_FORMAT_RGB565, MOTE_DEPTH_FORMAT_16), 10);
-    put_uint(" + device ", (uint32_t)sizeof dev, 10);
-    put_uint(" = ", (uint32_t)(mote_band_bytes(W, FW_BAND, MOTE_FORMAT_RGB565, MOTE_DEPTH_FORMAT_16)
-                               + sizeof dev), 10);
+    size_t buffers = mote_band_bytes(W, ROWS, FORMAT, MOTE_DEPTH_FORMAT_16);
+    fw_put_uint("mote-firmware: RAM for mote: band buffers ", (uint32_t)buffers, 10);
+    fw_put_uint(" + device ", (uint32_t)sizeof fw_device, 10);
+    fw_put_uint(" = ", (uint32_t)(buffers + sizeof fw_device), 10);
     fw_puts(" bytes\n");
     if (fw_stack_used() > 0) {
-        put_uint("mote-firmware: stack used ", fw_stack_used(), 10);
+        fw_put_uint("mote-firmware: stack used ", fw_stack_used(), 10);
         fw_puts(" bytes\n");
     }
-    put_uint("mote-firmware: frame fnv1a ", fc.hash, 16);
+#if FW_LCD
+    uint32_t image_hash, value;
+    const char *lcd_error = lcd_fake_finish(W, H, &image_hash, &value);
+    if (lcd_error) {
+        fw_puts("mote-firmware: LCD: ");
+        fw_puts(lcd_error);
+        fw_put_uint(" ", value, 16);
+        fw_puts("\n");
+        fw_exit(1);
+    }
+    fw_put_uint("mote-firmware: LCD image fnv1a ", image_hash, 16);
+    fw_puts(image_hash == fc.hash ? ", the frame's\n" : ", not the frame's\n");
+    if (image_hash != fc.hash)
+        fw_exit(1);
+#endif
+    fw_put_uint("mote-firmware: frame fnv1a ", fc.hash, 16);
     fw_puts("\n");
     fw_exit(0);
     return 0;

@@ -23,3 +23,11 @@ unsigned fw_stack_used(void)
 {
     return 0;
 }
+
+void fw_count_start(void)
+{
+}
+
+void fw_count_stop(void)
+{
+}

@@ -72,3 +72,15 @@ unsigned fw_stack_used(void)
         p++;
     return (unsigned)((const char *)__stack_top - (const char *)p);
 }
+
+/* noipa: never inlined, cloned or folded into one another (identical
+ * bodies would be), so that each keeps an address of its own */
+__attribute__((noipa)) void fw_count_start(void)
+{
+    __asm__ volatile("" ::: "memory");
+}
+
+__attribute__((noipa)) void fw_count_stop(void)
+{
+    __asm__ volatile("" ::: "memory");
+}
