@@ -263,6 +263,11 @@ void mote__view_rotation(const mote_camera *camera, float view[16])
 
 void mote_camera_view_matrix(const mote_camera *camera, float view[16])
 {
+    if (!camera || !view) {
+        if (view)
+            mote__mat4_identity(view);
+        return;
+    }
     mote__view_rotation(camera, view);
     for (int i = 0; i < 3; i++) {   /* minus the position along each axis */
         const float axis[3] = {view[i], view[4 + i], view[8 + i]};
@@ -272,6 +277,11 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16])
 
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect, float proj[16])
 {
+    if (!camera || !proj) {
+        if (proj)
+            mote__mat4_identity(proj);
+        return;
+    }
     /* Depth 0 at near and 1 at far. Defaults for zeros. */
     float n = camera->znear > 0.0f ? camera->znear : 0.1f;
     float f = camera->zfar > 0.0f ? camera->zfar : 100.0f;
