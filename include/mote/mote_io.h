@@ -31,8 +31,9 @@ typedef struct mote_limits {
      * from each image's header before it is decoded. A file several
      * materials name, under any name ("b.png", "./b.png", a link to it),
      * is decoded once and counted once. Loading then holds at most this
-     * much in textures, plus, while one decodes, stb_image's working copy
-     * of it (up to 1.25 times its size). */
+     * much in textures, plus, while one more decodes, its file's bytes
+     * and stb_image's working copies (an 8-bit RGB PNG's unfiltered rows:
+     * 0.75 times its decoded size). */
     size_t max_total_texture_bytes;
     int max_json_depth;           /* default 64 */
     bool allow_any_texture_path;  /* false: only inside the scene's folder */
