@@ -6,10 +6,27 @@
  *
  * Every buffer mote writes (colour, depth, arena) has canary bytes on both
  * sides (tu_guard_alloc); run with SAN=1 for ASan/UBSan on top. Seeded.
+ *
+ * Hostile files too: a scene's folder holding links that lead out of it
+ * (to a file, a folder, /proc) or a FIFO swapped in under a texture's
+ * name, one texture under many names, more textures than the limit on
+ * all of them, and outputs that are links, devices, FIFOs or cannot be
+ * written completely. The tree is made in a temporary folder.
  */
+#define _POSIX_C_SOURCE 200809L   /* mkdtemp, symlink, mkfifo, fork, setrlimit */
 #include "ref/ref.h"
 #include "support/testutil.h"
 #include "unity.h"
+#include "io/io_internal.h"
+#include <mote/mote_io.h>
+
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <float.h>
 #include <math.h>
@@ -22,8 +39,17 @@
 
 static char msg[256];
 
+static char fsdir[256];           /* a temporary tree for the file tests: scene/, outside/ */
+static void fs_remove_tree(void);
+
 void setUp(void) {}
-void tearDown(void) {}
+
+void tearDown(void)
+{
+    mote__io_resolve_by_walk(0);
+    if (fsdir[0])
+        fs_remove_tree();
+}
 
 typedef struct guarded {
     mote_device dev;
@@ -579,6 +605,457 @@ void invalid_vertices_of_a_draw_cut_into_pieces_should_stay_defined(void)
     TEST_ASSERT_EQUAL_MEMORY(serial, pieces, sizeof serial);
 }
 
+/* ---- files a scene names ------------------------------------------------- */
+
+static const char *fs_path(const char *name)
+{
+    static char path[2][600];
+    static int turn;
+    turn ^= 1;
+    snprintf(path[turn], sizeof path[turn], "%s/%s", fsdir, name);
+    return path[turn];
+}
+
+/* A w x 1 PNG of one colour at fs_path(name). */
+static void fs_png(const char *name, uint8_t r, uint8_t g, uint8_t b, int w)
+{
+    uint8_t px[64 * 4];
+    for (int i = 0; i < w; i++) {
+        px[4 * i] = r;
+        px[4 * i + 1] = g;
+        px[4 * i + 2] = b;
+        px[4 * i + 3] = 255;
+    }
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_rgba(fs_path(name), px, w, 1, 0, msg, sizeof msg),
+                              msg);
+}
+
+static void fs_link(const char *target, const char *name)
+{
+    TEST_ASSERT_EQUAL_MESSAGE(0, symlink(target, fs_path(name)), name);
+}
+
+/* A scene in fs_path("scene") whose n materials name the textures names[]. */
+static mote_result fs_load(const char *const *names, int n, const mote_limits *lim,
+                           mote_scene *sc)
+{
+    static char json[8192];
+    int k = snprintf(json, sizeof json, "{\"materials\":[");
+    for (int i = 0; i < n; i++)
+        k += snprintf(json + k, sizeof json - (size_t)k,
+                      "%s{\"id\":\"m%d\",\"diffuseTexture\":{\"name\":\"%s\"}}", i ? "," : "", i,
+                      names[i]);
+    snprintf(json + k, sizeof json - (size_t)k, "]}");
+    msg[0] = '\0';
+    return mote_scene_load_memory(json, strlen(json), "s", fs_path("scene"), lim, sc, msg,
+                                  sizeof msg);
+}
+
+/* The first texel's red byte of the scene's first texture. */
+static int fs_red(const mote_scene *sc)
+{
+    TEST_ASSERT_TRUE(sc->texture_count > 0);
+    return ((const uint8_t *)sc->textures[0].pixels)[0];
+}
+
+static void fs_make_tree(void)
+{
+    snprintf(fsdir, sizeof fsdir, "/tmp/mote-hostile-XXXXXX");
+    TEST_ASSERT_NOT_NULL(mkdtemp(fsdir));
+    TEST_ASSERT_EQUAL(0, mkdir(fs_path("scene"), 0700));
+    TEST_ASSERT_EQUAL(0, mkdir(fs_path("scene/sub"), 0700));
+    TEST_ASSERT_EQUAL(0, mkdir(fs_path("outside"), 0700));
+    fs_png("outside/outside.png", 200, 0, 0, 1);    /* red: read from outside */
+    fs_png("scene/in.png", 0, 200, 0, 1);           /* green: inside */
+}
+
+static void fs_remove_tree(void)
+{
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", fsdir);
+    fsdir[0] = '\0';
+    TEST_ASSERT_EQUAL(0, system(cmd));
+}
+
+/* Links in the scene's folder that lead out of it, as an uploaded archive
+ * may carry them: to a file, through a folder, up past the folder, an
+ * absolute one, through /proc/self/root, to /proc/self/environ. None is
+ * opened, by openat2 or by the walk one component at a time; the name
+ * as written is refused as before. */
+void links_leading_out_of_the_scene_folder_should_not_be_followed(void)
+{
+    fs_make_tree();
+    char outside_abs[600], in_abs[600], root_path[700];
+    snprintf(outside_abs, sizeof outside_abs, "%s", fs_path("outside/outside.png"));
+    snprintf(in_abs, sizeof in_abs, "%s", fs_path("scene/in.png"));
+    fs_link("../outside/outside.png", "scene/link.png");
+    fs_link("../outside", "scene/out");
+    fs_link("../../../../../../../../../../../..", "scene/up");
+    fs_link(outside_abs, "scene/abs.png");
+    fs_link(in_abs, "scene/abs_in.png");            /* absolute, even to inside */
+    fs_link("/proc/self/root", "scene/root");
+    fs_link("/proc/self/environ", "scene/env.png");
+    fs_link("sub/../../outside/outside.png", "scene/sub_up.png");
+    fs_link("../link.png", "scene/sub/chain.png");   /* a link to a link out */
+    snprintf(root_path, sizeof root_path, "root%s", outside_abs);
+    const char *const escapes[] = {"link.png", "out/outside.png", "abs.png", "abs_in.png",
+                                   root_path, "env.png", "sub_up.png", "sub/chain.png",
+                                   "up/tmp/x.png", "sub\\\\chain.png"};
+    for (int walk = 0; walk < 2; walk++) {
+        mote__io_resolve_by_walk(walk);
+        for (size_t i = 0; i < sizeof escapes / sizeof escapes[0]; i++) {
+            mote_scene sc;
+            char what[900];
+            snprintf(what, sizeof what, "%s (walk %d): %s", escapes[i], walk, msg);
+            mote_result r = fs_load(&escapes[i], 1, NULL, &sc);
+            snprintf(what, sizeof what, "%s (walk %d): %s", escapes[i], walk, msg);
+            TEST_ASSERT_EQUAL_MESSAGE(MOTE_ERR_RANGE, r, what);
+            TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "leads out of the scene's folder through a "
+                                                     "symbolic link"), what);
+            TEST_ASSERT_EQUAL(0, sc.texture_count);
+        }
+    }
+    mote__io_resolve_by_walk(0);
+    /* limits.allow_any_texture_path follows them, as before */
+    mote_limits lim = mote_limits_default();
+    lim.allow_any_texture_path = true;
+    mote_scene sc;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, fs_load(&escapes[0], 1, &lim, &sc), msg);
+    TEST_ASSERT_EQUAL(200, fs_red(&sc));
+    mote_scene_free(&sc);
+}
+
+/* Links that stay inside the folder are followed, by both resolvers: to a
+ * file beside them, through a linked sub-folder, up and down again
+ * inside, and a chain of them. */
+void links_staying_inside_the_scene_folder_should_be_followed(void)
+{
+    fs_make_tree();
+    fs_link("in.png", "scene/same.png");
+    fs_link("../in.png", "scene/sub/up.png");
+    fs_link("sub", "scene/sublink");
+    fs_link("sublink/up.png", "scene/chain.png");
+    fs_link("./sub/../in.png", "scene/dots.png");
+    const char *const names[] = {"same.png", "sub/up.png", "sublink/up.png", "chain.png",
+                                 "dots.png", "./in.png"};
+    for (int walk = 0; walk < 2; walk++) {
+        mote__io_resolve_by_walk(walk);
+        for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+            mote_scene sc;
+            TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, fs_load(&names[i], 1, NULL, &sc), msg);
+            TEST_ASSERT_EQUAL(0, fs_red(&sc));
+            mote_scene_free(&sc);
+        }
+    }
+    mote__io_resolve_by_walk(0);
+}
+
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+/* This program's stat() stands in for the C library's (glibc 2.33 has a
+ * stat symbol to stand in for): once armed with a path, it swaps the FIFO
+ * at fifo_swap.from in under that name just after looking, which is the
+ * moment a look-then-open race needs. */
+static struct {
+    char path[600], from[600];
+} fifo_swap;
+
+int stat(const char *restrict path, struct stat *restrict st)
+{
+    int r = fstatat(AT_FDCWD, path, st, 0);
+    if (fifo_swap.path[0] && strcmp(path, fifo_swap.path) == 0) {
+        fifo_swap.path[0] = '\0';
+        rename(fifo_swap.from, path);
+    }
+    return r;
+}
+#define FIFO_SWAP_AFTER_STAT 1
+#endif
+
+/* Swapped in between a look at the name and the open, a FIFO made the
+ * load wait for a writer for ever. Where stat() can be stood in for, the
+ * FIFO is swapped in just after any look at the name: the load reads the
+ * file, or refuses the FIFO. Then the name b.png is turned from a regular
+ * file to a FIFO and back as fast as a child process can while the scene
+ * is loaded 300 times: each load either reads the file or refuses the
+ * FIFO, and none waits (the alarm would end the test). */
+void a_fifo_swapped_in_under_a_texture_name_should_never_block_a_load(void)
+{
+    fs_make_tree();
+    fs_png("scene/b.png", 0, 200, 0, 1);
+#ifdef FIFO_SWAP_AFTER_STAT
+    {
+        snprintf(fifo_swap.from, sizeof fifo_swap.from, "%s", fs_path("scene/swap.fifo"));
+        snprintf(fifo_swap.path, sizeof fifo_swap.path, "%s", fs_path("scene/b.png"));
+        TEST_ASSERT_EQUAL(0, mkfifo(fifo_swap.from, 0600));
+        const char *b = "b.png";
+        mote_scene sc;
+        alarm(30);
+        mote_result r = fs_load(&b, 1, NULL, &sc);
+        alarm(0);
+        mote_scene_free(&sc);
+        fifo_swap.path[0] = '\0';
+        TEST_ASSERT_TRUE_MESSAGE(r == MOTE_OK || strstr(msg, "a FIFO, not a regular file"), msg);
+        remove(fs_path("scene/b.png"));
+        remove(fifo_swap.from);
+        fs_png("scene/b.png", 0, 200, 0, 1);
+    }
+#endif
+    TEST_ASSERT_EQUAL(0, link(fs_path("scene/b.png"), fs_path("scene/good.png")));
+    char good[600], reg[600], fifo[600], target[600];
+    snprintf(good, sizeof good, "%s", fs_path("scene/good.png"));
+    snprintf(reg, sizeof reg, "%s", fs_path("scene/x.reg"));
+    snprintf(fifo, sizeof fifo, "%s", fs_path("scene/x.fifo"));
+    snprintf(target, sizeof target, "%s", fs_path("scene/b.png"));
+    pid_t parent = getpid(), child = fork();
+    TEST_ASSERT_TRUE(child >= 0);
+    if (child == 0) {
+        while (getppid() == parent) {
+            if (mkfifo(fifo, 0600) == 0)
+                rename(fifo, target);
+            if (link(good, reg) == 0)
+                rename(reg, target);
+        }
+        _exit(0);
+    }
+    alarm(60);
+    const char *name = "b.png";
+    int read_file = 0, refused = 0;
+    char other[sizeof msg] = "";
+    for (int i = 0; i < 300; i++) {
+        mote_scene sc;
+        mote_result r = fs_load(&name, 1, NULL, &sc);
+        mote_scene_free(&sc);
+        if (r == MOTE_OK)
+            read_file++;
+        else if (r == MOTE_ERR_IO && strstr(msg, "a FIFO, not a regular file"))
+            refused++;
+        else
+            memcpy(other, msg, sizeof other);
+    }
+    alarm(0);
+    kill(child, SIGKILL);
+    waitpid(child, NULL, 0);
+    TEST_ASSERT_EQUAL_STRING("", other);
+    TEST_ASSERT_EQUAL(300, read_file + refused);
+    TEST_ASSERT_TRUE(read_file > 0);
+}
+
+/* One file under many names ("b.png", "./b.png", "././b.png", a link, a
+ * hard link) is one texture, decoded once: the names once made 330 MB
+ * each of a 65 KB PNG claiming 8192 x 8192. */
+void a_texture_under_many_names_should_be_decoded_once(void)
+{
+    fs_make_tree();
+    fs_png("scene/b.png", 0, 200, 0, 4);
+    fs_link("b.png", "scene/link.png");
+    TEST_ASSERT_EQUAL(0, link(fs_path("scene/b.png"), fs_path("scene/hard.png")));
+    const char *const names[] = {"b.png", "./b.png", "././b.png", ".//./b.png", "link.png",
+                                 "sub/../b.png%3F", "hard.png", "b.png?v=2"};
+    mote_scene sc;
+    /* "sub/../b.png%3F" leaves by '..' when decoded: the name as written
+     * is looked for, and missing, fails the load */
+    TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, fs_load(names, 8, NULL, &sc));
+    const char *const fine[] = {"b.png", "./b.png", "././b.png", ".//./b.png", "link.png",
+                                "hard.png", "b.png?v=2"};
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, fs_load(fine, 7, NULL, &sc), msg);
+    TEST_ASSERT_EQUAL(1, sc.texture_count);
+    TEST_ASSERT_TRUE(mote_scene_reads_file(&sc, fs_path("scene/hard.png")));
+    TEST_ASSERT_FALSE(mote_scene_reads_file(&sc, fs_path("scene/in.png")));
+    mote_scene_free(&sc);
+}
+
+/* A scene of many distinct textures is held to
+ * limits.max_total_texture_bytes, from each image's header: the texture
+ * past the limit is refused without being decoded (its pixel data here
+ * is not even valid), files and embedded images alike. */
+void the_textures_of_a_scene_should_be_held_to_the_total_limit(void)
+{
+    TEST_ASSERT_EQUAL((size_t)512 << 20, mote_limits_default().max_total_texture_bytes);
+    fs_make_tree();
+    fs_png("scene/a.png", 1, 0, 0, 64);
+    fs_png("scene/b.png", 2, 0, 0, 64);
+    /* a PNG header claiming 64 x 1, and no image data */
+    static const uint8_t header_only[] = {
+        0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+        0, 0, 0, 64, 0, 0, 0, 1, 8, 6, 0, 0, 0, 0x5e, 0x1d, 0x2c, 0x8a};
+    FILE *f = fopen(fs_path("scene/c.png"), "wb");
+    TEST_ASSERT_NOT_NULL(f);
+    fwrite(header_only, 1, sizeof header_only, f);
+    fclose(f);
+    mote_limits lim = mote_limits_default();
+    lim.max_total_texture_bytes = 2 * 64 * 4;
+    const char *const names[] = {"a.png", "b.png", "c.png", "a.png"};
+    mote_scene sc;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, fs_load(names, 2, &lim, &sc), msg);
+    TEST_ASSERT_EQUAL(2, sc.texture_count);
+    mote_scene_free(&sc);
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, fs_load(names, 3, &lim, &sc));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "c.png: 64 x 1 needs 256 bytes, more than the 0 "
+                                             "left of the limit of 512 on all of a scene's "
+                                             "textures"), msg);
+    /* with the limit one texture larger, c.png is decoded, and fails so */
+    lim.max_total_texture_bytes = 3 * 64 * 4;
+    TEST_ASSERT_EQUAL(MOTE_ERR_PARSE, fs_load(names, 3, &lim, &sc));
+    /* an embedded image counts too */
+    static const char data_url[] = "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAA"
+                                   "fFcSJAAAADUlEQVR4nGNgYPj/HwADAgH/eK9dXAAAAABJRU5ErkJggg==";
+    const char *const with_url[] = {"a.png", "b.png", data_url};
+    lim.max_total_texture_bytes = 2 * 64 * 4 + 3;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, fs_load(with_url, 3, &lim, &sc));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "embedded image: 1 x 1 needs 4 bytes, more than the 3 "
+                                             "left"), msg);
+    lim.max_total_texture_bytes = 2 * 64 * 4 + 4;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, fs_load(with_url, 3, &lim, &sc), msg);
+    TEST_ASSERT_EQUAL(3, sc.texture_count);
+    mote_scene_free(&sc);
+}
+
+void camera_matrices_of_a_null_camera_should_be_the_identity(void)
+{
+    float m[16], identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    memset(m, 0x7f, sizeof m);
+    mote_camera_view_matrix(NULL, m);
+    TEST_ASSERT_EQUAL_MEMORY(identity, m, sizeof m);
+    memset(m, 0x7f, sizeof m);
+    mote_camera_projection_matrix(NULL, 1.5f, m);
+    TEST_ASSERT_EQUAL_MEMORY(identity, m, sizeof m);
+    mote_camera cam;
+    memset(&cam, 0, sizeof cam);
+    mote_camera_view_matrix(&cam, NULL);
+    mote_camera_projection_matrix(&cam, 1.0f, NULL);
+}
+
+/* ---- files written ------------------------------------------------------- */
+
+/* Whether a new file beside the target was left in dir ("." names). */
+static bool fs_temp_left(const char *dir)
+{
+    char cmd[700];
+    snprintf(cmd, sizeof cmd, "ls -a '%s' | grep -q '^\\..*\\.tmp$'", dir);
+    return system(cmd) == 0;
+}
+
+static long fs_size(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 ? (long)st.st_size : -1;
+}
+
+/* A file written is complete, or the target is as it was: a write that
+ * fails half way (a file size limit: EFBIG) leaves the old file, says
+ * why, and leaves no new file behind. Through a link, the file it names
+ * is replaced and the link stays. */
+void an_output_should_be_replaced_whole_or_left_as_it_was(void)
+{
+    fs_make_tree();
+    static uint8_t big[16384];
+    memset(big, 'x', sizeof big);
+    char out[600];
+    snprintf(out, sizeof out, "%s", fs_path("scene/out.h"));
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_file(out, "old", 3, msg, sizeof msg), msg);
+    struct rlimit old_limit, small;
+    TEST_ASSERT_EQUAL(0, getrlimit(RLIMIT_FSIZE, &old_limit));
+    small = old_limit;
+    small.rlim_cur = 4096;
+    void (*old_handler)(int) = signal(SIGXFSZ, SIG_IGN);
+    TEST_ASSERT_EQUAL(0, setrlimit(RLIMIT_FSIZE, &small));
+    mote_result r = mote_write_file(out, big, sizeof big, msg, sizeof msg);
+    /* an image too: noise does not compress below the limit */
+    static uint8_t noise[64 * 64 * 4];
+    tu_rng rng = tu_rng_seed(7);
+    for (size_t i = 0; i < sizeof noise; i++)
+        noise[i] = (uint8_t)tu_rand_u64(&rng);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_file(fs_path("scene/old.png"), "old", 3, msg, sizeof msg));
+    mote_result r_png = mote_write_rgba(fs_path("scene/old.png"), noise, 64, 64, 0, msg, sizeof msg);
+    setrlimit(RLIMIT_FSIZE, &old_limit);
+    signal(SIGXFSZ, old_handler);
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, r_png);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "write error: File too large"), msg);
+    TEST_ASSERT_EQUAL(3, fs_size(fs_path("scene/old.png")));
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, r);
+    TEST_ASSERT_EQUAL(3, fs_size(out));
+    TEST_ASSERT_FALSE(fs_temp_left(fs_path("scene")));
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_file(out, big, sizeof big, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL((long)sizeof big, fs_size(out));
+    /* through a link: the file replaced, the link kept */
+    fs_link("out.h", "scene/link.h");
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_file(fs_path("scene/link.h"), "new", 3, msg,
+                                                       sizeof msg), msg);
+    struct stat st;
+    TEST_ASSERT_EQUAL(0, lstat(fs_path("scene/link.h"), &st));
+    TEST_ASSERT_TRUE(S_ISLNK(st.st_mode));
+    TEST_ASSERT_EQUAL(3, fs_size(out));
+    fs_link("nothing.h", "scene/dangling.h");
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_file(fs_path("scene/dangling.h"), "x", 1, msg,
+                                                   sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "a symbolic link to nothing"), msg);
+    TEST_ASSERT_FALSE(fs_temp_left(fs_path("scene")));
+}
+
+/* What is no regular file is never removed: a device is written in place
+ * (/dev/full, through a link, says why it failed, and it and the link
+ * stay), a FIFO is written when someone reads it and refused at once
+ * when no one does, a directory is refused. */
+void an_output_that_is_no_regular_file_should_be_written_in_place_or_refused(void)
+{
+    fs_make_tree();
+    struct stat st;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_file("/dev/null", "x", 1, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(0, stat("/dev/null", &st));
+    TEST_ASSERT_TRUE(S_ISCHR(st.st_mode));
+    if (stat("/dev/full", &st) == 0) {
+        fs_link("/dev/full", "scene/full.png");
+        uint8_t px[4 * 4 * 4] = {0};
+        TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_rgba(fs_path("scene/full.png"), px, 4, 4, 0,
+                                                       msg, sizeof msg));
+        TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "write error: No space left on device"), msg);
+        TEST_ASSERT_EQUAL(0, lstat(fs_path("scene/full.png"), &st));
+        TEST_ASSERT_EQUAL(0, stat("/dev/full", &st));
+        TEST_ASSERT_TRUE(S_ISCHR(st.st_mode));
+    }
+    char fifo[600];
+    snprintf(fifo, sizeof fifo, "%s", fs_path("scene/fifo.h"));
+    TEST_ASSERT_EQUAL(0, mkfifo(fifo, 0600));
+    alarm(30);
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_file(fifo, "x", 1, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "a FIFO that no one reads"), msg);
+    int reader = open(fifo, O_RDONLY | O_NONBLOCK);
+    TEST_ASSERT_TRUE(reader >= 0);
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_write_file(fifo, "hello", 5, msg, sizeof msg), msg);
+    char got[8] = "";
+    TEST_ASSERT_EQUAL(5, read(reader, got, sizeof got));
+    TEST_ASSERT_EQUAL_MEMORY("hello", got, 5);
+    close(reader);
+    alarm(0);
+    TEST_ASSERT_EQUAL(0, lstat(fifo, &st));
+    TEST_ASSERT_TRUE(S_ISFIFO(st.st_mode));
+    TEST_ASSERT_EQUAL(MOTE_ERR_IO, mote_write_file(fs_path("scene/sub"), "x", 1, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "not written: a directory"), msg);
+    TEST_ASSERT_FALSE(fs_temp_left(fs_path("scene")));
+}
+
+/* mote_scene_reads_file knows the scene file and its textures by what
+ * they are, not by name, so that tools can refuse to write over them. */
+void a_scene_should_know_the_files_it_was_read_from(void)
+{
+    fs_make_tree();
+    const char *scene = "{\"materials\":[{\"id\":\"m\",\"diffuseTexture\":{\"name\":\"in.png\"}}]}";
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_file(fs_path("scene/s.babylon"), scene, strlen(scene),
+                                               msg, sizeof msg));
+    fs_link("scene/s.babylon", "s_link.babylon");
+    mote_scene sc;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(fs_path("scene/s.babylon"), NULL, &sc, msg,
+                                                       sizeof msg), msg);
+    TEST_ASSERT_TRUE(mote_scene_reads_file(&sc, fs_path("s_link.babylon")));
+    TEST_ASSERT_TRUE(mote_scene_reads_file(&sc, fs_path("scene/./in.png")));
+    TEST_ASSERT_FALSE(mote_scene_reads_file(&sc, fs_path("outside/outside.png")));
+    TEST_ASSERT_FALSE(mote_scene_reads_file(&sc, fs_path("scene/none.png")));
+    TEST_ASSERT_FALSE(mote_scene_reads_file(&sc, NULL));
+    TEST_ASSERT_FALSE(mote_scene_reads_file(NULL, fs_path("scene/s.babylon")));
+    mote_scene_free(&sc);
+    TEST_ASSERT_FALSE(mote_scene_reads_file(&sc, fs_path("scene/s.babylon")));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -591,5 +1068,14 @@ int main(void)
     RUN_TEST(a_very_large_mesh_should_be_drawn_completely);
     RUN_TEST(an_arena_just_large_enough_to_bin_should_hold_its_tile_table);
     RUN_TEST(invalid_vertices_of_a_draw_cut_into_pieces_should_stay_defined);
+    RUN_TEST(links_leading_out_of_the_scene_folder_should_not_be_followed);
+    RUN_TEST(links_staying_inside_the_scene_folder_should_be_followed);
+    RUN_TEST(a_fifo_swapped_in_under_a_texture_name_should_never_block_a_load);
+    RUN_TEST(a_texture_under_many_names_should_be_decoded_once);
+    RUN_TEST(the_textures_of_a_scene_should_be_held_to_the_total_limit);
+    RUN_TEST(camera_matrices_of_a_null_camera_should_be_the_identity);
+    RUN_TEST(an_output_should_be_replaced_whole_or_left_as_it_was);
+    RUN_TEST(an_output_that_is_no_regular_file_should_be_written_in_place_or_refused);
+    RUN_TEST(a_scene_should_know_the_files_it_was_read_from);
     return UNITY_END();
 }

@@ -7,7 +7,7 @@
  * firmware then renders with no file system, no JSON and no heap.
  *
  *   mote-bake SCENE.babylon -o scene.h [--format rgb565|rgba8888|grey8]
- *             [--name NAME] [--size WxH] [--texture-size WxH]
+ *             [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]
  *
  * Floats are written as C99 hexadecimal literals, so the baked scene is the
  * loaded one bit for bit. --size is the frame the camera's aspect is made
@@ -16,6 +16,15 @@
  * camera (the others hidden), with a warning: the header has no camera
  * of its own to choose by. --texture-size resamples every texture to WxH
  * with a box filter, so that a large image fits a small chip's flash.
+ *
+ * The header always compiles as C99: each texture is an array of its
+ * texel type as long as its texels, in a union with a uint32_t so that it
+ * is aligned as the core reads it on any target; names whose macros
+ * <limits.h> or <stdint.h> define (INT_WIDTH, SIZE_WIDTH...) are refused;
+ * the scene's path is escaped in the header's comment. The header is
+ * built in memory, at most --max-bytes (default 64 MiB: textures are
+ * refused from their image headers when they cannot fit), and written as
+ * mote_write_file writes (never over the scene's own files).
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -23,14 +32,20 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define MOTE_BAKE_MAX(a, b) ((a) > (b) ? (a) : (b))
+/* --max-bytes by default: larger than any texture a microcontroller holds
+ * (a 1024 x 1024 RGB565 texture bakes to 7.3 MB of text). */
+#define DEFAULT_MAX_BYTES ((size_t)64 << 20)
 
 typedef struct baker {
-    FILE *f;
+    char *text;                   /* the header so far */
+    size_t size, cap;
+    size_t max_bytes;             /* --max-bytes */
+    bool too_big, out_of_memory;  /* put() stopped */
     const char *name;             /* C identifier prefix */
     mote_format format;           /* of the baked textures */
     int texture_width, texture_height; /* --texture-size; 0: as loaded */
@@ -45,11 +60,57 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: mote-bake SCENE.babylon -o OUT.h [--format rgb565|rgba8888|grey8]\n"
-            "                 [--name NAME] [--size WxH] [--texture-size WxH]\n"
+            "                 [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]\n"
             "Writes a C header with the scene's meshes, textures (in FORMAT, default\n"
             "rgb565), camera and lights as const mote structs (identifiers NAME_*,\n"
-            "default scene) for a frame of WxH pixels (default 320x240).\n"
-            "--texture-size resamples every texture to WxH (a box filter).\n");
+            "default scene) for a frame of WxH pixels (default 320x240), of at most\n"
+            "N bytes (default %zu). --texture-size resamples every texture to WxH\n"
+            "(a box filter).\n", (size_t)DEFAULT_MAX_BYTES);
+}
+
+/* Appends printf output to the header, up to b->max_bytes. */
+static void put(baker *b, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static void put(baker *b, const char *fmt, ...)
+{
+    if (b->too_big || b->out_of_memory)
+        return;
+    char small[128];
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(small, sizeof small, fmt, ap);
+    va_end(ap);
+    if (n < 0) {
+        b->out_of_memory = true;
+        return;
+    }
+    if ((size_t)n > b->max_bytes - b->size) {
+        b->too_big = true;
+        return;
+    }
+    if (b->size + (size_t)n + 1 > b->cap) {
+        size_t cap = b->cap ? b->cap : 65536;
+        while (cap < b->size + (size_t)n + 1)
+            cap *= 2;
+        char *grown = realloc(b->text, cap);
+        if (!grown) {
+            b->out_of_memory = true;
+            return;
+        }
+        b->text = grown;
+        b->cap = cap;
+    }
+    if ((size_t)n < sizeof small) {
+        memcpy(b->text + b->size, small, (size_t)n + 1);
+    } else {
+        va_start(ap, fmt);
+        vsnprintf(b->text + b->size, (size_t)n + 1, fmt, ap);
+        va_end(ap);
+    }
+    b->size += (size_t)n;
 }
 
 /* A float as a C expression that gives exactly the same bits. */
@@ -66,10 +127,10 @@ static const char *flt(char buf[40], float v)
 static void put_floats(baker *b, const float *v, int n)
 {
     char buf[40];
-    fputc('{', b->f);
+    put(b, "{");
     for (int i = 0; i < n; i++)
-        fprintf(b->f, "%s%s", i ? ", " : "", flt(buf, v[i]));
-    fputc('}', b->f);
+        put(b, "%s%s", i ? ", " : "", flt(buf, v[i]));
+    put(b, "}");
 }
 
 static const char *format_name(mote_format f)
@@ -126,10 +187,12 @@ static uint8_t *box_filter(const mote_texture *t, int width, int height)
                          src + (size_t)y * (size_t)t->width * 4, MOTE_FORMAT_RGBA8888, t->width);
     for (int y = 0; y < height; y++) {
         int y0 = (int)((int64_t)y * t->height / height);
-        int y1 = MOTE_BAKE_MAX(y0 + 1, (int)((int64_t)(y + 1) * t->height / height));
+        int y1 = (int)((int64_t)(y + 1) * t->height / height);
+        y1 = y1 > y0 ? y1 : y0 + 1;
         for (int x = 0; x < width; x++) {
             int x0 = (int)((int64_t)x * t->width / width);
-            int x1 = MOTE_BAKE_MAX(x0 + 1, (int)((int64_t)(x + 1) * t->width / width));
+            int x1 = (int)((int64_t)(x + 1) * t->width / width);
+            x1 = x1 > x0 ? x1 : x0 + 1;
             uint64_t sum[4] = {0, 0, 0, 0}, n = (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
             for (int sy = y0; sy < y1; sy++)
                 for (int sx = x0; sx < x1; sx++)
@@ -145,14 +208,16 @@ static uint8_t *box_filter(const mote_texture *t, int width, int height)
 
 /* One texture converted to the target format (resampled first with
  * --texture-size), row by row. */
-static int write_texture(baker *b, const mote_texture *loaded, int slot)
+static void write_texture(baker *b, const mote_texture *loaded, int slot)
 {
     mote_texture resized = *loaded;
     uint8_t *resized_pixels = NULL;
     if (b->texture_width) {
         resized_pixels = box_filter(loaded, b->texture_width, b->texture_height);
-        if (!resized_pixels)
-            return -1;
+        if (!resized_pixels) {
+            b->out_of_memory = true;
+            return;
+        }
         resized = (mote_texture){b->texture_width, b->texture_height, MOTE_FORMAT_RGBA8888, 0,
                                  resized_pixels};
     }
@@ -162,69 +227,71 @@ static int write_texture(baker *b, const mote_texture *loaded, int slot)
     unsigned char *row = malloc((size_t)t->width * (size_t)bpp);
     if (!row) {
         free(resized_pixels);
-        return -1;
+        b->out_of_memory = true;
+        return;
     }
-    /* RGB565 in uint16_t, one a texel; the others in bytes, bpp a texel */
-    fprintf(b->f, "static const %s %s_texture%d_pixels[%d * %d * %d] = {\n",
-            bpp == 2 ? "uint16_t" : "uint8_t", b->name, slot, t->width, t->height, bpp == 2 ? 1 : bpp);
-    for (int y = 0; y < t->height; y++) {
+    /* the union aligns the texels to 4 bytes, as the core reads RGBA8888
+     * (an array of bytes alone may be placed at any address) */
+    put(b, "static const union {\n    %s pixels[%d * %d%s];\n    uint32_t align;\n} "
+           "%s_texture%d = {{\n", bpp == 2 ? "uint16_t" : "uint8_t", t->width, t->height,
+        bpp == 4 ? " * 4" : "", b->name, slot);
+    for (int y = 0; y < t->height && !b->too_big; y++) {
         mote_convert_row((const unsigned char *)t->pixels + (size_t)y * (size_t)src_stride, t->format,
                          row, b->format, t->width);
         for (int x = 0; x < t->width * (bpp == 2 ? 1 : bpp); x++) {
             if (bpp == 2) {
                 uint16_t v;
                 memcpy(&v, row + 2 * x, 2);
-                fprintf(b->f, "0x%04x,", v);
+                put(b, "0x%04x,", v);
             } else {
-                fprintf(b->f, "%u,", row[x]);
+                put(b, "%u,", row[x]);
             }
             if (x % 16 == 15)
-                fputc('\n', b->f);
+                put(b, "\n");
         }
-        fputc('\n', b->f);
+        put(b, "\n");
     }
-    fprintf(b->f, "};\n\n");
+    put(b, "}};\n\n");
     free(row);
     free(resized_pixels);
-    return 0;
 }
 
 static void write_vertices(baker *b, const mote_mesh *m, int array)
 {
-    fprintf(b->f, "static const mote_vertex %s_vertices%d[%u] = {\n", b->name, array,
+    put(b, "static const mote_vertex %s_vertices%d[%u] = {\n", b->name, array,
             (unsigned)m->vertex_count);
     for (uint32_t i = 0; i < m->vertex_count; i++) {
         const mote_vertex *v = &m->vertices[i];
-        fputc('{', b->f);
+        put(b, "{");
         put_floats(b, v->position, 3);
-        fputs(", ", b->f);
+        put(b, ", ");
         put_floats(b, v->normal, 3);
-        fputs(", ", b->f);
+        put(b, ", ");
         put_floats(b, v->uv, 2);
-        fputs("},\n", b->f);
+        put(b, "},\n");
     }
-    fprintf(b->f, "};\n\n");
+    put(b, "};\n\n");
 }
 
 static void write_colors(baker *b, const mote_mesh *m, int array)
 {
-    fprintf(b->f, "static const mote_rgba %s_colors%d[%u] = {\n", b->name, array,
+    put(b, "static const mote_rgba %s_colors%d[%u] = {\n", b->name, array,
             (unsigned)m->vertex_count);
     for (uint32_t i = 0; i < m->vertex_count; i++) {
         const mote_rgba *c = &m->colors[i];
-        fprintf(b->f, "%s{%u, %u, %u, %u},", i % 8 ? " " : "", c->r, c->g, c->b, c->a);
+        put(b, "%s{%u, %u, %u, %u},", i % 8 ? " " : "", c->r, c->g, c->b, c->a);
         if (i % 8 == 7)
-            fputc('\n', b->f);
+            put(b, "\n");
     }
-    fprintf(b->f, "%s};\n\n", m->vertex_count % 8 ? "\n" : "");
+    put(b, "%s};\n\n", m->vertex_count % 8 ? "\n" : "");
 }
 
 static void write_indices(baker *b, const mote_mesh *m, int array)
 {
-    fprintf(b->f, "static const uint32_t %s_indices%d[%u] = {\n", b->name, array, (unsigned)m->index_count);
+    put(b, "static const uint32_t %s_indices%d[%u] = {\n", b->name, array, (unsigned)m->index_count);
     for (uint32_t i = 0; i < m->index_count; i++)
-        fprintf(b->f, "%u,%s", (unsigned)m->indices[i], i % 16 == 15 ? "\n" : "");
-    fprintf(b->f, "\n};\n\n");
+        put(b, "%u,%s", (unsigned)m->indices[i], i % 16 == 15 ? "\n" : "");
+    put(b, "\n};\n\n");
 }
 
 static void write_mesh(baker *b, int i)
@@ -233,56 +300,55 @@ static void write_mesh(baker *b, int i)
     const mote_mesh *m = &s->meshes[i];
     const mote_material *mat = &m->material;
     char buf[40];
-    FILE *f = b->f;
-    fprintf(f, "    { /* %d */\n", i);
+    put(b, "    { /* %d */\n", i);
     if (b->vertex_array[i] >= 0)
-        fprintf(f, "        .vertices = %s_vertices%d,\n", b->name, b->vertex_array[i]);
-    fprintf(f, "        .vertex_count = %u,\n", (unsigned)m->vertex_count);
+        put(b, "        .vertices = %s_vertices%d,\n", b->name, b->vertex_array[i]);
+    put(b, "        .vertex_count = %u,\n", (unsigned)m->vertex_count);
     if (b->index_array[i] >= 0)
-        fprintf(f, "        .indices = %s_indices%d,\n", b->name, b->index_array[i]);
-    fprintf(f, "        .index_count = %u,\n", (unsigned)m->index_count);
-    fputs("        .position = ", f);
+        put(b, "        .indices = %s_indices%d,\n", b->name, b->index_array[i]);
+    put(b, "        .index_count = %u,\n", (unsigned)m->index_count);
+    put(b, "        .position = ");
     put_floats(b, m->position, 3);
-    fputs(",\n        .rotation = ", f);
+    put(b, ",\n        .rotation = ");
     put_floats(b, m->rotation, 3);
-    fputs(",\n        .rotation_quaternion = ", f);
+    put(b, ",\n        .rotation_quaternion = ");
     put_floats(b, m->rotation_quaternion, 4);
-    fprintf(f, ",\n        .use_quaternion = %s,\n", tf(m->use_quaternion));
+    put(b, ",\n        .use_quaternion = %s,\n", tf(m->use_quaternion));
     /* isVisible false, a disabled parent, a camera or light in the tree:
      * written only when set, so headers of scenes without any stay as
      * they were */
     if (m->hidden)
-        fputs("        .hidden = true,\n", f);
-    fputs("        .scaling = ", f);
+        put(b, "        .hidden = true,\n");
+    put(b, "        .scaling = ");
     put_floats(b, m->scaling, 3);
-    fputs(",\n", f);
+    put(b, ",\n");
     if (m->parent && m->parent >= s->meshes && m->parent < s->meshes + s->mesh_count)
-        fprintf(f, "        .parent = &%s_meshes[%d],\n", b->name, (int)(m->parent - s->meshes));
-    fprintf(f, "        .material = {\n            .color = {%u, %u, %u, %u},\n"
+        put(b, "        .parent = &%s_meshes[%d],\n", b->name, (int)(m->parent - s->meshes));
+    put(b, "        .material = {\n            .color = {%u, %u, %u, %u},\n"
                "            .color_set = %s,\n",
             mat->color.r, mat->color.g, mat->color.b, mat->color.a, tf(mat->color_set));
     if (mat->texture) {
         int t = (int)(mat->texture - s->textures);
-        fprintf(f, "            .texture = &%s_textures[%d],\n", b->name, b->texture_slot[t]);
+        put(b, "            .texture = &%s_textures[%d],\n", b->name, b->texture_slot[t]);
     }
-    fprintf(f, "            .wrap_u = %s,\n            .wrap_v = %s,\n", wrap_name(mat->wrap_u),
+    put(b, "            .wrap_u = %s,\n            .wrap_v = %s,\n", wrap_name(mat->wrap_u),
             wrap_name(mat->wrap_v));
-    fprintf(f, "            .u_scale = %s,\n", flt(buf, mat->u_scale));
-    fprintf(f, "            .v_scale = %s,\n", flt(buf, mat->v_scale));
-    fprintf(f, "            .u_offset = %s,\n", flt(buf, mat->u_offset));
-    fprintf(f, "            .v_offset = %s,\n", flt(buf, mat->v_offset));
-    fprintf(f, "            .v_origin_bottom = %s,\n", tf(mat->v_origin_bottom));
+    put(b, "            .u_scale = %s,\n", flt(buf, mat->u_scale));
+    put(b, "            .v_scale = %s,\n", flt(buf, mat->v_scale));
+    put(b, "            .u_offset = %s,\n", flt(buf, mat->u_offset));
+    put(b, "            .v_offset = %s,\n", flt(buf, mat->v_offset));
+    put(b, "            .v_origin_bottom = %s,\n", tf(mat->v_origin_bottom));
     /* written only when set, as .hidden */
     if (glows(mat))
-        fprintf(f, "            .emissive = {%u, %u, %u, %u},\n", mat->emissive.r, mat->emissive.g,
+        put(b, "            .emissive = {%u, %u, %u, %u},\n", mat->emissive.r, mat->emissive.g,
                 mat->emissive.b, mat->emissive.a);
-    fputs("        },\n", f);
-    fputs("        .bounds_center = ", f);
+    put(b, "        },\n");
+    put(b, "        .bounds_center = ");
     put_floats(b, m->bounds_center, 3);
-    fprintf(f, ",\n        .bounds_radius = %s,\n", flt(buf, m->bounds_radius));
+    put(b, ",\n        .bounds_radius = %s,\n", flt(buf, m->bounds_radius));
     if (b->color_array[i] >= 0)
-        fprintf(f, "        .colors = %s_colors%d,\n", b->name, b->color_array[i]);
-    fputs("    },\n", f);
+        put(b, "        .colors = %s_colors%d,\n", b->name, b->color_array[i]);
+    put(b, "    },\n");
 }
 
 /* A per-mesh flag of the scene's as an array NAME_WHAT (all 0 when the
@@ -290,50 +356,49 @@ static void write_mesh(baker *b, int i)
 static void write_mesh_flags(baker *b, const char *what, const char *comment, const bool *flags)
 {
     const int n = b->scene->mesh_count;
-    fprintf(b->f, "/* per mesh: %s */\n", comment);
-    fprintf(b->f, "static const bool %s_%s[%d] = {", b->name, what, n);
+    put(b, "/* per mesh: %s */\n", comment);
+    put(b, "static const bool %s_%s[%d] = {", b->name, what, n);
     for (int i = 0; i < n; i++)
-        fprintf(b->f, "%s%d", i ? ", " : "", flags && flags[i] ? 1 : 0);
-    fprintf(b->f, "};\n\n");
+        put(b, "%s%d", i ? ", " : "", flags && flags[i] ? 1 : 0);
+    put(b, "};\n\n");
 }
 
 static void write_frame(baker *b, const mote_frame_desc *fr)
 {
-    FILE *f = b->f;
     char buf[40];
-    fprintf(f, "static const mote_frame_desc %s_frame = {\n    .camera = {\n        .position = ", b->name);
+    put(b, "static const mote_frame_desc %s_frame = {\n    .camera = {\n        .position = ", b->name);
     put_floats(b, fr->camera.position, 3);
-    fputs(",\n        .target = ", f);
+    put(b, ",\n        .target = ");
     put_floats(b, fr->camera.target, 3);
-    fputs(",\n        .up = ", f);
+    put(b, ",\n        .up = ");
     put_floats(b, fr->camera.up, 3);
-    fprintf(f, ",\n        .fov = %s,\n", flt(buf, fr->camera.fov));
-    fprintf(f, "        .znear = %s,\n", flt(buf, fr->camera.znear));
-    fprintf(f, "        .zfar = %s,\n", flt(buf, fr->camera.zfar));
+    put(b, ",\n        .fov = %s,\n", flt(buf, fr->camera.fov));
+    put(b, "        .znear = %s,\n", flt(buf, fr->camera.znear));
+    put(b, "        .zfar = %s,\n", flt(buf, fr->camera.zfar));
     if (fr->camera.projection == MOTE_PROJECTION_ORTHOGRAPHIC) {
-        fputs("        .projection = MOTE_PROJECTION_ORTHOGRAPHIC,\n        .ortho = ", f);
+        put(b, "        .projection = MOTE_PROJECTION_ORTHOGRAPHIC,\n        .ortho = ");
         put_floats(b, fr->camera.ortho, 4);
-        fputs(",\n", f);
+        put(b, ",\n");
     }
-    fputs("    },\n    .lights = {\n", f);
+    put(b, "    },\n    .lights = {\n");
     for (int i = 0; i < fr->light_count && i < MOTE_MAX_LIGHTS; i++) {
         const mote_light *l = &fr->lights[i];
-        fprintf(f, "        {\n            .type = %s,\n            .position = ", light_name(l->type));
+        put(b, "        {\n            .type = %s,\n            .position = ", light_name(l->type));
         put_floats(b, l->position, 3);
-        fputs(",\n            .direction = ", f);
+        put(b, ",\n            .direction = ");
         put_floats(b, l->direction, 3);
-        fputs(",\n            .color = ", f);
+        put(b, ",\n            .color = ");
         put_floats(b, l->color, 3);
-        fputs(",\n            .ground_color = ", f);
+        put(b, ",\n            .ground_color = ");
         put_floats(b, l->ground_color, 3);
-        fprintf(f, ",\n            .intensity = %s,\n", flt(buf, l->intensity));
-        fprintf(f, "            .range = %s,\n", flt(buf, l->range));
-        fprintf(f, "            .spot_angle = %s,\n", flt(buf, l->spot_angle));
-        fprintf(f, "            .spot_exponent = %s,\n        },\n", flt(buf, l->spot_exponent));
+        put(b, ",\n            .intensity = %s,\n", flt(buf, l->intensity));
+        put(b, "            .range = %s,\n", flt(buf, l->range));
+        put(b, "            .spot_angle = %s,\n", flt(buf, l->spot_angle));
+        put(b, "            .spot_exponent = %s,\n        },\n", flt(buf, l->spot_exponent));
     }
-    fprintf(f, "    },\n    .light_count = %d,\n    .ambient = ", fr->light_count);
+    put(b, "    },\n    .light_count = %d,\n    .ambient = ", fr->light_count);
     put_floats(b, fr->ambient, 3);
-    fprintf(f, ",\n    .keep_color = %s,\n    .keep_depth = %s,\n};\n\n", tf(fr->keep_color),
+    put(b, ",\n    .keep_color = %s,\n    .keep_depth = %s,\n};\n\n", tf(fr->keep_color),
             tf(fr->keep_depth));
 }
 
@@ -370,22 +435,51 @@ static int share_arrays(const mote_scene *s, int *which, array_kind kind)
     return n;
 }
 
-static int bake(baker *b, int width, int height, const char *source)
+/* s as text for a comment: printable ASCII but '*' (no end of the
+ * comment), '\\' and '?' (no line splice, no trigraph), the other bytes
+ * as \xNN. */
+static char *comment_text(const char *s)
+{
+    size_t n = strlen(s);
+    char *out = malloc(4 * n + 1), *o = out;
+    if (!out)
+        return NULL;
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c >= 0x20 && c < 0x7f && c != '*' && c != '\\' && c != '?')
+            *o++ = (char)c;
+        else
+            o += sprintf(o, "\\x%02x", c);
+    }
+    *o = '\0';
+    return out;
+}
+
+/* The header, into b->text. */
+static void bake(baker *b, int width, int height, const char *source)
 {
     const mote_scene *s = b->scene;
-    FILE *f = b->f;
-    char guard[128];
+    /* macros are NAME_WIDTH...: the name in capitals */
+    char upper[72];
     size_t k = 0;
-    for (const char *c = b->name; *c && k < sizeof guard - 12; c++)
-        guard[k++] = (char)toupper((unsigned char)*c);
-    guard[k] = '\0';
+    for (const char *c = b->name; *c && k < sizeof upper - 1; c++)
+        upper[k++] = (char)toupper((unsigned char)*c);
+    upper[k] = '\0';
 
-    fprintf(f, "/* %s.h - baked by mote-bake from %s: do not edit. */\n", b->name, source);
-    fprintf(f, "#ifndef %s_BAKED_H\n#define %s_BAKED_H\n\n#include <mote/mote.h>\n\n", guard, guard);
-    fprintf(f, "#ifndef MOTE_BAKE_NAN\n#define MOTE_BAKE_NAN (__builtin_nanf(\"\"))\n"
+    char *from = comment_text(source);
+    if (!from) {
+        b->out_of_memory = true;
+        return;
+    }
+    put(b, "/* %s.h - baked by mote-bake from %s: do not edit. */\n", b->name, from);
+    free(from);
+    /* the guard keeps the name's case: "a" and "A" are two headers */
+    put(b, "#ifndef MOTE_BAKED_%s_H\n#define MOTE_BAKED_%s_H\n\n#include <mote/mote.h>\n\n",
+        b->name, b->name);
+    put(b, "#ifndef MOTE_BAKE_NAN\n#define MOTE_BAKE_NAN (__builtin_nanf(\"\"))\n"
                "#define MOTE_BAKE_INF (__builtin_inff())\n#endif\n\n");
-    fprintf(f, "#define %s_WIDTH %d\n#define %s_HEIGHT %d\n#define %s_MESH_COUNT %d\n\n", guard, width,
-            guard, height, guard, s->mesh_count);
+    put(b, "#define %s_WIDTH %d\n#define %s_HEIGHT %d\n#define %s_MESH_COUNT %d\n\n", upper, width,
+            upper, height, upper, s->mesh_count);
 
     /* only the textures some mesh uses: an unused static const would warn */
     int slots = 0;
@@ -396,22 +490,20 @@ static int bake(baker *b, int width, int height, const char *source)
                 b->texture_slot[t] = slots;
         if (b->texture_slot[t] < 0)
             continue;
-        if (write_texture(b, &s->textures[t], slots) != 0)
-            return -1;
+        write_texture(b, &s->textures[t], slots);
         slots++;
     }
     if (slots > 0) {
-        fprintf(f, "static const mote_texture %s_textures[%d] = {\n", b->name, slots);
+        put(b, "static const mote_texture %s_textures[%d] = {\n", b->name, slots);
         for (int t = 0; t < s->texture_count; t++) {
             const mote_texture *tx = &s->textures[t];
-            if (b->texture_slot[t] >= 0) {
-                int w = b->texture_width ? b->texture_width : tx->width;
-                int h = b->texture_width ? b->texture_height : tx->height;
-                fprintf(f, "    {%d, %d, %s, %d, %s_texture%d_pixels},\n", w, h, format_name(b->format),
-                        w * mote_format_bytes(b->format), b->name, b->texture_slot[t]);
-            }
+            const int w = b->texture_width ? b->texture_width : tx->width;
+            const int h = b->texture_width ? b->texture_height : tx->height;
+            if (b->texture_slot[t] >= 0)
+                put(b, "    {%d, %d, %s, %d, %s_texture%d.pixels},\n", w, h, format_name(b->format),
+                    w * mote_format_bytes(b->format), b->name, b->texture_slot[t]);
         }
-        fprintf(f, "};\n\n");
+        put(b, "};\n\n");
     }
 
     int nv = share_arrays(s, b->vertex_array, ARRAY_VERTICES);
@@ -436,10 +528,10 @@ static int bake(baker *b, int width, int height, const char *source)
                 break;
             }
     if (s->mesh_count > 0) {
-        fprintf(f, "static const mote_mesh %s_meshes[%d] = {\n", b->name, s->mesh_count);
+        put(b, "static const mote_mesh %s_meshes[%d] = {\n", b->name, s->mesh_count);
         for (int i = 0; i < s->mesh_count; i++)
             write_mesh(b, i);
-        fprintf(f, "};\n\n");
+        put(b, "};\n\n");
         /* culling and lighting are draw options, not mesh fields: the
          * firmware reads these to draw a mesh as mote_scene_draw_desc would */
         write_mesh_flags(b, "two_sided", "draw with cull = MOTE_CULL_NONE (backFaceCulling false)",
@@ -451,20 +543,66 @@ static int bake(baker *b, int width, int height, const char *source)
     memset(&frame, 0, sizeof frame);
     mote_scene_frame(s, (float)width / (float)height, &frame);
     write_frame(b, &frame);
-    fprintf(f, "static const mote_rgba %s_clear_color = {%u, %u, %u, %u};\n\n", b->name, s->clear_color.r,
+    put(b, "static const mote_rgba %s_clear_color = {%u, %u, %u, %u};\n\n", b->name, s->clear_color.r,
             s->clear_color.g, s->clear_color.b, s->clear_color.a);
-    fprintf(f, "#endif\n");
-    return ferror(f) ? -1 : 0;
+    put(b, "#endif\n");
 }
 
-static bool valid_name(const char *s)
+/* Whether the macro NAME_WIDTH is one of C23's <limits.h> or <stdint.h>
+ * widths (INT_WIDTH, SIZE_WIDTH, UINT8_WIDTH, INT_LEAST16_WIDTH...), upper
+ * being NAME in capitals. */
+static bool standard_width(const char *upper)
+{
+    static const char *const names[] = {"CHAR", "SCHAR", "UCHAR", "SHRT", "USHRT", "INT",
+                                        "UINT", "LONG", "ULONG", "LLONG", "ULLONG", "BOOL",
+                                        "INTPTR", "UINTPTR", "INTMAX", "UINTMAX", "PTRDIFF",
+                                        "SIG_ATOMIC", "SIZE", "WCHAR", "WINT", NULL};
+    for (int i = 0; names[i]; i++)
+        if (!strcmp(upper, names[i]))
+            return true;
+    const char *p = upper + (upper[0] == 'U');   /* (U)INTn, (U)INT_LEASTn, (U)INT_FASTn */
+    if (strncmp(p, "INT", 3) != 0)
+        return false;
+    p += 3;
+    if (!strncmp(p, "_LEAST", 6))
+        p += 6;
+    else if (!strncmp(p, "_FAST", 5))
+        p += 5;
+    if (!isdigit((unsigned char)*p))
+        return false;
+    while (isdigit((unsigned char)*p))
+        p++;
+    return *p == '\0';
+}
+
+/* Why --name cannot prefix the header's identifiers and macros, or NULL. */
+static const char *name_problem(const char *s)
 {
     if (!*s || strlen(s) > 64 || !(isalpha((unsigned char)*s) || *s == '_'))
-        return false;
-    for (; *s; s++)
-        if (!(isalnum((unsigned char)*s) || *s == '_'))
-            return false;
-    return true;
+        return "is not a C identifier (a letter or '_', then letters, digits, '_'; 64 at most)";
+    char upper[72];
+    size_t k = 0;
+    for (const char *c = s; *c; c++) {
+        if (!(isalnum((unsigned char)*c) || *c == '_'))
+            return "is not a C identifier (a letter or '_', then letters, digits, '_'; 64 at "
+                   "most)";
+        upper[k++] = (char)toupper((unsigned char)*c);
+    }
+    upper[k] = '\0';
+    if (s[0] == '_')
+        return "starts with '_', as names the C library reserves do";
+    if (!strcmp(upper, "MOTE") || !strncmp(upper, "MOTE_", 5))
+        return "is mote's own prefix";
+    if (standard_width(upper))
+        return "makes a macro NAME_WIDTH that <limits.h> or <stdint.h> defines";
+    return NULL;
+}
+
+/* The fewest characters a texel takes in the header: "0x0000," in
+ * RGB565, "0," a byte otherwise. */
+static size_t texel_chars(mote_format format)
+{
+    return format == MOTE_FORMAT_RGB565 ? 7 : 2 * (size_t)mote_format_bytes(format);
 }
 
 /* "WxH", each 1..MOTE_MAX_SIZE, nothing else (sscanf's %d was undefined
@@ -491,8 +629,8 @@ int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *name = "scene";
     mote_format format = MOTE_FORMAT_RGB565;
-    int width = 320, height = 240;
-    int texture_width = 0, texture_height = 0;
+    int width = 320, height = 240, texture_width = 0, texture_height = 0;
+    size_t max_bytes = DEFAULT_MAX_BYTES;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         bool has_value = i + 1 < argc;
@@ -527,12 +665,22 @@ int main(int argc, char **argv)
                         MOTE_MAX_SIZE, argv[i]);
                 return 2;
             }
+        } else if (!strcmp(a, "--max-bytes") && has_value) {
+            const char *v = argv[++i];
+            char *end;
+            errno = 0;
+            unsigned long long m = strtoull(v, &end, 10);
+            if (!isdigit((unsigned char)*v) || *end || errno || m < 1 || m > SIZE_MAX / 2) {
+                fprintf(stderr, "mote-bake: --max-bytes wants a count of bytes, got '%s'\n", v);
+                return 2;
+            }
+            max_bytes = (size_t)m;
         } else if (a[0] != '-' && !in) {
             in = a;
         } else {
             if (a[0] == '-' && !has_value && (!strcmp(a, "-o") || !strcmp(a, "--name")
                                               || !strcmp(a, "--format") || !strcmp(a, "--size")
-                                              || !strcmp(a, "--texture-size")))
+                                              || !strcmp(a, "--texture-size") || !strcmp(a, "--max-bytes")))
                 fprintf(stderr, "mote-bake: %s needs a value\n", a);
             else
                 fprintf(stderr, "mote-bake: unexpected argument '%s'\n", a);
@@ -544,16 +692,32 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    if (!valid_name(name)) {
-        fprintf(stderr, "mote-bake: --name '%s' is not a C identifier\n", name);
+    const char *problem = name_problem(name);
+    if (problem) {
+        fprintf(stderr, "mote-bake: --name '%s' %s; choose another\n", name, problem);
         return 2;
     }
 
+    /* textures that cannot fit in max_bytes are refused from their image
+     * headers, before they are decoded */
+    mote_limits limits = mote_limits_default();
+    size_t texels = max_bytes / texel_chars(format);
+    if (texels < limits.max_total_texture_bytes / 4)
+        limits.max_total_texture_bytes = texels ? texels * 4 : 1;
     mote_scene scene;
     char message[512] = "";
-    mote_result r = mote_scene_load(in, NULL, &scene, message, sizeof message);
+    mote_result r = mote_scene_load(in, &limits, &scene, message, sizeof message);
     if (r != MOTE_OK) {
         fprintf(stderr, "mote-bake: %s\n", message[0] ? message : mote_result_string(r));
+        if (r == MOTE_ERR_LIMIT && texels < mote_limits_default().max_total_texture_bytes / 4)
+            fprintf(stderr, "mote-bake: a header of at most %zu bytes (--max-bytes) holds %zu "
+                            "texels\n", max_bytes, texels);
+        return 1;
+    }
+    if (mote_scene_reads_file(&scene, out)) {
+        fprintf(stderr, "mote-bake: -o '%s' is the scene's own file or one of its textures: not "
+                        "overwritten\n", out);
+        mote_scene_free(&scene);
         return 1;
     }
     if (scene.warning[0])
@@ -591,25 +755,24 @@ int main(int argc, char **argv)
     int status = 1;
     size_t n = (size_t)(scene.mesh_count > 0 ? scene.mesh_count : 1);
     size_t nt = (size_t)(scene.texture_count > 0 ? scene.texture_count : 1);
-    baker b = {NULL, name, format, texture_width, texture_height, &scene, calloc(nt, sizeof(int)),
+    baker b = {NULL, 0, 0, max_bytes, false, false, name, format, texture_width, texture_height, &scene,
+               calloc(nt, sizeof(int)),
                calloc(n, sizeof(int)), calloc(n, sizeof(int)), calloc(n, sizeof(int))};
-    if (!b.texture_slot || !b.vertex_array || !b.index_array || !b.color_array) {
+    if (b.texture_slot && b.vertex_array && b.index_array && b.color_array)
+        bake(&b, width, height, in);
+    else
+        b.out_of_memory = true;
+    if (b.out_of_memory) {
         fprintf(stderr, "mote-bake: out of memory\n");
-        goto done;
+    } else if (b.too_big) {
+        fprintf(stderr, "mote-bake: %s: the header would be larger than --max-bytes %zu; "
+                        "not written\n", out, max_bytes);
+    } else if ((r = mote_write_file(out, b.text, b.size, message, sizeof message)) != MOTE_OK) {
+        fprintf(stderr, "mote-bake: %s\n", message[0] ? message : mote_result_string(r));
+    } else {
+        status = 0;
     }
-    b.f = fopen(out, "w");
-    if (!b.f) {
-        fprintf(stderr, "mote-bake: %s: cannot write: %s\n", out, strerror(errno));
-        goto done;
-    }
-    int w = bake(&b, width, height, in);
-    if (fclose(b.f) != 0 || w != 0) {
-        fprintf(stderr, "mote-bake: %s: write failed\n", out);
-        remove(out);
-        goto done;
-    }
-    status = 0;
-done:
+    free(b.text);
     free(b.texture_slot);
     free(b.vertex_array);
     free(b.index_array);

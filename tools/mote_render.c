@@ -21,7 +21,9 @@
  * --fov, --ortho's) chooses for the meshes as turned in it. A
  * texture file that is missing or cannot be read fails the load, unless
  * --allow-missing-textures: its material is then drawn in its colour, and
- * the loader's warning says which file it was.
+ * the loader's warning says which file it was. The image is written as
+ * mote_write_image writes (a new file renamed over OUT), and never over
+ * the scene's own file or one of its textures.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -333,6 +335,21 @@ static mote_result render_frame(mote_device *dev, const mote_frame_desc *frame,
     return r != MOTE_OK ? r : e;
 }
 
+/* The binning arena: twice what the scene's triangles need, so that a
+ * frame's binning rarely fills it, but at most ARENA_CAP however many
+ * instances a scene draws: once full, the core rasterises what it has
+ * binned and starts again (mote_stats.arena_flushes), slower but the same
+ * bytes. */
+#define ARENA_CAP ((size_t)256 << 20)
+
+static size_t arena_bytes(size_t triangles)
+{
+    const size_t per_triangle = mote_arena_bytes_per_triangle(), spare = (size_t)1 << 20;
+    if (triangles > (ARENA_CAP - spare) / per_triangle / 2)
+        return ARENA_CAP;
+    return per_triangle * triangles * 2 + spare;
+}
+
 static double now_ms(void)
 {
     struct timespec ts;
@@ -370,13 +387,17 @@ int main(int argc, char **argv)
         fprintf(stderr, "mote-render: warning: %s\n", scene.warning);
 
     int exit_code = 1;
+    if (mote_scene_reads_file(&scene, o.out_path)) {
+        fprintf(stderr, "mote-render: -o \"%s\" is the scene's own file or one of its "
+                        "textures: not overwritten\n", o.out_path);
+        mote_scene_free(&scene);
+        return 1;
+    }
     size_t pixels = (size_t)o.width * (size_t)o.height;
     size_t triangles = 0;
     for (int i = 0; i < scene.mesh_count; i++)
         triangles += scene.meshes[i].index_count / 3;
-    /* twice what the scene needs, so the arena never fills up (it would still
-     * be correct, only slower) */
-    size_t arena_size = mote_arena_bytes_per_triangle() * triangles * 2 + ((size_t)1 << 20);
+    size_t arena_size = arena_bytes(triangles);
     uint8_t *color = malloc(pixels * 4);
     uint32_t *depth = malloc(pixels * sizeof *depth);
     void *arena = malloc(arena_size);

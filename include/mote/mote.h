@@ -654,7 +654,9 @@ void mote_convert_row(const void *src, mote_format src_format,
 /* ---- the vertex stage, exposed for tools and tests ------------------- */
 
 /* Column-major 4x4 matrices (cglm layout: m[col][row] as float[16]).
- * mote_mesh_world_matrix of a NULL mesh is the identity. */
+ * mote_mesh_world_matrix of a NULL mesh is the identity, and so are the
+ * view and projection matrices of a NULL camera; a NULL matrix is left
+ * unwritten. */
 void mote_mesh_world_matrix(const mote_mesh *mesh, float world[16]);
 void mote_camera_view_matrix(const mote_camera *camera, float view[16]);
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect,

@@ -27,6 +27,14 @@ typedef struct mote_limits {
     int max_texture_width;        /* default 16384 */
     int max_texture_height;       /* default 16384 */
     size_t max_texture_bytes;     /* decoded, default 256 MiB */
+    /* All the textures of one scene, decoded, default 512 MiB: checked
+     * from each image's header before it is decoded. A file several
+     * materials name, under any name ("b.png", "./b.png", a link to it),
+     * is decoded once and counted once. Loading then holds at most this
+     * much in textures, plus, while one more decodes, its file's bytes
+     * and stb_image's working copies (an 8-bit RGB PNG's unfiltered rows:
+     * 0.75 times its decoded size). */
+    size_t max_total_texture_bytes;
     int max_json_depth;           /* default 64 */
     bool allow_any_texture_path;  /* false: only inside the scene's folder */
     bool missing_texture_is_warning; /* true: render untextured, warn */
@@ -131,6 +139,7 @@ typedef struct mote_scene {
      * chooses again for any camera. */
     const mote_lod *lods;
     int lod_count;
+    void *files_;                 /* private: the files read (mote_scene_reads_file) */
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
@@ -151,6 +160,13 @@ mote_result mote_scene_load_memory(const char *data, size_t size, const char *na
                                    const char *base_dir, const mote_limits *limits,
                                    mote_scene *out, char *message, size_t message_size);
 void mote_scene_free(mote_scene *scene);
+
+/* Whether path names a file the scene was read from: its scene file
+ * (mote_scene_load) or one its textures were decoded from. The same file
+ * by device and inode, whatever the name ("./b.png", a link, a hard
+ * link); false where the system cannot tell. mote-render and mote-bake
+ * refuse to write their output over their input with it. */
+bool mote_scene_reads_file(const mote_scene *scene, const char *path);
 
 /* Fills a frame (camera and lights) for the scene: its own camera when
  * it has one (a horizontal fov made vertical for aspect, width / height),
@@ -197,6 +213,16 @@ mote_result mote_write_image(const char *path, const mote_device *dev,
 /* The same from a plain RGBA8888 buffer. */
 mote_result mote_write_rgba(const char *path, const uint8_t *rgba, int width,
                             int height, int stride, char *message, size_t message_size);
+/* Writes size bytes of data to path, as the image writers above write:
+ * into a new file beside path, renamed over it once complete, so that a
+ * failed write leaves path as it was and removes nothing it did not
+ * create (a link is followed: the file it names is replaced). A
+ * terminal, /dev/null or a pipe (a character device, or a FIFO someone
+ * reads) is written in place; a directory, a block device, a FIFO no one
+ * reads or a link to nothing is refused. Errors are MOTE_ERR_IO with
+ * why ("write error: No space left on device"). */
+mote_result mote_write_file(const char *path, const void *data, size_t size,
+                            char *message, size_t message_size);
 
 /* ---- host parallelism -------------------------------------------------- */
 

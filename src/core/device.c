@@ -307,7 +307,7 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
         mote__sub3(dev->frame.lights[i].position, frame->camera.position);
     float proj[16], view[16];
     mote__view_rotation(&frame->camera, view);
-    mote_camera_projection_matrix(&frame->camera, (float)dev->desc.width / (float)dev->desc.height, proj);
+    mote__projection(&frame->camera, (float)dev->desc.width / (float)dev->desc.height, proj);
     mote__mat4_mul(proj, view, dev->view_proj);
     memset(&dev->stats, 0, sizeof dev->stats);
     dev->draw_count = 0;

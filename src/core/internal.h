@@ -93,6 +93,8 @@ bool mote__world_matrix(const mote_mesh *mesh, float world[16]);
 void mote__cross3(const float a[3], const float b[3], float out[3]);
 /* a -= b */
 void mote__sub3(float a[3], const float b[3]);
+/* mote_camera_projection_matrix without its NULL checks */
+void mote__projection(const mote_camera *camera, float aspect, float proj[16]);
 /* mote_camera_view_matrix without its translation: the camera's turn */
 void mote__view_rotation(const mote_camera *camera, float view[16]);
 float mote__sqrtf(float x);

@@ -263,6 +263,11 @@ void mote__view_rotation(const mote_camera *camera, float view[16])
 
 void mote_camera_view_matrix(const mote_camera *camera, float view[16])
 {
+    if (!camera || !view) {
+        if (view)
+            mote__mat4_identity(view);
+        return;
+    }
     mote__view_rotation(camera, view);
     for (int i = 0; i < 3; i++) {   /* minus the position along each axis */
         const float axis[3] = {view[i], view[4 + i], view[8 + i]};
@@ -271,6 +276,18 @@ void mote_camera_view_matrix(const mote_camera *camera, float view[16])
 }
 
 void mote_camera_projection_matrix(const mote_camera *camera, float aspect, float proj[16])
+{
+    if (!camera || !proj) {
+        if (proj)
+            mote__mat4_identity(proj);
+        return;
+    }
+    mote__projection(camera, aspect, proj);
+}
+
+/* mote_camera_projection_matrix of a camera and matrix the frame holds
+ * (no checks: a firmware that never calls the public one links none) */
+void mote__projection(const mote_camera *camera, float aspect, float proj[16])
 {
     /* Depth 0 at near and 1 at far. Defaults for zeros. */
     float n = camera->znear > 0.0f ? camera->znear : 0.1f;

@@ -1,19 +1,15 @@
 /*
- * common.c - the allocator, messages, limits and file reading shared by
- * src/io. The counters below exist for the failing-allocator tests; they are
- * updated with atomic builtins where the compiler has them, so that loading
- * scenes on several threads stays well defined.
+ * common.c - the allocator, messages and limits shared by src/io (files
+ * are file.c's). The counters below exist for the failing-allocator tests;
+ * they are updated with atomic builtins where the compiler has them, so
+ * that loading scenes on several threads stays well defined.
  */
 #include "io_internal.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <sys/stat.h>
-#endif
 
 static long mote__fail_after = -1;
 static long mote__live;
@@ -115,6 +111,7 @@ mote_limits mote_limits_default(void)
     l.max_texture_width = 16384;
     l.max_texture_height = 16384;
     l.max_texture_bytes = (size_t)256 << 20;
+    l.max_total_texture_bytes = (size_t)512 << 20;
     l.max_json_depth = 64;
     return l;
 }
@@ -132,6 +129,7 @@ mote_limits mote__io_limits(const mote_limits *limits)
     if (l.max_texture_width <= 0) l.max_texture_width = d.max_texture_width;
     if (l.max_texture_height <= 0) l.max_texture_height = d.max_texture_height;
     if (l.max_texture_bytes == 0) l.max_texture_bytes = d.max_texture_bytes;
+    if (l.max_total_texture_bytes == 0) l.max_total_texture_bytes = d.max_total_texture_bytes;
     if (l.max_json_depth <= 0) l.max_json_depth = d.max_json_depth;
     return l;
 }
@@ -148,106 +146,4 @@ void mote__io_clean_name(char *dst, size_t n, const char *s)
     dst[i] = '\0';
     if (i < len && n >= 4)
         memcpy(dst + n - 4, "...", 4);
-}
-
-/* Refuses a path that names something other than a regular file, before
- * it is opened: opening a FIFO waits for a writer that may never come, and
- * a device such as /dev/zero reads on until the size limit. A path that
- * cannot be examined is left to fopen to report. Plain C cannot tell;
- * there the size limit is the only guard. */
-static mote_result mote__io_check_regular_file(const char *path, const char *name,
-                                               char *message, size_t message_size)
-{
-#if defined(__unix__) || defined(__APPLE__)
-    struct stat st;
-    if (stat(path, &st) != 0 || S_ISREG(st.st_mode))
-        return MOTE_OK;
-    const char *what = "something else";
-    if (S_ISDIR(st.st_mode))
-        what = "a directory";
-    else if (S_ISFIFO(st.st_mode))
-        what = "a FIFO";
-    else if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
-        what = "a device";
-    return mote__io_error(message, message_size, MOTE_ERR_IO,
-                          "%s: cannot open: %s, not a regular file", name, what);
-#else
-    (void)path;
-    (void)name;
-    (void)message;
-    (void)message_size;
-    return MOTE_OK;
-#endif
-}
-
-mote_result mote__io_read_file(const char *path, size_t max_bytes, char **data,
-                               size_t *size, char *message, size_t message_size)
-{
-    *data = NULL;
-    *size = 0;
-    char name[160];
-    mote__io_clean_name(name, sizeof name, path);
-    mote_result checked = mote__io_check_regular_file(path, name, message, message_size);
-    if (checked != MOTE_OK)
-        return checked;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return mote__io_error(message, message_size, MOTE_ERR_IO, "%s: cannot open: %s",
-                              name, strerror(errno));
-    /* Read in chunks rather than trusting ftell: works for pipes, and the
-     * limit is enforced on the bytes actually read. */
-    size_t cap = 0, len = 0;
-    char *buf = NULL;
-    mote_result r = MOTE_OK;
-    for (;;) {
-        if (len == cap) {
-            if (cap > max_bytes) {
-                r = mote__io_error(message, message_size, MOTE_ERR_LIMIT,
-                                   "%s: file is larger than the limit of %zu bytes", name,
-                                   max_bytes);
-                break;
-            }
-            /* one byte past the limit tells a file over it; a limit of
-             * SIZE_MAX (no limit) must not wrap that to 0 */
-            size_t ncap = cap ? cap * 2 : 65536;
-            if (max_bytes < SIZE_MAX - 1 && ncap > max_bytes + 1)
-                ncap = max_bytes + 1;
-            char *nb = cap <= SIZE_MAX / 4 ? mote__io_malloc(ncap + 1) : NULL;
-            if (!nb) {
-                r = mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
-                                   "%s: out of memory reading %zu bytes", name, ncap);
-                break;
-            }
-            if (len)
-                memcpy(nb, buf, len);
-            mote__io_free(buf);
-            buf = nb;
-            cap = ncap;
-        }
-        size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0) {
-            if (ferror(f))
-                r = mote__io_error(message, message_size, MOTE_ERR_IO, "%s: read error", name);
-            break;
-        }
-    }
-    fclose(f);
-    if (r == MOTE_OK && len > max_bytes)
-        r = mote__io_error(message, message_size, MOTE_ERR_LIMIT,
-                           "%s: file is larger than the limit of %zu bytes", name, max_bytes);
-    if (r != MOTE_OK) {
-        mote__io_free(buf);
-        return r;
-    }
-    if (!buf) {
-        buf = mote__io_malloc(1);
-        if (!buf)
-            return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
-                                  "%s: out of memory", name);
-    }
-    buf[len] = '\0';
-    *data = buf;
-    *size = len;
-    return MOTE_OK;
 }

@@ -1,7 +1,8 @@
 /*
  * image_write.c - PNG (stb_image_write, implementation from libstb) and
  * binary PPM (P6, written here) from an RGBA8888 buffer or from a device's
- * colour buffer in any format.
+ * colour buffer in any format, written as file.c writes (a new file
+ * renamed over the target).
  */
 #include "io_internal.h"
 
@@ -15,33 +16,6 @@
 
 typedef enum { MOTE__IMG_PNG, MOTE__IMG_PPM } mote__img_kind;
 
-/* Opens path for writing; NULL with the message set when it cannot. */
-static FILE *mote__create(const char *path, const char *name, char *message,
-                          size_t message_size)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f)
-        mote__io_error(message, message_size, MOTE_ERR_IO, "%s: cannot create: %s", name,
-                       strerror(errno));
-    return f;
-}
-
-/* Closes f; every byte written (ok) and the close succeeding, or an error
- * naming the file (a full disk shows at fwrite or at fclose). */
-static mote_result mote__finish(FILE *f, bool ok, const char *name, char *message,
-                                size_t message_size)
-{
-    int err = ok ? 0 : errno;   /* why the write failed, before fclose changes it */
-    if (fclose(f) != 0 && ok) {
-        err = errno;
-        ok = false;
-    }
-    if (!ok)
-        return mote__io_error(message, message_size, MOTE_ERR_IO, "%s: write error%s%s", name,
-                              err ? ": " : "", err ? strerror(err) : "");
-    return MOTE_OK;
-}
-
 static mote_result mote__write_ppm_rgba(const char *path, const uint8_t *rgba, int width,
                                         int height, int stride, char *message,
                                         size_t message_size)
@@ -52,11 +26,13 @@ static mote_result mote__write_ppm_rgba(const char *path, const uint8_t *rgba, i
     if (!row)
         return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
                               "%s: out of memory", name);
-    FILE *f = mote__create(path, name, message, message_size);
-    if (!f) {
+    mote__io_output out;
+    mote_result r = mote__io_output_open(path, &out, message, message_size);
+    if (r != MOTE_OK) {
         mote__io_free(row);
-        return MOTE_ERR_IO;
+        return r;
     }
+    FILE *f = out.stream;
     bool ok = fprintf(f, "P6\n%d %d\n255\n", width, height) > 0;
     for (int y = 0; ok && y < height; y++) {
         const uint8_t *src = rgba + (size_t)y * (size_t)stride;
@@ -65,7 +41,7 @@ static mote_result mote__write_ppm_rgba(const char *path, const uint8_t *rgba, i
         ok = fwrite(row, 3, (size_t)width, f) == (size_t)width;
     }
     mote__io_free(row);
-    return mote__finish(f, ok, name, message, message_size);
+    return mote__io_output_close(&out, ok, path, message, message_size);
 }
 
 /* stb_image_write hands the encoded PNG to this: written here, so that a
@@ -95,17 +71,17 @@ static mote_result mote__write_png_rgba(const char *path, const uint8_t *rgba, i
         return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
                               "%s: %d x %d is too large for a PNG written by stb_image_write "
                               "(2 GiB of rows at the most)", name, width, height);
-    FILE *f = mote__create(path, name, message, message_size);
-    if (!f)
-        return MOTE_ERR_IO;
-    mote__png_sink sink = {f, true};
+    mote__io_output out;
+    mote_result r = mote__io_output_open(path, &out, message, message_size);
+    if (r != MOTE_OK)
+        return r;
+    mote__png_sink sink = {out.stream, true};
     if (!stbi_write_png_to_func(mote__png_write, &sink, width, height, 4, rgba, stride)) {
-        fclose(f);
-        remove(path);             /* nothing was written to it */
+        mote__io_output_discard(&out);    /* nothing was written */
         return mote__io_error(message, message_size, MOTE_ERR_OUT_OF_MEMORY,
                               "%s: out of memory encoding the PNG", name);
     }
-    return mote__finish(f, sink.ok, name, message, message_size);
+    return mote__io_output_close(&out, sink.ok, path, message, message_size);
 }
 
 static mote_result mote__write_rgba_as(mote__img_kind kind, const char *path,

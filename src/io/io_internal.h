@@ -1,7 +1,7 @@
 /*
  * io_internal.h - private helpers shared by the host I/O files: one
- * allocator (with a failure-injection hook for tests), message formatting
- * and file reading. Not API.
+ * allocator (with a failure-injection hook for tests), message formatting,
+ * files in and out, and the textures a scene gathers. Not API.
  */
 #ifndef MOTE_IO_INTERNAL_H
 #define MOTE_IO_INTERNAL_H
@@ -10,6 +10,8 @@
 
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
 
 /* Every allocation of src/io goes through these, so that tests can make
  * the n-th one fail and check that nothing leaks. */
@@ -43,10 +45,93 @@ mote_result mote__io_verror(char *message, size_t message_size, mote_result code
 /* Fills zero fields of *limits (or all, when NULL) with the defaults. */
 mote_limits mote__io_limits(const mote_limits *limits);
 
-/* Reads a whole file (at most max_bytes) into a buffer from mote__io_malloc,
- * with one extra NUL byte after the data. */
+/* ---- files (file.c) ---------------------------------------------------- */
+
+/* Which file a name reached, whatever the name: device and inode where
+ * the system has them, both 0 where it cannot tell. */
+typedef struct mote__io_file_id {
+    uint64_t device, inode;
+} mote__io_file_id;
+
+/* Whether a and b are known and the same file. */
+bool mote__io_same_file(mote__io_file_id a, mote__io_file_id b);
+/* The file path names now (links followed); unknown when there is none. */
+mote__io_file_id mote__io_file_id_of(const char *path);
+
+/* A regular file opened to be read. */
+typedef struct mote__io_file {
+    FILE *stream;
+    mote__io_file_id id;
+    char name[160];               /* its path in messages, control bytes replaced */
+} mote__io_file;
+
+/* Opens path to read. What it is, is checked on the opened descriptor,
+ * never on the name beforehand: a FIFO, a directory or a device is
+ * refused (MOTE_ERR_IO, "not a regular file"), and opening never waits on
+ * a FIFO's writer, whatever is swapped in under the name meanwhile. */
+mote_result mote__io_open(const char *path, mote__io_file *out, char *message,
+                          size_t message_size);
+
+/* Opens the file a scene in folder names (NULL or "": the current folder),
+ * as mote__io_open does, under the path rules of a scene's files:
+ * mote__io_name_escapes refuses the name as written (MOTE_ERR_RANGE, the
+ * name quoted and why), '\\' is read as '/', and the name is resolved
+ * beneath the folder as the system resolves it: a symbolic link (or a
+ * link in a folder on the way) that leads outside, an absolute link and
+ * /proc's magic links are refused (MOTE_ERR_RANGE), links that stay
+ * inside are followed. anywhere (limits.allow_any_texture_path): any
+ * name, relative ones from the folder. Other failures are MOTE_ERR_IO,
+ * "folder/name: cannot open: why". */
+mote_result mote__io_open_in_folder(const char *folder, const char *name, bool anywhere,
+                                    mote__io_file *out, char *message, size_t message_size);
+
+/* Whether a scene's name for a file breaks the path rules before it is
+ * looked up: empty, absolute (also "C:..." and "\\..."), or a ".."
+ * component; *why says which, to follow the quoted name in a message. */
+bool mote__io_name_escapes(const char *name, const char **why);
+
+/* Reads the whole of an open file (at most max_bytes) into a buffer from
+ * mote__io_malloc, with one extra NUL byte after the data, and closes it. */
+mote_result mote__io_read_open(mote__io_file *file, size_t max_bytes, char **data, size_t *size,
+                               char *message, size_t message_size);
+void mote__io_close(mote__io_file *file);
+
+/* mote__io_open, then mote__io_read_open. */
 mote_result mote__io_read_file(const char *path, size_t max_bytes, char **data,
                                size_t *size, char *message, size_t message_size);
+
+/* Test hook: nonzero resolves scene files by the walk, one component at a
+ * time, where openat2 would be used (both must refuse the same names). */
+void mote__io_resolve_by_walk(int on);
+
+/* A file being written: a new file beside the target (temp), renamed
+ * over it when complete; or, for a terminal, /dev/null or a pipe (a
+ * character device or a FIFO someone reads), the target itself, written
+ * in place. */
+typedef struct mote__io_output {
+    FILE *stream;
+    char *temp;                   /* NULL: written in place */
+    char *target;                 /* what temp replaces (a link's file, not the link) */
+} mote__io_output;
+
+/* Opens path for writing as above. A directory, a block device, a FIFO
+ * no one reads, a link to nothing: refused, MOTE_ERR_IO with why. */
+mote_result mote__io_output_open(const char *path, mote__io_output *out, char *message,
+                                 size_t message_size);
+/* Closes out: written completely (ok, and the close succeeds), the new
+ * file takes the target's place; else it is removed (never the target)
+ * and the message says why ("write error: No space left on device"). */
+mote_result mote__io_output_close(mote__io_output *out, bool ok, const char *path,
+                                  char *message, size_t message_size);
+/* Closes out and removes the new file, the target left as it was. */
+void mote__io_output_discard(mote__io_output *out);
+
+/* What a loader keeps of the files a scene was read from, for
+ * mote_scene_reads_file (mote_scene.files_). */
+typedef struct mote__scene_files {
+    mote__io_file_id scene;       /* the scene file (mote_scene_load) */
+    const mote__io_file_id *textures; /* per scene texture (unknown: embedded) */
+} mote__scene_files;
 
 /* Copies s into dst (size n) replacing control bytes with '?', and
  * shortening with "..." past n - 1 bytes: names from files are quoted in
@@ -61,6 +146,34 @@ bool mote__io_is_data_url(const char *s);
 mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *limits,
                                            mote_texture *out, char *message,
                                            size_t message_size);
+
+/* ---- the textures of a scene (texture.c) ------------------------------- */
+
+/* The textures a loader gathers for one scene: each file (by device and
+ * inode, so "b.png", "./b.png" and a link to it are one) and each data:
+ * URL decoded once, and all of them together held to
+ * limits->max_total_texture_bytes, checked from each image's header
+ * before it is decoded. The arrays are the loader's, room for cap. */
+typedef struct mote__texture_set {
+    mote_texture *textures;       /* the scene's */
+    mote__io_file_id *files;      /* per texture: the file it was read from (unknown: embedded) */
+    const char **urls;            /* per texture: the data: URL it was decoded from, or NULL */
+    int count, cap;
+    size_t bytes;                 /* decoded bytes of all of them */
+} mote__texture_set;
+
+/* The texture in the file `name` in folder (mote__io_open_in_folder, under
+ * the path rules of limits->allow_any_texture_path): *index, the set's
+ * texture already read from that file, or a new one. Messages as
+ * mote__io_open_in_folder's and mote_texture_load's ("folder/name: why");
+ * MOTE_ERR_RANGE only for a name that breaks the path rules. */
+mote_result mote__texture_set_file(mote__texture_set *set, const char *folder, const char *name,
+                                   const mote_limits *limits, int *index, char *message,
+                                   size_t message_size);
+/* The same for an image embedded as a data: URL. */
+mote_result mote__texture_set_data_url(mote__texture_set *set, const char *url,
+                                       const mote_limits *limits, int *index, char *message,
+                                       size_t message_size);
 
 /* Whether w x h pixels are more than *limits allow: the decode refuses
  * every such image by its size, before stb_image decodes it. */

@@ -166,6 +166,9 @@ mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *b
     if (!ld->keep)
         return mote__oom(ld, "scene");
     out->storage_ = ld->keep;
+    out->files_ = mote__store_alloc(ld->keep, 1, sizeof(mote__scene_files));
+    if (!out->files_)
+        return mote__oom(ld, "scene");
     return MOTE_OK;
 }
 

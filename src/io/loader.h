@@ -75,8 +75,8 @@ typedef struct mote__loader {
     mote_scene *scene;            /* what is built; zeroed again when the load fails */
     mote__store *keep;            /* becomes scene->storage_ */
     mote__store tmp;              /* released when the load ends */
-    int texture_cap;              /* room in scene->textures (mote__texture_slots) */
-    const char **texture_paths;   /* resolved path (or data: URL) of scene->textures[i] */
+    mote__texture_set textures;   /* scene->textures, each file or data: URL decoded once
+                                     (mote__texture_slots) */
     mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
     int warning_count;
     unsigned warnings_dropped;    /* given after the list was full */

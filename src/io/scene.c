@@ -213,8 +213,11 @@ mote_result mote_scene_load(const char *path, const mote_limits *limits, mote_sc
     mote_limits lim = mote__io_limits(limits);
     char *data = NULL;
     size_t size = 0;
-    mote_result r =
-        mote__io_read_file(path, lim.max_file_bytes, &data, &size, message, message_size);
+    mote__io_file file;
+    mote_result r = mote__io_open(path, &file, message, message_size);
+    const mote__io_file_id id = file.id;
+    if (r == MOTE_OK)
+        r = mote__io_read_open(&file, lim.max_file_bytes, &data, &size, message, message_size);
     if (r != MOTE_OK)
         return r;
     /* split "dir/name.babylon": textures resolve in dir, messages say name */
@@ -240,6 +243,8 @@ mote_result mote_scene_load(const char *path, const mote_limits *limits, mote_sc
         dir[dir_len++] = '/'; /* "/scene.babylon" lives in "/" */
     dir[dir_len] = '\0';
     r = mote_scene_load_memory(data, size, base, dir, &lim, out, message, message_size);
+    if (r == MOTE_OK)
+        ((mote__scene_files *)out->files_)->scene = id;
     mote__io_free(dir);
     mote__io_free(data);
     return r;

@@ -6,7 +6,8 @@
  * that a file claiming 100000 x 100000 pixels is refused before anything is
  * decoded. Images embedded in scene files as
  * base64 data: URLs (Babylon.js's SceneSerializer) are decoded here too and
- * go through the same checks.
+ * go through the same checks, and so are the textures a scene gathers
+ * (mote__texture_set: one decode per file, a limit on all together).
  */
 #include "io_internal.h"
 
@@ -30,8 +31,50 @@ static bool mote__png_size(const unsigned char *d, size_t size, uint32_t *w, uin
 }
 
 static mote_result mote__texture_decode(const unsigned char *d, size_t size,
-                                        const mote_limits *limits, mote_texture *out,
-                                        char *message, size_t message_size);
+                                        const mote_limits *limits, size_t budget,
+                                        mote_texture *out, char *message, size_t message_size);
+
+/* mote_texture_load_memory with the limits filled in, and the image
+ * refused from its header when its decoded bytes are over budget (what is
+ * left of a scene's max_total_texture_bytes). */
+static mote_result mote__texture_load_within(const void *data, size_t size,
+                                             const mote_limits *lim, size_t budget,
+                                             mote_texture *out, char *message,
+                                             size_t message_size)
+{
+    memset(out, 0, sizeof *out);
+    if (size == 0)
+        return mote__io_error(message, message_size, MOTE_ERR_PARSE, "texture: empty image");
+    if (size > (size_t)INT_MAX)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %zu bytes is more than stb_image can read", size);
+    uint32_t pw, ph;
+    if (mote__png_size(data, size, &pw, &ph) &&
+        (pw > (uint32_t)lim->max_texture_width || ph > (uint32_t)lim->max_texture_height))
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %lu x %lu is larger than the limit of %d x %d",
+                              (unsigned long)pw, (unsigned long)ph, lim->max_texture_width,
+                              lim->max_texture_height);
+    /* over budget, the screen passes the image by as over the limits,
+     * for the decode to refuse it by its size */
+    mote_limits screened = *lim;
+    if (budget < screened.max_texture_bytes)
+        screened.max_texture_bytes = budget;
+    unsigned char *fixed = NULL;
+    size_t fixed_size = 0;
+    mote_result r = mote__stb_guard(data, size, &screened, &fixed, &fixed_size, message,
+                                         message_size);
+    if (r != MOTE_OK)
+        return r;
+    if (fixed && fixed_size > (size_t)INT_MAX)
+        r = mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                           "texture: %zu bytes is more than stb_image can read", fixed_size);
+    else
+        r = mote__texture_decode(fixed ? fixed : data, fixed ? fixed_size : size, lim, budget,
+                                 out, message, message_size);
+    mote__io_free(fixed);
+    return r;
+}
 
 mote_result mote_texture_load_memory(const void *data, size_t size,
                                      const mote_limits *limits, mote_texture *out,
@@ -45,32 +88,7 @@ mote_result mote_texture_load_memory(const void *data, size_t size,
         return mote__io_error(message, message_size, MOTE_ERR_INVALID_ARGUMENT,
                               "texture: no data given");
     mote_limits lim = mote__io_limits(limits);
-    if (size == 0)
-        return mote__io_error(message, message_size, MOTE_ERR_PARSE, "texture: empty image");
-    if (size > (size_t)INT_MAX)
-        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
-                              "texture: %zu bytes is more than stb_image can read", size);
-    uint32_t pw, ph;
-    if (mote__png_size(data, size, &pw, &ph) &&
-        (pw > (uint32_t)lim.max_texture_width || ph > (uint32_t)lim.max_texture_height))
-        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
-                              "texture: %lu x %lu is larger than the limit of %d x %d",
-                              (unsigned long)pw, (unsigned long)ph, lim.max_texture_width,
-                              lim.max_texture_height);
-    unsigned char *fixed = NULL;
-    size_t fixed_size = 0;
-    mote_result r = mote__stb_guard(data, size, &lim, &fixed, &fixed_size, message,
-                                    message_size);
-    if (r != MOTE_OK)
-        return r;
-    if (fixed && fixed_size > (size_t)INT_MAX)
-        r = mote__io_error(message, message_size, MOTE_ERR_LIMIT,
-                           "texture: %zu bytes is more than stb_image can read", fixed_size);
-    else
-        r = mote__texture_decode(fixed ? fixed : data, fixed ? fixed_size : size, &lim, out,
-                                 message, message_size);
-    mote__io_free(fixed);
-    return r;
+    return mote__texture_load_within(data, size, &lim, SIZE_MAX, out, message, message_size);
 }
 
 bool mote__texture_over_limits(const mote_limits *limits, size_t w, size_t h)
@@ -83,8 +101,8 @@ bool mote__texture_over_limits(const mote_limits *limits, size_t w, size_t h)
  * checks refuse whatever mote__texture_over_limits says is over (the
  * guard counts on it). */
 static mote_result mote__texture_decode(const unsigned char *d, size_t size,
-                                        const mote_limits *limits, mote_texture *out,
-                                        char *message, size_t message_size)
+                                        const mote_limits *limits, size_t budget,
+                                        mote_texture *out, char *message, size_t message_size)
 {
     const mote_limits lim = *limits;
     /* Two of stb_image's decoders are refused before they see the bytes,
@@ -120,6 +138,11 @@ static mote_result mote__texture_decode(const unsigned char *d, size_t size,
         return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
                               "texture: %d x %d needs %zu bytes, more than the limit of %zu",
                               w, h, bytes, lim.max_texture_bytes);
+    if (bytes > budget)
+        return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                              "texture: %d x %d needs %zu bytes, more than the %zu left of the "
+                              "limit of %zu on all of a scene's textures", w, h, bytes, budget,
+                              lim.max_total_texture_bytes);
     /* stb_image sizes its 16-bit conversions (16-bit PNG and PSD to 8 bits,
      * 1-3 channels to 4) in int or unsigned arithmetic it does not check:
      * past 2^28 pixels the buffer wraps small and it writes past it (upstream
@@ -163,6 +186,25 @@ static const char *mote__why(const char *inner)
     return strncmp(inner, "texture: ", 9) == 0 ? inner + 9 : inner;
 }
 
+/* Reads an open file and decodes it within budget; the message starts
+ * with the file's name. */
+static mote_result mote__texture_read(mote__io_file *file, const mote_limits *lim, size_t budget,
+                                      mote_texture *out, char *message, size_t message_size)
+{
+    char *data = NULL;
+    size_t size = 0;
+    mote_result r = mote__io_read_open(file, lim->max_file_bytes, &data, &size, message,
+                                       message_size);
+    if (r != MOTE_OK)
+        return r;
+    char inner[256];
+    r = mote__texture_load_within(data, size, lim, budget, out, inner, sizeof inner);
+    mote__io_free(data);
+    if (r != MOTE_OK)
+        mote__io_error(message, message_size, r, "%s: %s", file->name, mote__why(inner));
+    return r;
+}
+
 mote_result mote_texture_load(const char *path, const mote_limits *limits,
                               mote_texture *out, char *message, size_t message_size)
 {
@@ -171,21 +213,11 @@ mote_result mote_texture_load(const char *path, const mote_limits *limits,
                               "texture: no path or no output texture given");
     memset(out, 0, sizeof *out);
     mote_limits lim = mote__io_limits(limits);
-    char *data = NULL;
-    size_t size = 0;
-    mote_result r = mote__io_read_file(path, lim.max_file_bytes, &data, &size, message,
-                                       message_size);
+    mote__io_file file;
+    mote_result r = mote__io_open(path, &file, message, message_size);
     if (r != MOTE_OK)
         return r;
-    char inner[256];
-    r = mote_texture_load_memory(data, size, &lim, out, inner, sizeof inner);
-    mote__io_free(data);
-    if (r != MOTE_OK) {
-        char name[160];
-        mote__io_clean_name(name, sizeof name, path);
-        mote__io_error(message, message_size, r, "%s: %s", name, mote__why(inner));
-    }
-    return r;
+    return mote__texture_read(&file, &lim, SIZE_MAX, out, message, message_size);
 }
 
 /* ---- embedded images (data: URLs) ------------------------------------ */
@@ -255,9 +287,9 @@ bool mote__io_is_data_url(const char *s)
     return true;
 }
 
-mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *limits,
-                                           mote_texture *out, char *message,
-                                           size_t message_size)
+/* mote__io_texture_load_data_url within budget (see mote__texture_load_within). */
+static mote_result mote__data_url_load(const char *url, const mote_limits *limits, size_t budget,
+                                       mote_texture *out, char *message, size_t message_size)
 {
     memset(out, 0, sizeof *out);
     mote_limits lim = mote__io_limits(limits);
@@ -291,11 +323,94 @@ mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *l
                            "invalid base64 at character %zu of %zu (0x%02x)", bad, len, c);
     } else {
         char inner[256];
-        r = mote_texture_load_memory(data, size, &lim, out, inner, sizeof inner);
+        r = mote__texture_load_within(data, size, &lim, budget, out, inner, sizeof inner);
         if (r != MOTE_OK)
             mote__io_error(message, message_size, r, "embedded image: %s", mote__why(inner));
     }
     mote__io_free(data);
+    return r;
+}
+
+mote_result mote__io_texture_load_data_url(const char *url, const mote_limits *limits,
+                                           mote_texture *out, char *message,
+                                           size_t message_size)
+{
+    return mote__data_url_load(url, limits, SIZE_MAX, out, message, message_size);
+}
+
+/* ---- the textures of a scene ------------------------------------------- */
+
+/* Adds the texture set->textures[set->count], just decoded, to the set. */
+static void mote__set_add(mote__texture_set *set, mote__io_file_id file, const char *url,
+                          int *index)
+{
+    const mote_texture *t = &set->textures[set->count];
+    set->files[set->count] = file;
+    set->urls[set->count] = url;
+    set->bytes += (size_t)t->stride * (size_t)t->height;
+    *index = set->count++;
+}
+
+static mote_result mote__set_full(const mote__texture_set *set, char *message,
+                                  size_t message_size)
+{
+    return mote__io_error(message, message_size, MOTE_ERR_LIMIT,
+                          "more than %d textures, one per material", set->cap);
+}
+
+/* What is left of limits->max_total_texture_bytes. */
+static size_t mote__set_budget(const mote__texture_set *set, const mote_limits *lim)
+{
+    return set->bytes < lim->max_total_texture_bytes ? lim->max_total_texture_bytes - set->bytes
+                                                      : 0;
+}
+
+mote_result mote__texture_set_file(mote__texture_set *set, const char *folder, const char *name,
+                                   const mote_limits *limits, int *index, char *message,
+                                   size_t message_size)
+{
+    *index = -1;
+    mote_limits lim = mote__io_limits(limits);
+    mote__io_file file;
+    mote_result r = mote__io_open_in_folder(folder, name, lim.allow_any_texture_path, &file,
+                                            message, message_size);
+    if (r != MOTE_OK)
+        return r;
+    for (int i = 0; i < set->count; i++)
+        if (mote__io_same_file(set->files[i], file.id)) {
+            mote__io_close(&file);
+            *index = i;
+            return MOTE_OK;
+        }
+    if (set->count >= set->cap) {
+        mote__io_close(&file);
+        return mote__set_full(set, message, message_size);
+    }
+    r = mote__texture_read(&file, &lim, mote__set_budget(set, &lim), &set->textures[set->count],
+                           message, message_size);
+    if (r == MOTE_OK)
+        mote__set_add(set, file.id, NULL, index);
+    return r;
+}
+
+mote_result mote__texture_set_data_url(mote__texture_set *set, const char *url,
+                                       const mote_limits *limits, int *index, char *message,
+                                       size_t message_size)
+{
+    *index = -1;
+    for (int i = 0; i < set->count; i++)
+        if (set->urls[i] && strcmp(set->urls[i], url) == 0) {
+            *index = i;
+            return MOTE_OK;
+        }
+    if (set->count >= set->cap)
+        return mote__set_full(set, message, message_size);
+    mote_limits lim = mote__io_limits(limits);
+    const mote__io_file_id none = {0, 0};
+    mote_result r = mote__data_url_load(url, &lim, mote__set_budget(set, &lim),
+                                        &set->textures[set->count], message, message_size);
+    if (r == MOTE_OK)
+        mote__set_add(set, none, url, index);
     return r;
 }
 

@@ -1,13 +1,17 @@
 # mote-bake against the loader: tests/bake/test_bake.c includes the headers
 # that mote-bake writes from tests/data/vertex_colors.babylon,
 # tests/data/bake_hidden.babylon and tests/data/ortho_camera.babylon (an
-# orthographic camera) and checks them against the same files loaded with
+# orthographic camera) and from assets/cube.babylon (textured) in each
+# texture format, and checks them against the same files loaded with
 # mote_scene_load, mesh by mesh and rendered; run by `make test`.
 
 BAKE_TEST_DIR := $(BUILD)/tests/bake
 BAKE_SCENE    := tests/data/vertex_colors.babylon
 BAKE_HIDDEN   := tests/data/bake_hidden.babylon
 BAKE_ORTHO    := tests/data/ortho_camera.babylon
+BAKE_CUBE     := assets/cube.babylon
+BAKE_FORMATS  := rgb565 rgba8888 grey8
+BAKE_CUBES    := $(patsubst %,$(BAKE_TEST_DIR)/cube_%.h,$(BAKE_FORMATS))
 
 $(BAKE_TEST_DIR)/baked.h: $(BAKE_SCENE) $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
@@ -21,9 +25,14 @@ $(BAKE_TEST_DIR)/baked_hidden.h: $(BAKE_HIDDEN) $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
 	$(BIN)/mote-bake $(BAKE_HIDDEN) -o $@ --name baked_hidden --format rgba8888 --size 64x48
 
+$(BAKE_TEST_DIR)/cube_%.h: $(BAKE_CUBE) assets/checker.png $(BIN)/mote-bake
+	@mkdir -p $(dir $@)
+	$(BIN)/mote-bake $(BAKE_CUBE) -o $@ --name cube_$* --format $* --size 64x48
+
 $(BAKE_TEST_DIR)/test_bake: tests/bake/test_bake.c $(BAKE_TEST_DIR)/baked.h $(BAKE_TEST_DIR)/ortho.h \
-        $(BAKE_TEST_DIR)/baked_hidden.h $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
+        $(BAKE_TEST_DIR)/baked_hidden.h $(BAKE_CUBES) $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
 	$(CC) $(TEST_CFLAGS) -I$(BAKE_TEST_DIR) -DMOTE_BAKE_SCENE=\"$(CURDIR)/$(BAKE_SCENE)\" \
+	    -DMOTE_BAKE_CUBE=\"$(CURDIR)/$(BAKE_CUBE)\" \
 	    -DMOTE_BAKE_ORTHO=\"$(CURDIR)/$(BAKE_ORTHO)\" -DMOTE_BAKE_HIDDEN=\"$(CURDIR)/$(BAKE_HIDDEN)\" $< \
 	    $(BUILD)/tests/obj/unity.o $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 

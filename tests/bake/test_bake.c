@@ -7,7 +7,8 @@
  * tests/data/bake_hidden.babylon, whose hidden meshes stay hidden and
  * whose disableLighting sign stays unlit; and a
  * scene seen by an orthographic camera (tests/data/ortho_camera.babylon),
- * baked as "ortho".
+ * baked as "ortho"; and the textured assets/cube.babylon in each texture
+ * format ("cube_rgb565"...).
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -16,7 +17,11 @@
 #include "baked.h"
 #include "ortho.h"
 #include "baked_hidden.h"
+#include "cube_rgb565.h"
+#include "cube_rgba8888.h"
+#include "cube_grey8.h"
 
+#include <stdint.h>
 #include <string.h>
 
 #define W BAKED_WIDTH
@@ -212,6 +217,76 @@ void baked_meshes_should_keep_which_are_unlit_and_their_emissive_colours(void)
     mote_scene_free(&s);
 }
 
+/* A textured scene baked in each format (assets/cube.babylon, its
+ * checker.png): each texture declared as long as it is and aligned (in
+ * RGBA8888 it was declared a quarter of its length), holding the loaded
+ * texture converted to the format, and drawn to the same bytes as the
+ * loaded scene drawn with that converted texture. */
+static void check_textured_bake(const mote_mesh *baked, int count, const mote_frame_desc *frame,
+                                mote_rgba clear, mote_format format, const void *pixels,
+                                size_t pixel_bytes, size_t alignment)
+{
+    mote_scene cube;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_CUBE, NULL, &cube, msg, sizeof msg),
+                              msg);
+    TEST_ASSERT_EQUAL(cube.mesh_count, count);
+    TEST_ASSERT_EQUAL(1, cube.texture_count);
+    const mote_texture *t = &cube.textures[0];
+    const int bpp = mote_format_bytes(format);
+    TEST_ASSERT_EQUAL((size_t)t->width * (size_t)t->height * (size_t)bpp, pixel_bytes);
+    TEST_ASSERT_EQUAL(0, (uintptr_t)pixels % alignment);
+    static uint8_t converted[256 * 128 * 4];
+    TEST_ASSERT_TRUE(pixel_bytes <= sizeof converted);
+    for (int y = 0; y < t->height; y++)
+        mote_convert_row((const uint8_t *)t->pixels + (size_t)y * (size_t)t->stride, t->format,
+                         converted + (size_t)y * (size_t)t->width * (size_t)bpp, format, t->width);
+    TEST_ASSERT_EQUAL_MEMORY(converted, pixels, pixel_bytes);
+    mote_texture as_baked = {t->width, t->height, format, t->width * bpp, converted};
+    static mote_mesh loaded[8];
+    TEST_ASSERT_TRUE(count <= 8);
+    for (int i = 0; i < count; i++) {
+        loaded[i] = cube.meshes[i];
+        if (loaded[i].material.texture)
+            loaded[i].material.texture = &as_baked;
+        TEST_ASSERT_EQUAL(loaded[i].material.texture != NULL, baked[i].material.texture != NULL);
+    }
+    static uint8_t a[W * H * 4], b[W * H * 4];
+    mote_draw_desc d;
+    memset(&d, 0, sizeof d);
+    mote_frame_desc f;
+    mote_scene_frame(&cube, (float)W / (float)H, &f);
+    render(loaded, count, &f, cube.clear_color, d, a);
+    render(baked, count, frame, clear, d, b);
+    TEST_ASSERT_EQUAL_MEMORY(a, b, sizeof a);
+    /* and the texture shows: drawn without it, the image differs */
+    for (int i = 0; i < count; i++)
+        loaded[i].material.texture = NULL;
+    render(loaded, count, &f, cube.clear_color, d, a);
+    TEST_ASSERT_TRUE(memcmp(a, b, sizeof a) != 0);
+    mote_scene_free(&cube);
+}
+
+void a_textured_scene_baked_in_rgb565_should_render_as_loaded(void)
+{
+    check_textured_bake(cube_rgb565_meshes, CUBE_RGB565_MESH_COUNT, &cube_rgb565_frame,
+                        cube_rgb565_clear_color, MOTE_FORMAT_RGB565, cube_rgb565_texture0.pixels,
+                        sizeof cube_rgb565_texture0.pixels, 2);
+}
+
+void a_textured_scene_baked_in_rgba8888_should_render_as_loaded(void)
+{
+    check_textured_bake(cube_rgba8888_meshes, CUBE_RGBA8888_MESH_COUNT, &cube_rgba8888_frame,
+                        cube_rgba8888_clear_color, MOTE_FORMAT_RGBA8888,
+                        cube_rgba8888_texture0.pixels, sizeof cube_rgba8888_texture0.pixels, 4);
+}
+
+void a_textured_scene_baked_in_grey8_should_render_as_loaded(void)
+{
+    check_textured_bake(cube_grey8_meshes, CUBE_GREY8_MESH_COUNT, &cube_grey8_frame,
+                        cube_grey8_clear_color, MOTE_FORMAT_GREY8, cube_grey8_texture0.pixels,
+                        sizeof cube_grey8_texture0.pixels, 1);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -221,5 +296,8 @@ int main(void)
     RUN_TEST(a_baked_orthographic_camera_should_render_as_loaded);
     RUN_TEST(baked_meshes_should_keep_which_are_hidden);
     RUN_TEST(baked_meshes_should_keep_which_are_unlit_and_their_emissive_colours);
+    RUN_TEST(a_textured_scene_baked_in_rgb565_should_render_as_loaded);
+    RUN_TEST(a_textured_scene_baked_in_rgba8888_should_render_as_loaded);
+    RUN_TEST(a_textured_scene_baked_in_grey8_should_render_as_loaded);
     return UNITY_END();
 }

@@ -1187,4 +1187,248 @@ const char *mote_fuzz_scene(const uint8_t *data, size_t size)
     return err;
 }
 
+
+/* ---- a scene's folder with links (mote_fuzz_folder) --------------------- */
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+
+/* Removes name in dirfd, and what it holds when it is a real folder: links
+ * are removed, never followed. */
+static void fz_remove_at(int dirfd, const char *name)
+{
+    struct stat st;
+    if (fstatat(dirfd, name, &st, AT_SYMLINK_NOFOLLOW) != 0)
+        return;
+    if (S_ISDIR(st.st_mode)) {
+        int fd = openat(dirfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
+        DIR *d = fd >= 0 ? fdopendir(fd) : NULL;
+        if (d) {
+            struct dirent *e;
+            while ((e = readdir(d)) != NULL)
+                if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
+                    fz_remove_at(fd, e->d_name);
+            closedir(d);
+        } else if (fd >= 0) {
+            close(fd);
+        }
+        unlinkat(dirfd, name, AT_REMOVEDIR);
+    } else {
+        unlinkat(dirfd, name, 0);
+    }
+}
+
+/* The regular files beneath dirfd, links not followed. */
+typedef struct fz_files {
+    mote__io_file_id id[256];
+    int count;
+} fz_files;
+
+static void fz_collect(int dirfd, fz_files *files, int depth)
+{
+    DIR *d = fdopendir(dup(dirfd));
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        struct stat st;
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") ||
+            fstatat(dirfd, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0)
+            continue;
+        if (S_ISREG(st.st_mode) && files->count < 256) {
+            files->id[files->count].device = (uint64_t)st.st_dev;
+            files->id[files->count++].inode = (uint64_t)st.st_ino;
+        } else if (S_ISDIR(st.st_mode) && depth < 16) {
+            int fd = openat(dirfd, e->d_name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
+            if (fd >= 0) {
+                fz_collect(fd, files, depth + 1);
+                close(fd);
+            }
+        }
+    }
+    closedir(d);
+}
+
+/* The folder that will hold path's last component, beneath dirfd through
+ * real folders only (the harness itself must not write through a link);
+ * -1 when path is absolute, has "." or ".." or goes through a link. */
+static int fz_parent(int dirfd, const char *path, const char **leaf)
+{
+    int fd = dup(dirfd);
+    const char *p = path;
+    for (;;) {
+        size_t n = strcspn(p, "/");
+        char part[128];
+        if (fd < 0 || n == 0 || n >= sizeof part || (n == 1 && p[0] == '.') ||
+            (n == 2 && p[0] == '.' && p[1] == '.')) {
+            if (fd >= 0)
+                close(fd);
+            return -1;
+        }
+        if (!p[n]) {
+            *leaf = p;
+            return fd;
+        }
+        memcpy(part, p, n);
+        part[n] = '\0';
+        int next = openat(fd, part, O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
+        close(fd);
+        fd = next;
+        p += n + 1;
+    }
+}
+
+/* A 1 x 1 PNG of one colour, through mote's own writer. */
+static void fz_png_at(const char *path, uint8_t r, uint8_t g)
+{
+    const uint8_t px[4] = {r, g, 0, 255};
+    char msg[160];
+    mote_write_rgba(path, px, 1, 1, 4, msg, sizeof msg);
+}
+
+/* Whether id is one of files. */
+static bool fz_inside(const fz_files *files, mote__io_file_id id)
+{
+    for (int i = 0; i < files->count; i++)
+        if (mote__io_same_file(files->id[i], id))
+            return true;
+    return false;
+}
+
+/* s into out (size n), each '@' replaced by root. */
+static void fz_expand_root(char *out, size_t n, const char *s, const char *root)
+{
+    size_t k = 0, rn = strlen(root);
+    for (; *s && k + rn + 1 < n; s++) {
+        if (*s == '@') {
+            memcpy(out + k, root, rn);
+            k += rn;
+        } else {
+            out[k++] = *s;
+        }
+    }
+    out[k] = '\0';
+}
+
+const char *mote_fuzz_folder(const uint8_t *data, size_t size)
+{
+    char root[64] = "/tmp/mote-fuzz-folder-XXXXXX";
+    if (!mkdtemp(root))
+        return NULL;
+    char scene[96], path[400];
+    snprintf(scene, sizeof scene, "%s/scene", root);
+    snprintf(path, sizeof path, "%s/outside", root);
+    mkdir(scene, 0700);
+    mkdir(path, 0700);
+    snprintf(path, sizeof path, "%s/outside/outside.png", root);
+    fz_png_at(path, 200, 0);                   /* red: what must never be read */
+    int dirfd = open(scene, O_RDONLY | O_DIRECTORY);
+    char name[400] = "in.png";
+    int ops = 0;
+    /* the input, line by line: "d PATH" a folder, "f PATH" an inside
+     * (green) texture, "p PATH" a FIFO, "l PATH TARGET" a link, "t NAME"
+     * the texture name the scene gives; '@' in TARGET and NAME is the
+     * temporary root's path, where outside/ is */
+    for (size_t at = 0; at < size && ops < 64 && dirfd >= 0; ops++) {
+        const uint8_t *nl = memchr(data + at, '\n', size - at);
+        size_t len = nl ? (size_t)(nl - (data + at)) : size - at;
+        char line[300];
+        if (len >= 2 && len < sizeof line && !memchr(data + at, '\0', len)) {
+            memcpy(line, data + at, len);
+            line[len] = '\0';
+            char *arg = line + 2, *second = NULL;
+            const char *leaf;
+            int parent = -1;
+            if (line[0] == 't') {
+                fz_expand_root(name, sizeof name, arg, root);   /* spaces and all */
+            } else {
+                second = strchr(arg, ' ');
+                if (second)
+                    *second++ = '\0';
+                parent = fz_parent(dirfd, arg, &leaf);
+            }
+            if (parent >= 0) {
+                if (line[0] == 'd') {
+                    mkdirat(parent, leaf, 0700);
+                } else if (line[0] == 'p') {
+                    mkfifoat(parent, leaf, 0600);
+                } else if (line[0] == 'l' && second) {
+                    char target[400];
+                    fz_expand_root(target, sizeof target, second, root);
+                    symlinkat(target, parent, leaf);
+                } else if (line[0] == 'f') {
+                    int fd = openat(parent, leaf, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0600);
+                    if (fd >= 0) {
+                        close(fd);
+                        char full[700];
+                        snprintf(full, sizeof full, "%s/%s", scene, arg);
+                        fz_png_at(full, 0, 200);
+                    }
+                }
+                close(parent);
+            }
+        }
+        at += len + 1;
+    }
+    const char *err = NULL;
+    fz_files inside;
+    inside.count = 0;
+    if (dirfd >= 0)
+        fz_collect(dirfd, &inside, 0);
+    /* the opener, by openat2 and by the walk: nothing outside, the same
+     * file both ways */
+    mote__io_file_id got[2];
+    mote_result r[2];
+    for (int walk = 0; walk < 2 && !err; walk++) {
+        mote__io_file file;
+        char msg[256];
+        mote__io_resolve_by_walk(walk);
+        r[walk] = mote__io_open_in_folder(scene, name, false, &file, msg, sizeof msg);
+        mote__io_resolve_by_walk(0);
+        memset(&got[walk], 0, sizeof got[walk]);
+        if (r[walk] == MOTE_OK) {
+            got[walk] = file.id;
+            mote__io_close(&file);
+            if (!fz_inside(&inside, got[walk]))
+                err = "folder: a file outside the scene's folder was opened";
+        } else {
+            err = fz_check_message(msg, sizeof msg);
+        }
+    }
+    if (!err && (r[0] == MOTE_OK) != (r[1] == MOTE_OK))
+        err = "folder: openat2 and the walk disagree on whether the name opens";
+    else if (!err && r[0] == MOTE_OK && !mote__io_same_file(got[0], got[1]))
+        err = "folder: openat2 and the walk opened different files";
+    /* the scene: a texture loaded is never the red one outside */
+    if (!err) {
+        char json[2600], quoted[2400], *o = quoted;
+        for (const char *c = name; *c; c++) {
+            if (*c == '"' || *c == '\\' || (unsigned char)*c < 0x20)
+                o += sprintf(o, "\\u%04x", (unsigned char)*c);
+            else
+                *o++ = *c;
+        }
+        *o = '\0';
+        snprintf(json, sizeof json, "{\"materials\":[{\"id\":\"m\",\"diffuseTexture\":{\"name\":"
+                 "\"%s\"}}]}", quoted);
+        mote_scene sc;
+        char msg[256];
+        if (mote_scene_load_memory(json, strlen(json), "f", scene, NULL, &sc, msg, sizeof msg) ==
+            MOTE_OK) {
+            if (sc.texture_count > 0 && ((const uint8_t *)sc.textures[0].pixels)[0] == 200)
+                err = "folder: the texture outside the scene's folder was loaded";
+            mote_scene_free(&sc);
+        }
+    }
+    if (dirfd >= 0)
+        close(dirfd);
+    int rootfd = open("/tmp", O_RDONLY | O_DIRECTORY);
+    if (rootfd >= 0) {
+        fz_remove_at(rootfd, root + 5);
+        close(rootfd);
+    }
+    return err;
+}
+
 #endif /* MOTE_FUZZ_NO_SCENE */

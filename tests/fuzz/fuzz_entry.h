@@ -28,4 +28,11 @@ const char *mote_fuzz_texture(const uint8_t *data, size_t size);
  * with an allocation failing part-way. */
 const char *mote_fuzz_scene(const uint8_t *data, size_t size);
 
+/* A folder tree built from the input's lines (folders, inside textures,
+ * FIFOs, links to anywhere, outside/ included) and a texture name: the
+ * name is opened beneath the scene's folder by openat2 and by the walk,
+ * which must open the same file, one of the folder's own; a scene naming
+ * it never loads the texture outside. */
+const char *mote_fuzz_folder(const uint8_t *data, size_t size);
+
 #endif

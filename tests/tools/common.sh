@@ -4,10 +4,11 @@
 set -u
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT INT TERM
-tests=0; failures=0
+tests=0; failures=0; ignored=0
 
 pass() { tests=$((tests + 1)); echo "$script:0:$1:PASS"; }
 fail() { tests=$((tests + 1)); failures=$((failures + 1)); echo "$script:0:$1:FAIL: $2"; }
+ignore() { tests=$((tests + 1)); ignored=$((ignored + 1)); echo "$script:0:$1:IGNORE: $2"; }
 
 # fails NAME STATUS PATTERN CMD...: passes NAME when CMD exits with STATUS
 # ("any": any but 0) and its output says PATTERN
@@ -24,10 +25,10 @@ fails() {
     fi
 }
 
-# prints "N Tests F Failures 0 Ignored"; the status says whether all passed
+# prints "N Tests F Failures I Ignored"; the status says whether all passed
 summary() {
     echo
     echo "-----------------------"
-    echo "$tests Tests $failures Failures 0 Ignored"
+    echo "$tests Tests $failures Failures $ignored Ignored"
     [ "$failures" -eq 0 ]
 }

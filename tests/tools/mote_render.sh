@@ -1,13 +1,17 @@
 #!/bin/sh
 # mote-render's options, checked on what the tool writes and says: each case
 # runs it on a small scene written here and looks at its exit status, its
-# messages and the pixels of the PPM it wrote. Ends with a Unity-style line
+# messages and the pixels of the PPM it wrote; and hostile input (links out
+# of the scene's folder, outputs over the scene's own files or onto a full
+# device, 2,000 instances under an address-space limit). Ends with a
+# Unity-style line
 # "N Tests F Failures I Ignored" for tests/run.sh.
 #
 #   BIN=build/bin sh tests/tools/mote_render.sh      (make test does this)
 script=tests/tools/mote_render.sh
 . "$(dirname "$0")/common.sh"
 R=${BIN:-build/bin}/mote-render
+here=$(cd "$(dirname "$0")" && pwd)
 
 # pixel FILE X Y: "r g b" of a binary PPM (P6) as mote writes it: a
 # three-line header "P6", "W H", "255", then rows of RGB
@@ -123,6 +127,68 @@ if "$R" "$tmp/lod.babylon" -o "$tmp/near.ppm" --size 32x32 --threads 1 >"$tmp/ou
     fi
 else
     fail $name "exit status $?: $(cat "$tmp/out")"
+fi
+
+# ---- hostile input --------------------------------------------------------------
+# A texture linked from outside the scene's folder is not drawn: the load
+# fails, naming the link (it was opened and drawn).
+mkdir -p "$tmp/scene" "$tmp/outside"
+cp "$here/../../assets/checker.png" "$tmp/outside/outside.png"
+ln -s ../outside/outside.png "$tmp/scene/link.png"
+sed 's/no-such-image.png/link.png/' "$tmp/missing.babylon" >"$tmp/scene/link.babylon"
+fails a_texture_linked_from_outside_should_not_be_read any "\"link.png\" leads out of the scene's folder" \
+    "$R" "$tmp/scene/link.babylon" -o "$tmp/link.ppm" --size 16x16 --threads 1
+
+# The output never overwrites the scene or its textures, whatever the name.
+cp "$here/../../assets/checker.png" "$tmp/scene/tex.png"
+sed 's/no-such-image.png/tex.png/' "$tmp/missing.babylon" >"$tmp/scene/tex.babylon"
+fails the_output_should_not_overwrite_a_texture any "one of its textures: not overwritten" \
+    "$R" "$tmp/scene/tex.babylon" -o "$tmp/scene/./tex.png" --size 16x16
+name=the_texture_should_be_unchanged
+if cmp -s "$tmp/scene/tex.png" "$here/../../assets/checker.png"; then pass $name; else fail $name "changed"; fi
+
+# A failed write says why and removes nothing it did not create.
+if [ -c /dev/full ]; then
+    ln -s /dev/full "$tmp/full.ppm"
+    fails a_full_device_should_say_why any "write error: No space left on device" \
+        "$R" "$tmp/far.babylon" -o "$tmp/full.ppm" --size 16x16
+    name=the_link_to_the_full_device_should_stay
+    if [ -L "$tmp/full.ppm" ]; then pass $name; else fail $name "removed"; fi
+fi
+
+# 2,000 instances of a 1,000-triangle mesh: the binning arena was sized for
+# every triangle twice over (1.2 GB here, and "out of memory" for larger
+# scenes); capped, the frame is drawn under a 1 GB address-space limit.
+# ASan reserves terabytes of address space: no limit then.
+awk 'BEGIN {
+    n = 22
+    printf "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,-2000],\"target\":[0,0,0]}],"
+    printf "\"materials\":[{\"id\":\"w\",\"disableLighting\":true,\"emissive\":[1,1,1]}],"
+    printf "\"meshes\":[{\"id\":\"g\",\"materialId\":\"w\",\"positions\":["
+    for (y = 0; y <= n; y++) for (x = 0; x <= n; x++) printf "%s%d,%d,0", (x + y ? "," : ""), x, y
+    printf "],\"indices\":["
+    for (y = 0; y < n; y++) for (x = 0; x < n; x++) {
+        a = y * (n + 1) + x; b = a + n + 1
+        printf "%s%d,%d,%d,%d,%d,%d", (x + y ? "," : ""), a, a + 1, b, a + 1, b + 1, b
+    }
+    printf "],\"instances\":["
+    for (i = 1; i < 2000; i++)
+        printf "%s{\"name\":\"i%d\",\"position\":[%d,%d,0]}", (i > 1 ? "," : ""), i,
+            (i % 50) * 30 - 750, int(i / 50) * 30 - 600
+    printf "]}]}"
+}' >"$tmp/many.babylon"
+name=two_thousand_instances_should_render_in_a_bounded_arena
+if grep -q __asan_init "$R" 2>/dev/null; then limit=unlimited; else limit=1000000; fi
+if (ulimit -v $limit && "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --size 160x120 --threads 1) \
+        >"$tmp/out" 2>&1; then
+    # past the 15-byte header "P6\n160 120\n255\n", some byte not 0
+    if [ "$(od -An -tu1 -j 15 "$tmp/many.ppm" | tr -d ' 0\n' | wc -c)" -gt 0 ]; then
+        pass $name
+    else
+        fail $name "nothing drawn"
+    fi
+else
+    fail $name "$(cat "$tmp/out")"
 fi
 
 summary
