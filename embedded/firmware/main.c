@@ -144,7 +144,7 @@ int main(void)
     if (ROWS < H) {
         desc.flush = flush;
         desc.flush_user = &fc;
-#if FW_BINS
+#if FW_BINS && ROWS < H
         desc.band_bins = fw_bins;
         desc.band_bins_size = sizeof fw_bins;
 #endif
