@@ -19,7 +19,7 @@
  *     for both buffers, and checks the renders against that: the two
  *     buffers may differ only at pixels where the quads' 16-bit depths tie,
  *     and there they must hold the quad drawn first.
- *   - The RAM budget of the README: a 320x240 RGB565 frame with 16-bit
+ *   - The RAM budget of docs/embedded.md: a 320x240 RGB565 frame with 16-bit
  *     depth in bands of 30 rows fits in 48 KB with the device.
  */
 #include <mote/mote.h>
@@ -508,7 +508,7 @@ void a_320x240_rgb565_depth16_frame_should_fit_in_48_kb_in_bands_of_30_rows(void
     /* this build's device (64-bit pointers, MOTE_MAX_DRAWS as configured) is
      * at least as large as a 32-bit firmware's */
     TEST_ASSERT_LESS_OR_EQUAL_UINT32(48u * 1024u, (uint32_t)(band + sizeof(mote_device)));
-    /* and the other sizes the README gives */
+    /* and two other layouts: bands of 16 rows, a whole RGBA8888 frame */
     TEST_ASSERT_EQUAL_UINT32(320u * 16u * 4u, (uint32_t)mote_band_bytes(320, 16, MOTE_FORMAT_RGB565,
                                                                         MOTE_DEPTH_FORMAT_16));
     TEST_ASSERT_EQUAL_UINT32(320u * 240u * 8u, (uint32_t)mote_band_bytes(320, 240, MOTE_FORMAT_RGBA8888,

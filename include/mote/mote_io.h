@@ -50,7 +50,7 @@ mote_limits mote_limits_default(void);
  * 2.27's decoders of those hang or overrun on hostile files. Files built to
  * reach the other known faults of that stb_image are refused as corrupt
  * (MOTE_ERR_PARSE), and palettes it would read past are padded with black
- * (README, "Hostile input"). */
+ * (docs/security.md, "Image decoding"). */
 mote_result mote_texture_load(const char *path, const mote_limits *limits,
                               mote_texture *out, char *message, size_t message_size);
 mote_result mote_texture_load_memory(const void *data, size_t size,

@@ -19,7 +19,7 @@
  * other (coverage from the depth buffers).
  *
  * Output: fixed-width tables on stdout, out/bench/bench.csv, bench.md
- * (markdown, for the README) and pareto.dat/pareto_front.dat, which
+ * (markdown, for docs/performance.md) and pareto.dat/pareto_front.dat, which
  * tests/bench/pareto.gp turns into pareto.png.
  */
 #ifdef __linux__
