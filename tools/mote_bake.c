@@ -478,8 +478,12 @@ static void bake(baker *b, int width, int height, const char *source)
         b->name, b->name);
     put(b, "#ifndef MOTE_BAKE_NAN\n#define MOTE_BAKE_NAN (__builtin_nanf(\"\"))\n"
                "#define MOTE_BAKE_INF (__builtin_inff())\n#endif\n\n");
-    put(b, "#define %s_WIDTH %d\n#define %s_HEIGHT %d\n#define %s_MESH_COUNT %d\n\n", upper, width,
-            upper, height, upper, s->mesh_count);
+    unsigned long triangles = 0;
+    for (int i = 0; i < s->mesh_count; i++)
+        triangles += s->meshes[i].index_count / 3;
+    put(b, "#define %s_WIDTH %d\n#define %s_HEIGHT %d\n#define %s_MESH_COUNT %d\n"
+           "#define %s_TRIANGLE_COUNT %lu\n\n", upper, width, upper, height, upper, s->mesh_count, upper,
+        triangles);
 
     /* only the textures some mesh uses: an unused static const would warn */
     int slots = 0;

@@ -101,6 +101,7 @@ typedef struct mote__ctx {
     mote_draw_desc d;
     float nrm[9], mvp[16], world[16];
     struct mote__lit_queue *queue; /* not NULL: front faces wait for their vertices (MOTE__VECTOR_VERTEX) */
+    unsigned char *band_range;    /* the first band: the triangle's range of bands to widen */
 #if MOTE__VECTOR_VERTEX
     mote__v4_draw v4;             /* last: mote__draw_context leaves it to the code that reads it */
 #endif
@@ -1004,10 +1005,26 @@ static mote__tri *mote__bin_place(mote_device *dev)
 }
 #endif
 
+/* Widens the triangle's range of bands to its rows (band bins). */
+static void mote__band_note(const mote__ctx *cx, const int32_t Y[3])
+{
+    const mote_device *dev = cx->dev;
+    const int F = dev->desc.subpixel_bits, last = dev->desc.height - 1;
+    int32_t lo = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), hi = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
+    uint32_t r0 = lo <= 0 ? 0u : (uint32_t)MOTE__MIN(lo >> F, last);
+    uint32_t r1 = hi <= 0 ? 0u : (uint32_t)MOTE__MIN(hi >> F, last);
+    uint32_t b0 = (r0 * dev->bands.scale_lo) >> 16, b1 = MOTE__MIN((r1 * dev->bands.scale_hi) >> 16, 254u);
+    unsigned char *r = cx->band_range;
+    r[0] = (unsigned char)MOTE__MIN(r[0], b0);
+    r[1] = (unsigned char)MOTE__MAX(r[1], b1);
+}
+
 static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
                        const mote__svert *const v[3])
 {
     mote_device *dev = cx->dev;
+    if (cx->band_range)
+        mote__band_note(cx, Y);
     if (dev->desc.triangle_hook) {
         float z[3] = {v[0]->depth, v[1]->depth, v[2]->depth};
         float w[3] = {v[0]->w, v[1]->w, v[2]->w};
@@ -1584,8 +1601,19 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     dev->stats.draws += first_piece;
     mote__ctx cx;
     mote__raster_state rs_local;
+    /* band bins: the first band records where each triangle goes, the
+     * others read it (see mote_device_desc.band_bins) */
+    mote__draw *rec = sink == MOTE__SINK_RASTER && dev->bands.bins ? dev->bands.draw : NULL;
+    const bool recording = rec && dev->bands.index == 0;
+    if (recording) {
+        rec->band_first = 255;
+        rec->band_last = 0;
+        rec->band_known = false;
+    }
     if (!mote__draw_context(&cx, &rs_local, dev, mesh, desc)) {
         dev->stats.meshes_culled += first_piece;
+        if (recording)
+            rec->band_known = true;   /* in no band */
         return MOTE_OK;
     }
     cx.sink = sink;
@@ -1669,8 +1697,36 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
             i = tris;             /* all done */
         }
 #endif
-        for (; i < tris && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++)
+        unsigned char *bins = NULL;
+        const bool triangles = mode != MOTE_MODE_POINTS && !(MOTE_ENABLE_LINES && mode == MOTE_MODE_WIREFRAME);
+        if (recording && triangles && !cx.queue && first == 0 && tris <= dev->bands.capacity - dev->bands.used) {
+            rec->bin_first = dev->bands.used;
+            dev->bands.used += tris;
+            bins = dev->bands.bins + 2 * (size_t)rec->bin_first;
+        } else if (rec && !recording && rec->band_known) {
+            bins = dev->bands.bins + 2 * (size_t)rec->bin_first;
+        }
+        const int band = dev->bands.index;
+        for (; i < tris && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++) {
+            if (bins) {
+                unsigned char *range = bins + 2 * (size_t)i;
+                if (recording) {
+                    range[0] = 255;   /* none until emitted */
+                    range[1] = 0;
+                    cx.band_range = range;
+                } else if (band < range[0] || band > range[1]) {
+                    continue;
+                }
+            }
             mote__triangle(&cx, &mesh->indices[3 * i]);
+        }
+        if (recording && bins) {
+            for (uint32_t k = 0; k < tris; k++) {
+                rec->band_first = MOTE__MIN(rec->band_first, bins[2 * k]);
+                rec->band_last = MOTE__MAX(rec->band_last, bins[2 * k + 1]);
+            }
+            rec->band_known = true;
+        }
     }
     if (MOTE_ENABLE_BINNING && cache_bytes)
         mote__bin_top_release(dev, cache_bytes);
