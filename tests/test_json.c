@@ -7,6 +7,8 @@
 #include "io/json.h"
 #include "support/io_test.h"
 
+#include <float.h>
+
 static char msg[512];
 static long live_before;
 
@@ -123,6 +125,27 @@ void json_numbers_should_be_finite_floats_and_whole_numbers(void)
     finish(root);
 }
 
+/* FLT_MAX written to 8 digits is a hair above it and rounds to it, as a
+ * float; from FLT_MAX plus half its last step a float is infinite. */
+void json_floats_should_take_what_rounds_to_the_largest_float(void)
+{
+    cJSON *root;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, parse("{\"a\": [3.4028235e38, -3.4028235e38, "
+                                             "3.40282356779733e38], \"b\": 3.4028236e38}", NULL,
+                                             &root), msg);
+    float v[3] = {0, 0, 0}, f = 0;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote__json_floats(&ld, root, "a", "m", 3, 0, v), msg);
+    TEST_ASSERT_EQUAL_FLOAT(FLT_MAX, v[0]);
+    TEST_ASSERT_EQUAL_FLOAT(-FLT_MAX, v[1]);
+    TEST_ASSERT_EQUAL_FLOAT(FLT_MAX, v[2]);
+    TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote__json_number(&ld, root, "b", "m", &f));
+    TEST_ASSERT_EQUAL_STRING("x.babylon: m.b: 3.40282e+38 is not a finite float", msg);
+    const cJSON *a = mote__json_get(root, "a");
+    TEST_ASSERT_EQUAL(MOTE_OK, mote__json_element_float(&ld, a->child, "a", 0, &f));
+    TEST_ASSERT_EQUAL_FLOAT(FLT_MAX, f);
+    finish(root);
+}
+
 /* The depth is counted on the text, before cJSON (which recurses) sees it;
  * brackets inside strings do not count. */
 void json_parse_should_stop_at_the_nesting_limit_before_parsing(void)
@@ -146,6 +169,7 @@ int main(void)
     RUN_TEST(loader_should_take_the_last_of_keys_written_twice);
     RUN_TEST(json_getters_should_name_the_path_and_what_they_found);
     RUN_TEST(json_numbers_should_be_finite_floats_and_whole_numbers);
+    RUN_TEST(json_floats_should_take_what_rounds_to_the_largest_float);
     RUN_TEST(json_parse_should_stop_at_the_nesting_limit_before_parsing);
     return UNITY_END();
 }

@@ -45,15 +45,26 @@ const cJSON *mote__json_get(const cJSON *obj, const char *key)
     return cJSON_IsNull(v) ? NULL : v;
 }
 
+/* d as the float it rounds to, if that is finite: FLT_MAX as written to 8
+ * digits (3.4028235e38) is a little over it but rounds to it, as
+ * JavaScript's Math.fround does; from FLT_MAX plus half its last step up,
+ * a float rounds to infinity. */
+static bool mote__json_to_float(double d, float *out)
+{
+    if (!(fabs(d) < 0x1.ffffffp+127))
+        return false;             /* also NaN */
+    *out = d > (double)FLT_MAX ? FLT_MAX : d < -(double)FLT_MAX ? -FLT_MAX : (float)d;
+    return true;
+}
+
 mote_result mote__json_float(mote__loader *ld, const cJSON *v, const char *at, float *out)
 {
     if (!cJSON_IsNumber(v))
         return mote__fail(ld, MOTE_ERR_PARSE, "%s: expected a number, found %s", at,
                           mote__json_type_name(v));
-    double d = v->valuedouble;
-    if (!isfinite(d) || fabs(d) > (double)FLT_MAX)
-        return mote__fail(ld, MOTE_ERR_RANGE, "%s: %g is not a finite float", at, d);
-    *out = (float)d;
+    if (!mote__json_to_float(v->valuedouble, out))
+        return mote__fail(ld, MOTE_ERR_RANGE, "%s: %g is not a finite float", at,
+                          v->valuedouble);
     return MOTE_OK;
 }
 
@@ -178,13 +189,11 @@ mote_result mote__json_object(mote__loader *ld, const cJSON *v, const char *at)
 mote_result mote__json_element_float(mote__loader *ld, const cJSON *e, const char *at, size_t k,
                                      float *out)
 {
-    if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble) ||
-        fabs(e->valuedouble) > (double)FLT_MAX) {
+    if (!cJSON_IsNumber(e) || !mote__json_to_float(e->valuedouble, out)) {
         char at2[192];
         snprintf(at2, sizeof at2, "%s[%zu]", at, k);
         return mote__json_float(ld, e, at2, out);
     }
-    *out = (float)e->valuedouble;
     return MOTE_OK;
 }
 
