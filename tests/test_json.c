@@ -163,6 +163,47 @@ void json_parse_should_stop_at_the_nesting_limit_before_parsing(void)
     finish(root);
 }
 
+/* What the parse will allocate is told from the text, before cJSON sees
+ * it (an item per value, numbers too): past limits.max_json_bytes the
+ * text is refused, naming the limit, and nothing is parsed. */
+void json_parse_should_refuse_a_tree_larger_than_max_json_bytes(void)
+{
+    char text[4096] = "{\"a\": [0";
+    for (int i = 0; i < 200; i++)
+        strcat(text, ",0");
+    strcat(text, "]}");
+    mote_limits lim = mote_limits_default();
+    lim.max_json_bytes = 8000;    /* 204 items of 80 bytes, a key and a number copy */
+    cJSON *root = NULL;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, parse(text, &lim, &root));
+    TEST_ASSERT_NULL(root);
+    TEST_ASSERT_EQUAL_STRING("x.babylon: parsing its JSON (204 values) would take 16384 bytes, "
+                             "more than the limit of 8000 bytes (max_json_bytes)", msg);
+    finish(root);
+    lim.max_json_bytes = 20000;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, parse(text, &lim, &root), msg);
+    TEST_ASSERT_EQUAL(201, (int)mote__json_length(mote__json_get(root, "a")));
+    finish(root);
+}
+
+/* cJSON running out of memory is out of memory, not malformed JSON. */
+void json_parse_should_report_running_out_of_memory_as_such(void)
+{
+    const char *text = "{\"a\": [1, 2, 3],\n \"b\": \"x\"}";
+    TEST_ASSERT_EQUAL(MOTE_OK, mote__loader_begin(&ld, "x.babylon", NULL, NULL, strlen(text),
+                                                  &scene, msg, sizeof msg));
+    cJSON *root = NULL;
+    mote__io_set_alloc_failure_after(0);
+    mote_result r = mote__json_parse(&ld, text, strlen(text), &root);
+    mote__io_set_alloc_failure_after(-1);
+    TEST_ASSERT_EQUAL(MOTE_ERR_OUT_OF_MEMORY, r);
+    TEST_ASSERT_EQUAL_STRING("x.babylon: line 1, byte 0: out of memory parsing the JSON", msg);
+    finish(root);
+    /* the next parse is whole again */
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, parse(text, NULL, &root), msg);
+    finish(root);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -171,5 +212,7 @@ int main(void)
     RUN_TEST(json_numbers_should_be_finite_floats_and_whole_numbers);
     RUN_TEST(json_floats_should_take_what_rounds_to_the_largest_float);
     RUN_TEST(json_parse_should_stop_at_the_nesting_limit_before_parsing);
+    RUN_TEST(json_parse_should_refuse_a_tree_larger_than_max_json_bytes);
+    RUN_TEST(json_parse_should_report_running_out_of_memory_as_such);
     return UNITY_END();
 }

@@ -31,6 +31,7 @@
 #include <mote/mote_io.h>
 
 #include <errno.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,6 +54,7 @@ typedef struct options {
     int subpixel_bits;            /* 0: default */
     bool full_clear;              /* clear every tile, not only those drawn into */
     bool allow_missing_textures;  /* draw in the material's colour, warn */
+    uint32_t max_triangles;       /* 0: the loader's default */
 } options;
 
 static void usage(FILE *out)
@@ -81,6 +83,8 @@ static void usage(FILE *out)
             "  --allow-missing-textures  draw a material whose texture file is missing or\n"
             "                          unreadable in its colour, with a warning (default:\n"
             "                          such a scene fails to load)\n"
+            "  --max-triangles N       load scenes of up to N triangles, instances counted\n"
+            "                          (default 1048576)\n"
             "  --help                  this text\n");
 }
 
@@ -243,6 +247,10 @@ static int parse_args(int argc, char **argv, options *o)
             if ((k = pick(v, filters)) < 0)
                 return fail("--filter \"%s\": expected nearest or bilinear", v);
             o->draw.filter = filter_values[k];
+        } else if (strcmp(a, "--max-triangles") == 0) {
+            if (!parse_int(v, 1, INT_MAX, &k))
+                return fail("--max-triangles \"%s\": expected a count from 1 to %d", v, INT_MAX);
+            o->max_triangles = (uint32_t)k;
         } else if (strcmp(a, "--subpixel-bits") == 0) {
             if (!parse_int(v, 4, 8, &o->subpixel_bits))
                 return fail("--subpixel-bits \"%s\": expected 4 to 8", v);
@@ -378,6 +386,8 @@ int main(int argc, char **argv)
     mote_scene scene;
     mote_limits limits = mote_limits_default();
     limits.missing_texture_is_warning = o.allow_missing_textures;
+    if (o.max_triangles)
+        limits.max_triangles = o.max_triangles;
     mote_result r = mote_scene_load(o.scene_path, &limits, &scene, message, sizeof message);
     if (r != MOTE_OK) {
         fprintf(stderr, "mote-render: %s\n", message[0] ? message : mote_result_string(r));

@@ -36,6 +36,17 @@ typedef struct mote_limits {
      * 0.75 times its decoded size). */
     size_t max_total_texture_bytes;
     int max_json_depth;           /* default 64 */
+    /* What parsing a scene's JSON may allocate, default 512 MiB: told
+     * from the text before it is parsed (cJSON takes an item of 64 bytes
+     * a value, numbers too: 40 times the text of "0,0,0,..."), so a file
+     * past it is refused without the memory being taken. */
+    size_t max_json_bytes;
+    /* The triangles of all the scene's meshes together, default 1 Mi
+     * (1,048,576): instances, thin instances, levels of detail and
+     * hidden meshes each count, as any may be drawn. It bounds the time
+     * a frame can take, which the counts above do not: 100,000 triangles
+     * with 10 instances are 1.1 million to draw. */
+    uint32_t max_triangles;
     bool allow_any_texture_path;  /* false: only inside the scene's folder */
     bool missing_texture_is_warning; /* true: render untextured, warn */
 } mote_limits;

@@ -172,8 +172,28 @@ mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *b
     return MOTE_OK;
 }
 
+/* The triangles of every mesh the scene holds (instances, thin
+ * instances, levels of detail and hidden meshes each count: any of them
+ * may be drawn in a frame) against limits.max_triangles, which bounds
+ * the time a frame takes as max_meshes and the vertex limits do not. */
+static mote_result mote__check_triangles(mote__loader *ld)
+{
+    const mote_scene *sc = ld->scene;
+    uint64_t total = 0;
+    for (int i = 0; i < sc->mesh_count; i++)
+        total += sc->meshes[i].index_count / 3;
+    if (total > ld->lim.max_triangles)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%llu triangles in its %d meshes (instances "
+                          "count), more than the limit of %llu (max_triangles)",
+                          (unsigned long long)total, sc->mesh_count,
+                          (unsigned long long)ld->lim.max_triangles);
+    return MOTE_OK;
+}
+
 mote_result mote__loader_end(mote__loader *ld, mote_result r)
 {
+    if (r == MOTE_OK)
+        r = mote__check_triangles(ld);
     mote__store_release(&ld->tmp);
     if (r != MOTE_OK)
         mote_scene_free(ld->scene);

@@ -88,8 +88,9 @@ typedef struct mote__loader {
 mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *base_dir,
                                const mote_limits *limits, size_t size, mote_scene *out,
                                char *message, size_t message_size);
-/* Ends the load whose result is r: the temporaries released and, when r
- * is an error, the scene freed and zeroed. Returns r. */
+/* Ends the load whose result is r: the scene's triangles checked against
+ * limits.max_triangles, the temporaries released and, when that leaves
+ * an error, the scene freed and zeroed. Returns the result. */
 mote_result mote__loader_end(mote__loader *ld, mote_result r);
 
 /* The message "NAME: what" (printf-style); returns code. */
