@@ -217,6 +217,35 @@ void frame_should_look_at_the_box_from_the_front_top_right_without_a_camera(void
     mote_scene_free(&s);
 }
 
+/* A caller's eye gets planes that hold the whole scene from there, as the
+ * framing camera gets them from its own: far away, inside the scene,
+ * at its centre. */
+void fit_planes_should_hold_the_scene_from_any_eye(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"m\",\"positions\":[-1,-1,-1, 1,1,1, 1,-1,1],"
+                    "\"indices\":[0,1,2]}]}";
+    mote_scene s;
+    io_load_json(j, "f", &s);
+    const float radius = sqrtf(3.0f), eyes[3] = {50.0f, 0.5f, 0.0f};
+    for (int k = 0; k < 3; k++) {
+        mote_camera c;
+        memset(&c, 0, sizeof c);
+        c.position[2] = -eyes[k];
+        mote_scene_fit_planes(&s, &c);
+        TEST_ASSERT_TRUE(c.znear > 0.0f && c.znear < c.zfar);
+        TEST_ASSERT_TRUE(c.zfar >= eyes[k] + radius);
+        /* where the scene begins; from inside it, a hundredth of the way
+         * to its centre or a thousandth of far */
+        float inside = fmaxf(eyes[k] * 0.01f, c.zfar * 0.001f);
+        TEST_ASSERT_TRUE(c.znear <= (eyes[k] > radius ? eyes[k] - radius : inside));
+    }
+    mote_camera untouched;
+    memset(&untouched, 0, sizeof untouched);
+    mote_scene_fit_planes(NULL, &untouched);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, untouched.zfar);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -230,5 +259,6 @@ int main(void)
     RUN_TEST(scene_load_should_load_babylon_json_whatever_its_keys);
     RUN_TEST(scene_load_should_go_by_the_bytes_not_the_file_name);
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
+    RUN_TEST(fit_planes_should_hold_the_scene_from_any_eye);
     return UNITY_END();
 }

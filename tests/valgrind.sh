@@ -95,6 +95,9 @@ check mote_render_should_print_help_clean ok "$R" --help
 check mote_render_should_draw_a_scene_missing_a_texture_when_allowed_clean ok \
     "$R" tests/data/bad/texture_missing.babylon -o "$tmp/missing.png" --size 16x12 --threads 1 \
     --allow-missing-textures
+check mote_render_should_list_every_warning_clean ok \
+    "$R" tests/data/bad/texture_missing.babylon -o "$tmp/missing.png" --size 16x12 --threads 1 \
+    --allow-missing-textures --warnings --camera 0,0,-9:0,0,0 --near 0.5
 
 # ---- error paths -------------------------------------------------------------
 check mote_render_should_refuse_a_missing_file_clean fail \

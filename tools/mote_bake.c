@@ -686,6 +686,8 @@ int main(int argc, char **argv)
                                               || !strcmp(a, "--format") || !strcmp(a, "--size")
                                               || !strcmp(a, "--texture-size") || !strcmp(a, "--max-bytes")))
                 fprintf(stderr, "mote-bake: %s needs a value\n", a);
+            else if (a[0] == '-')
+                fprintf(stderr, "mote-bake: unknown option %s\n", a);
             else
                 fprintf(stderr, "mote-bake: unexpected argument '%s'\n", a);
             usage(stderr);

@@ -36,6 +36,17 @@ typedef struct mote_limits {
      * 0.75 times its decoded size). */
     size_t max_total_texture_bytes;
     int max_json_depth;           /* default 64 */
+    /* What parsing a scene's JSON may allocate, default 512 MiB: told
+     * from the text before it is parsed (cJSON takes an item of 64 bytes
+     * a value, numbers too: 40 times the text of "0,0,0,..."), so a file
+     * past it is refused without the memory being taken. */
+    size_t max_json_bytes;
+    /* The triangles of all the scene's meshes together, default 1 Mi
+     * (1,048,576): instances, thin instances, levels of detail and
+     * hidden meshes each count, as any may be drawn. It bounds the time
+     * a frame can take, which the counts above do not: 100,000 triangles
+     * with 10 instances are 1.1 million to draw. */
+    uint32_t max_triangles;
     bool allow_any_texture_path;  /* false: only inside the scene's folder */
     bool missing_texture_is_warning; /* true: render untextured, warn */
 } mote_limits;
@@ -123,7 +134,8 @@ typedef struct mote_scene {
     bool mirrored_z;
     /* Non-fatal notes (downgraded textures, ...), "; " between them: each
      * distinct one once, " (x12)" after one given 12 times, and "; N more
-     * warnings" for those that do not fit. */
+     * warnings" for those that do not fit. Every one of them, one by one:
+     * mote_scene_warning. */
     char warning[256];
     /* One flag per mesh (mesh_count): drawn with both sides (its material
      * says so). The core's culling is a draw option (mote_draw_desc.cull),
@@ -140,6 +152,7 @@ typedef struct mote_scene {
     const mote_lod *lods;
     int lod_count;
     void *files_;                 /* private: the files read (mote_scene_reads_file) */
+    void *warnings_;              /* private: every warning (mote_scene_warning) */
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
@@ -161,6 +174,15 @@ mote_result mote_scene_load_memory(const char *data, size_t size, const char *na
                                    mote_scene *out, char *message, size_t message_size);
 void mote_scene_free(mote_scene *scene);
 
+/* The scene's warnings, all of them where scene.warning shows those that
+ * fit in 256 bytes: how many distinct ones the load kept (the first 4096
+ * given; *dropped, when not NULL: how many more distinct ones it did
+ * not), and the i-th of them in the order first given (NULL past the
+ * last), with how many times it was given in *repeats (may be NULL). The
+ * texts live as long as the scene. */
+int mote_scene_warning_count(const mote_scene *scene, unsigned *dropped);
+const char *mote_scene_warning(const mote_scene *scene, int i, unsigned *repeats);
+
 /* Whether path names a file the scene was read from: its scene file
  * (mote_scene_load) or one its textures were decoded from. The same file
  * by device and inode, whatever the name ("./b.png", a link, a hard
@@ -174,6 +196,14 @@ bool mote_scene_reads_file(const mote_scene *scene, const char *path);
  * the file lists no lights, a point light above the camera. The ambient
  * stays 0: the materials hold the scene's (see mote_scene.ambient). */
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
+
+/* Sets camera's znear and zfar for its position so that the whole scene
+ * lies between them, as mote_scene_frame sets them for the camera it
+ * frames the scene with: far past the far side of the sphere around the
+ * scene's bounding box, near where the sphere begins (at least 1/100 of
+ * the distance to its centre, and 1/1000 of far). For a caller's own
+ * eye on a scene without a camera (mote-render --camera). */
+void mote_scene_fit_planes(const mote_scene *scene, mote_camera *camera);
 
 /* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with
  * cull MOTE_CULL_NONE where the mesh's material has backFaceCulling false,

@@ -13,6 +13,42 @@
 #include <stdint.h>
 #include <stdio.h>
 
+/* Process-wide counters and flags (tests' failure injection, cJSON's
+ * hooks) are touched with atomic builtins where the compiler has them, so
+ * that loading scenes on several threads stays well defined.
+ * mote__io_claim turns *p from 0 to 1 and says whether this call did. */
+#if defined(__GNUC__)
+#define MOTE__IO_ADD(p, v) __atomic_add_fetch((p), (v), __ATOMIC_RELAXED)
+#define MOTE__IO_LOAD(p) __atomic_load_n((p), __ATOMIC_RELAXED)
+#define MOTE__IO_STORE(p, v) __atomic_store_n((p), (v), __ATOMIC_RELAXED)
+#define MOTE__IO_EXCHANGE(p, v) __atomic_exchange_n((p), (v), __ATOMIC_RELAXED)
+#define MOTE__IO_LOAD_ACQUIRE(p) __atomic_load_n((p), __ATOMIC_ACQUIRE)
+#define MOTE__IO_STORE_RELEASE(p, v) __atomic_store_n((p), (v), __ATOMIC_RELEASE)
+static inline bool mote__io_claim(int *p)
+{
+    int expected = 0;
+    return __atomic_compare_exchange_n(p, &expected, 1, false, __ATOMIC_ACQ_REL,
+                                       __ATOMIC_ACQUIRE);
+}
+#else
+#define MOTE__IO_ADD(p, v) (*(p) += (v))
+#define MOTE__IO_LOAD(p) (*(p))
+#define MOTE__IO_STORE(p, v) (*(p) = (v))
+#define MOTE__IO_EXCHANGE(p, v) mote__io_exchange((p), (v))
+#define MOTE__IO_LOAD_ACQUIRE(p) (*(p))
+#define MOTE__IO_STORE_RELEASE(p, v) (*(p) = (v))
+static inline bool mote__io_claim(int *p)
+{
+    return *p == 0 ? (*p = 1, true) : false;
+}
+static inline int mote__io_exchange(int *p, int v)
+{
+    int old = *p;
+    *p = v;
+    return old;
+}
+#endif
+
 /* Every allocation of src/io goes through these, so that tests can make
  * the n-th one fail and check that nothing leaks. */
 void *mote__io_malloc(size_t size);

@@ -57,14 +57,23 @@ void mote__store_release(mote__store *s);
 
 /* ---- a load in progress ------------------------------------------------ */
 
-/* A distinct warning and how many times it was given. */
-typedef struct mote__warning {
-    char text[256];
-    unsigned count;
-} mote__warning;
+/* The distinct warnings a scene keeps (mote_scene_warning); those past
+ * them are counted. A file that warns once per mesh keeps them all up to
+ * here, in 12 bytes each plus their text. */
+#define MOTE__MAX_WARNINGS 4096
 
-/* More distinct warnings than scene.warning (256 bytes) can show anyway. */
-#define MOTE__MAX_WARNINGS 16
+/* Every distinct warning of a load, in the order first given, and how
+ * many times each was given: the texts and both arrays in the scene's
+ * store (what mote_scene.warnings_ points to), the lookup in the load's
+ * temporaries; allocated at the first warning. */
+typedef struct mote__warnings {
+    const char **text;
+    unsigned *count;
+    int n;
+    unsigned dropped;             /* distinct ones given past MOTE__MAX_WARNINGS, or
+                                     that could not be allocated */
+    int *slots;                   /* by the text's hash: index + 1, 0 empty */
+} mote__warnings;
 
 typedef struct mote__loader {
     char name[128];               /* the file's name, first in every message */
@@ -77,9 +86,7 @@ typedef struct mote__loader {
     mote__store tmp;              /* released when the load ends */
     mote__texture_set textures;   /* scene->textures, each file or data: URL decoded once
                                      (mote__texture_slots) */
-    mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
-    int warning_count;
-    unsigned warnings_dropped;    /* given after the list was full */
+    mote__warnings *warnings;     /* NULL until the first warning */
 } mote__loader;
 
 /* Starts loading size bytes into *out (zeroed): the name cleaned for
@@ -88,8 +95,9 @@ typedef struct mote__loader {
 mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *base_dir,
                                const mote_limits *limits, size_t size, mote_scene *out,
                                char *message, size_t message_size);
-/* Ends the load whose result is r: the temporaries released and, when r
- * is an error, the scene freed and zeroed. Returns r. */
+/* Ends the load whose result is r: the scene's triangles checked against
+ * limits.max_triangles, the temporaries released and, when that leaves
+ * an error, the scene freed and zeroed. Returns the result. */
 mote_result mote__loader_end(mote__loader *ld, mote_result r);
 
 /* The message "NAME: what" (printf-style); returns code. */
@@ -106,8 +114,9 @@ mote_result mote__oom(mote__loader *ld, const char *at);
 mote_result mote__check_count(mote__loader *ld, const char *at, size_t count,
                               const char *what, size_t limit);
 
-/* A non-fatal note in scene->warning: each distinct one once, " (xN)" when
- * given N times, "; N more warnings" for those that do not fit. */
+/* A non-fatal note, kept for mote_scene_warning and shown in
+ * scene->warning: each distinct one once, " (xN)" when given N times,
+ * "; N more warnings" for those that do not fit. */
 void mote__warn(mote__loader *ld, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))

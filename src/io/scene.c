@@ -328,6 +328,49 @@ void mote_scene_choose_lod(const mote_scene *scene, mote_mesh *meshes, const mot
         mote__lod_show(scene, meshes, g, mote_scene_lod_level(scene, g, meshes, camera));
 }
 
+/* The sphere around the scene's bounding box: its centre and radius (1
+ * for an empty or degenerate box). */
+static float mote__scene_sphere(const mote_scene *scene, float c[3])
+{
+    float r2 = 0.0f;
+    for (int k = 0; k < 3; k++) {
+        float d = 0.5f * (scene->bounds_max[k] - scene->bounds_min[k]);
+        c[k] = 0.5f * (scene->bounds_min[k] + scene->bounds_max[k]);
+        r2 += d * d;
+    }
+    float radius = sqrtf(r2);
+    return radius > 1e-6f && isfinite(radius) ? radius : 1.0f;
+}
+
+/* Planes that hold the sphere (c, radius) seen from dist away: far past
+ * its far side, near where it begins (at least 1/100 of the distance, and
+ * 1/1000 of far for an eye inside it). */
+static void mote__planes_for(float dist, float radius, mote_camera *cam)
+{
+    cam->zfar = dist + radius * 2.0f;
+    cam->znear = dist - radius * 1.5f;
+    if (cam->znear < dist * 0.01f)
+        cam->znear = dist * 0.01f;
+    if (cam->znear < cam->zfar * 0.001f)
+        cam->znear = cam->zfar * 0.001f;
+}
+
+void mote_scene_fit_planes(const mote_scene *scene, mote_camera *camera)
+{
+    if (!scene || !camera)
+        return;
+    float c[3];
+    float radius = mote__scene_sphere(scene, c);
+    double d2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        double d = (double)camera->position[k] - c[k];
+        d2 += d * d;
+    }
+    float dist = (float)sqrt(d2);
+    if (isfinite(dist))
+        mote__planes_for(dist, radius, camera);
+}
+
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame)
 {
     if (!frame)
@@ -335,15 +378,8 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
     memset(frame, 0, sizeof *frame);
     if (!scene)
         return;
-    float c[3], d[3], r2 = 0.0f;
-    for (int k = 0; k < 3; k++) {
-        c[k] = 0.5f * (scene->bounds_min[k] + scene->bounds_max[k]);
-        d[k] = 0.5f * (scene->bounds_max[k] - scene->bounds_min[k]);
-        r2 += d[k] * d[k];
-    }
-    float radius = sqrtf(r2);
-    if (!(radius > 1e-6f) || !isfinite(radius))
-        radius = 1.0f;
+    float c[3];
+    float radius = mote__scene_sphere(scene, c);
     if (scene->has_camera) {
         frame->camera = scene->camera;
         /* the horizontal field of view as the core's vertical one, as
@@ -372,10 +408,7 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
             cam->target[k] = c[k];
         }
         cam->fov = fov;
-        cam->znear = dist - radius * 1.5f;
-        if (cam->znear < dist * 0.01f)
-            cam->znear = dist * 0.01f;
-        cam->zfar = dist + radius * 2.0f;
+        mote__planes_for(dist, radius, cam);
     }
     int n = scene->light_count;
     if (n > MOTE_MAX_LIGHTS)

@@ -43,7 +43,8 @@ static mote_result mote__texture_found(mote__loader *ld, const char *at, const c
             mote__warn(ld, "%s: %s (drawn untextured)", at, why);
             return MOTE_OK;
         }
-        return mote__fail(ld, r, "%s.%s: %s", at, key, why);
+        return mote__fail(ld, r, "%s.%s: %s (limits.missing_texture_is_warning draws its "
+                          "material untextured)", at, key, why);
     }
     m->texture = &ld->scene->textures[index];
     return MOTE_OK;
@@ -123,7 +124,8 @@ mote_result mote__scene_texture(mote__loader *ld, const char *at, const char *ke
             return MOTE_OK;
         }
         return mote__fail(ld, MOTE_ERR_IO, "%s.%s: \"%s\" is a web address, which mote does "
-                          "not download (textures are files in the scene's folder, or embedded)",
+                          "not download (textures are files in the scene's folder, or embedded; "
+                          "limits.missing_texture_is_warning draws its material untextured)",
                           at, key, mote__quote(name).s);
     }
     /* decoded, the name is checked again: "%2e%2e/x.png" is not tried */
