@@ -109,7 +109,7 @@ mote_result mote__gltf_buffers(mote__gltf *gl)
 
 void mote__gltf_free_buffers(mote__gltf *gl)
 {
-    for (int i = 0; i < gl->buffer_count; i++) {
+    for (int i = 0; gl->buffers && i < gl->buffer_count; i++) {
         mote__io_free(gl->buffers[i].owned);
         gl->buffers[i].owned = NULL;
     }
