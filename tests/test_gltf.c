@@ -39,24 +39,9 @@ static void load(const char *name, mote_scene *s)
                               msg);
 }
 
-/* The scene drawn as mote-render draws it (its camera and lights, or the
- * framing ones), RGBA into out. */
 static void render(const mote_scene *s, uint8_t *out)
 {
-    static uint32_t depth[W * H];
-    mote_device dev;
-    mote_device_desc dd = {.width = W, .height = H, .color = out, .depth = depth,
-                           .clear_color = s->clear_color};
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &dd));
-    mote_frame_desc frame;
-    mote_scene_frame(s, (float)W / H, &frame);
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
-    for (int i = 0; i < s->mesh_count; i++) {
-        mote_draw_desc d;
-        mote_scene_draw_desc(s, i, NULL, &d);
-        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s->meshes[i], &d));
-    }
-    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    io_render_scene(s, out, W, H);
 }
 
 /* Where the point p of mesh m lands in the (mirrored) world. */
