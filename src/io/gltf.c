@@ -29,29 +29,45 @@ mote_result mote__gltf_index(mote__gltf *gl, const cJSON *obj, const char *key,
 
 mote_result mote__gltf_item(mote__gltf *gl, const char *key, int n, const cJSON **out)
 {
-    const cJSON *list = mote__json_get(gl->root, key);
-    const cJSON *e = list ? list->child : NULL;
-    for (int i = 0; i < n && e; i++)
-        e = e->next;
-    char at[64];
+    const mote__gltf_list *l = NULL;
+    for (int i = 0; i < gl->list_count && !l; i++)
+        if (strcmp(gl->lists[i].key, key) == 0)
+            l = &gl->lists[i];
+    char at[96];
     snprintf(at, sizeof at, "%s[%d]", key, n);
-    if (!e)
+    if (!l || n < 0 || n >= l->count)
         return mote__fail(gl->load, MOTE_ERR_RANGE, "%s: missing", at);
-    MOTE__TRY(mote__json_object(gl->load, e, at));
-    *out = e;
+    MOTE__TRY(mote__json_object(gl->load, l->items[n], at));
+    *out = l->items[n];
     return MOTE_OK;
 }
 
-/* The length of root[key], which must be an array when present, into *n
- * (counts are held to the mesh limit: each may make meshes or textures). */
-static mote_result mote__gltf_count(mote__gltf *gl, const char *key, int *n)
+mote_result mote__gltf_list_add(mote__gltf *gl, const char *key, const cJSON *array, int *n)
+{
+    size_t len = mote__json_length(array);
+    MOTE__TRY(mote__check_count(gl->load, key, len, key, gl->load->lim.max_meshes));
+    if (gl->list_count >= MOTE__GLTF_LISTS)
+        return mote__fail(gl->load, MOTE_ERR_LIMIT, "%s: more than %d lists", key,
+                          MOTE__GLTF_LISTS);
+    mote__gltf_list *l = &gl->lists[gl->list_count];
+    l->items = mote__store_alloc(&gl->load->tmp, len, sizeof *l->items);
+    if (!l->items)
+        return mote__oom(gl->load, key);
+    l->key = key;
+    l->count = (int)len;
+    int i = 0;
+    for (const cJSON *e = array ? array->child : NULL; e; e = e->next)
+        l->items[i++] = e;
+    gl->list_count++;
+    *n = (int)len;
+    return MOTE_OK;
+}
+
+mote_result mote__gltf_count(mote__gltf *gl, const char *key, int *n)
 {
     const cJSON *list;
     MOTE__TRY(mote__json_array(gl->load, gl->root, key, "", &list));
-    size_t len = mote__json_length(list);
-    MOTE__TRY(mote__check_count(gl->load, key, len, key, gl->load->lim.max_meshes));
-    *n = (int)len;
-    return MOTE_OK;
+    return mote__gltf_list_add(gl, key, list, n);
 }
 
 bool mote__gltf_uses(const mote__gltf *gl, const char *name)

@@ -92,6 +92,15 @@ typedef struct mote__gltf_node {
     int depth;                    /* parents above its own meshes, helpers counted */
 } mote__gltf_node;
 
+/* A top-level array of the file ("accessors"), its elements by index. */
+typedef struct mote__gltf_list {
+    const char *key;
+    const cJSON **items;
+    int count;
+} mote__gltf_list;
+
+enum { MOTE__GLTF_LISTS = 16 };
+
 /* A glTF file being loaded: the load (loader.h), the file's JSON and what
  * has been read of it. */
 typedef struct mote__gltf {
@@ -117,6 +126,8 @@ typedef struct mote__gltf {
     int light_def_count;
     bool quantized;               /* KHR_mesh_quantization is used */
     bool lights_ext;              /* KHR_lights_punctual is used */
+    mote__gltf_list lists[MOTE__GLTF_LISTS]; /* looked up by index, not walked */
+    int list_count;
 } mote__gltf;
 
 /* Loads a glTF 2.0 file into ld->scene (scene.c calls them): the JSON
@@ -128,8 +139,13 @@ mote_result mote__gltf_load_glb(mote__loader *ld, const unsigned char *data, siz
  * things (what names them in messages): absent leaves *out as it is. */
 mote_result mote__gltf_index(mote__gltf *gl, const cJSON *obj, const char *key,
                              const char *where, int n, const char *what, int *out);
-/* The n-th element of root[key] ("meshes"), an object, or an error. */
+/* The n-th element of the list key ("meshes"), an object, or an error. */
 mote_result mote__gltf_item(mote__gltf *gl, const char *key, int n, const cJSON **out);
+/* Lists array (NULL: empty) as key for mote__gltf_item, its length held
+ * to the mesh limit (each element may make meshes or textures). */
+mote_result mote__gltf_list_add(mote__gltf *gl, const char *key, const cJSON *array, int *n);
+/* The same for root[key], which must be an array when present. */
+mote_result mote__gltf_count(mote__gltf *gl, const char *key, int *n);
 /* Whether extension name is in extensionsUsed. */
 bool mote__gltf_uses(const mote__gltf *gl, const char *name);
 

@@ -119,23 +119,18 @@ mote_result mote__gltf_light_defs(mote__gltf *gl)
     MOTE__TRY(mote__json_object(gl->load, ext, "extensions.KHR_lights_punctual"));
     MOTE__TRY(mote__json_array(gl->load, ext, "lights", "extensions.KHR_lights_punctual",
                                &gl->light_defs));
-    size_t n = mote__json_length(gl->light_defs);
-    MOTE__TRY(mote__check_count(gl->load, "extensions.KHR_lights_punctual.lights", n, "lights",
-                                gl->load->lim.max_meshes));
-    gl->light_def_count = (int)n;
-    return MOTE_OK;
+    return mote__gltf_list_add(gl, "extensions.KHR_lights_punctual.lights", gl->light_defs,
+                               &gl->light_def_count);
 }
 
 /* A light of nodes[i] into *L; *dark: it adds nothing. */
 static mote_result mote__gltf_light(mote__gltf *gl, int i, mote_light *L, bool *dark)
 {
     const mote__gltf_node *nd = &gl->nodes[i];
-    const cJSON *def = gl->light_defs->child;
-    for (int k = 0; k < nd->light; k++)
-        def = def->next;
+    const cJSON *def;
+    MOTE__TRY(mote__gltf_item(gl, "extensions.KHR_lights_punctual.lights", nd->light, &def));
     char at[64];
     snprintf(at, sizeof at, "extensions.KHR_lights_punctual.lights[%d]", nd->light);
-    MOTE__TRY(mote__json_object(gl->load, def, at));
     const char *type;
     MOTE__TRY(mote__json_string(gl->load, def, "type", at, &type));
     memset(L, 0, sizeof *L);

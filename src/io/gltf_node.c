@@ -128,9 +128,8 @@ mote_result mote__gltf_scene_nodes(mote__gltf *gl)
         nd->parent = nd->mesh = nd->camera = nd->light = -1;
     }
     gl->camera_node = -1;
-    const cJSON *scenes;
-    MOTE__TRY(mote__json_array(gl->load, gl->root, "scenes", "", &scenes));
-    int scene_count = (int)mote__json_length(scenes);
+    int scene_count;
+    MOTE__TRY(mote__gltf_count(gl, "scenes", &scene_count));
     /* the default scene, else the first, as viewers choose */
     gl->scene = scene_count ? 0 : -1;
     if (mote__json_get(gl->root, "scene")) {
