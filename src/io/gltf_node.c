@@ -21,8 +21,17 @@ static mote_result mote__gltf_node_transform(mote__gltf *gl, const cJSON *node, 
     t->use_quat = true;
     t->scaling[0] = t->scaling[1] = t->scaling[2] = 1.0f;
     if (mote__json_get(node, "matrix")) {
+        /* 16 numbers (mote__json_floats reads at most 4) */
+        const cJSON *a = mote__json_get(node, "matrix");
+        char mat[64];
+        snprintf(mat, sizeof mat, "%s.matrix", at);
+        if (!cJSON_IsArray(a) || mote__json_length(a) != 16)
+            return mote__fail(gl->load, MOTE_ERR_PARSE, "%s: expected an array of 16 numbers",
+                              mat);
         float m[16];
-        MOTE__TRY(mote__json_floats(gl->load, node, "matrix", at, 16, 0, m));
+        size_t k = 0;
+        for (const cJSON *e = a->child; e; e = e->next, k++)
+            MOTE__TRY(mote__json_element_float(gl->load, e, mat, k, &m[k]));
         static const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
         if (memcmp(m, id, sizeof m) == 0)
             return MOTE_OK;
