@@ -6,7 +6,7 @@
  * ambient) and the clear colour. The
  * firmware then renders with no file system, no JSON and no heap.
  *
- *   mote-bake SCENE.babylon -o scene.h [--format rgb565|rgba8888|grey8]
+ *   mote-bake SCENE -o scene.h [--format rgb565|rgba8888|grey8]
  *             [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]
  *
  * Floats are written as C99 hexadecimal literals, so the baked scene is the
@@ -59,7 +59,7 @@ typedef struct baker {
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: mote-bake SCENE.babylon -o OUT.h [--format rgb565|rgba8888|grey8]\n"
+            "usage: mote-bake SCENE -o OUT.h [--format rgb565|rgba8888|grey8]\n"
             "                 [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]\n"
             "Writes a C header with the scene's meshes, textures (in FORMAT, default\n"
             "rgb565), camera and lights as const mote structs (identifiers NAME_*,\n"

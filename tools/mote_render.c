@@ -65,7 +65,7 @@ typedef struct options {
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: mote-render SCENE.babylon -o OUT.png|OUT.ppm [options]\n"
+            "usage: mote-render SCENE -o OUT.png|OUT.ppm [options]\n"
             "  --size WxH              image size (default 640x480)\n"
             "  --mode MODE             points|wireframe|flat|gouraud|textured\n"
             "                          (default: gouraud, textured where a material has a texture)\n"

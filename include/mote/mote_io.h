@@ -1,6 +1,6 @@
 /*
- * mote_io.h - host-side companions of the mote core: .babylon scene files
- * (cJSON), textures (stb_image), PNG/PPM output (stb_image_write and a
+ * mote_io.h - host-side companions of the mote core: .babylon and glTF 2.0
+ * scene files (cJSON), textures (stb_image), PNG/PPM output (stb_image_write and a
  * hand-written P6 writer), and the OpenMP tile loop.
  *
  * Everything here may allocate; every object it creates has a function that
@@ -157,18 +157,21 @@ typedef struct mote_scene {
 } mote_scene;
 
 /* Loads a scene file. Its format is told by its bytes, whatever its
- * name: a .babylon scene (Babylon.js's JSON, either layout; what is read,
- * and how, is docs/babylon.md) loads; anything else fails saying what it
- * is: MOTE_ERR_UNSUPPORTED for a glTF file (JSON or binary), a Wavefront
- * OBJ file or an image, MOTE_ERR_IO for a Git LFS pointer in place of the
- * file, MOTE_ERR_PARSE for none of these. Textures resolve relative to
- * the scene's folder. limits may be NULL. On failure *out is zeroed and
- * the message names the file and the place. */
+ * name: a .babylon scene (Babylon.js's JSON, either layout;
+ * docs/babylon.md) or a glTF 2.0 one (.gltf JSON with its buffers and
+ * images, or a binary .glb; docs/gltf.md) loads; anything else fails
+ * saying what it is: MOTE_ERR_UNSUPPORTED for a glTF 1.0 file, a
+ * Wavefront OBJ file or an image, MOTE_ERR_IO for a Git LFS pointer in
+ * place of the file, MOTE_ERR_PARSE for none of these. Textures and glTF
+ * buffers resolve relative to the scene's folder. limits may be NULL. On
+ * failure *out is zeroed and the message names the file and the place
+ * (for a .glb's container, the byte offset). */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from size bytes of memory; base_dir resolves texture names
- * (NULL: no textures are loaded, materials keep their colour); name is
- * used in messages. */
+ * and glTF buffer files (NULL: no textures are loaded, materials keep
+ * their colour, and a glTF buffer in a file is an error); name is used
+ * in messages. */
 mote_result mote_scene_load_memory(const char *data, size_t size, const char *name,
                                    const char *base_dir, const mote_limits *limits,
                                    mote_scene *out, char *message, size_t message_size);

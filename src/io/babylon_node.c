@@ -754,21 +754,7 @@ mote_result mote__babylon_scene_bounds(mote__babylon *bl)
         const mote__node *nd = &bl->nodes[i];
         if (nd->nv == 0 || sc->meshes[nd->first_mesh].hidden)
             continue;
-        float w[16];
-        mote_mesh_world_matrix(&sc->meshes[nd->first_mesh], w);
-        for (uint32_t v = 0; v < nd->nv; v++) {
-            const float *p = nd->verts[v].position;
-            float q[3];
-            for (int k = 0; k < 3; k++)
-                q[k] = w[k] * p[0] + w[4 + k] * p[1] + w[8 + k] * p[2] + w[12 + k];
-            if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]))
-                continue;
-            for (int k = 0; k < 3; k++) {
-                if (!any || q[k] < sc->bounds_min[k]) sc->bounds_min[k] = q[k];
-                if (!any || q[k] > sc->bounds_max[k]) sc->bounds_max[k] = q[k];
-            }
-            any = true;
-        }
+        mote__scene_bounds_add(sc, &sc->meshes[nd->first_mesh], &any);
     }
     return MOTE_OK;
 }

@@ -176,6 +176,12 @@ void mote__io_clean_name(char *dst, size_t n, const char *s);
 
 /* Whether s starts with "data:" (any case): an embedded image, not a file. */
 bool mote__io_is_data_url(const char *s);
+/* Strict base64 (RFC 4648, no line breaks or spaces): '=' only as the last
+ * one or two characters of a 4-character group, padding optional (some
+ * writers omit it), no lone final character. Bytes go to out (room for
+ * len / 4 * 3 + 2); *bad: the offending offset on failure. */
+bool mote__io_base64_decode(const char *in, size_t len, unsigned char *out, size_t *out_len,
+                            size_t *bad);
 /* Decodes a base64 data: URL ("data:image/png;base64,...") with strict
  * validation (decoded size within limits->max_file_bytes) and loads the
  * image as mote_texture_load_memory does. */
@@ -210,6 +216,12 @@ mote_result mote__texture_set_file(mote__texture_set *set, const char *folder, c
 mote_result mote__texture_set_data_url(mote__texture_set *set, const char *url,
                                        const mote_limits *limits, int *index, char *message,
                                        size_t message_size);
+
+/* The same for size bytes of an image held in memory (a glTF buffer
+ * view), decoded each time: its caller names each image once. */
+mote_result mote__texture_set_memory(mote__texture_set *set, const void *data, size_t size,
+                                     const mote_limits *limits, int *index, char *message,
+                                     size_t message_size);
 
 /* Whether w x h pixels are more than *limits allow: the decode refuses
  * every such image by its size, before stb_image decodes it. */

@@ -5,6 +5,7 @@
  */
 #include "loader.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -180,6 +181,25 @@ uint8_t mote__unit_byte(float c)
     if (c >= 1.0f)
         return 255;
     return (uint8_t)(c * 255.0f + 0.5f);
+}
+
+void mote__scene_bounds_add(mote_scene *sc, const mote_mesh *m, bool *any)
+{
+    float w[16];
+    mote_mesh_world_matrix(m, w);
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        const float *p = m->vertices[v].position;
+        float q[3];
+        for (int k = 0; k < 3; k++)
+            q[k] = w[k] * p[0] + w[4 + k] * p[1] + w[8 + k] * p[2] + w[12 + k];
+        if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]))
+            continue;
+        for (int k = 0; k < 3; k++) {
+            if (!*any || q[k] < sc->bounds_min[k]) sc->bounds_min[k] = q[k];
+            if (!*any || q[k] > sc->bounds_max[k]) sc->bounds_max[k] = q[k];
+        }
+        *any = true;
+    }
 }
 
 static void mote__free_storage(mote_scene *scene)

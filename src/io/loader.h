@@ -130,6 +130,10 @@ typedef struct mote__quoted {
 
 mote__quoted mote__quote(const char *s);
 
+/* Widens sc->bounds_min/max to m's vertices in world space (non-finite
+ * ones skipped); *any: whether the box holds a point yet. */
+void mote__scene_bounds_add(mote_scene *sc, const mote_mesh *m, bool *any);
+
 /* A 0..1 colour channel as a byte, rounded, clamped (NaN: 0). */
 uint8_t mote__unit_byte(float c);
 
@@ -149,6 +153,19 @@ mote_result mote__texture_slots(mote__loader *ld, size_t n, const char *at);
  * limits.missing_texture_is_warning leaves m untextured with a warning. */
 mote_result mote__scene_texture(mote__loader *ld, const char *at, const char *key,
                                 const char *name, const char *embedded, mote_material *m);
+
+/* The same for an image held in the scene file itself (size bytes of
+ * data: a glTF buffer view), decoded each time it is named: the caller
+ * names each one once. */
+mote_result mote__scene_texture_bytes(mote__loader *ld, const char *at, const char *key,
+                                      const void *data, size_t size, mote_material *m);
+
+/* A file name written as a URL ("my%20tex.png?v=2", as web exporters
+ * write them) read as a file name: the "?query" dropped and %XX escapes
+ * decoded. An invalid escape, or %00, leaves the escapes as written.
+ * *out NULL: the same as name; else in the temporary store. */
+mote_result mote__url_decoded_name(mote__loader *ld, const char *at, const char *name,
+                                   char **out);
 
 /* ---- the loaded scene (scene.c) ---------------------------------------- */
 

@@ -5,6 +5,7 @@
  * lists the files).
  */
 #include "babylon.h"
+#include "gltf.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -136,8 +137,8 @@ static void mote__first_bytes(const unsigned char *d, size_t n, char *out, size_
         used += (size_t)snprintf(out + used, out_size - used, "%s%02x", i ? " " : "", d[i]);
 }
 
-/* The scene in data into ld->scene: a .babylon scene, or an error that
- * says what else the file is. */
+/* The scene in data into ld->scene: a .babylon or glTF scene, or an
+ * error that says what else the file is. */
 static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, size_t size)
 {
     const unsigned char *d = (const unsigned char *)data;
@@ -147,12 +148,10 @@ static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, si
     case MOTE__FORMAT_JSON:
         break;
     case MOTE__FORMAT_GLB:
-        /* Here the glTF loader is to be called for a binary glTF. */
-        return mote__fail(ld, MOTE_ERR_UNSUPPORTED, "a binary glTF file (.glb), which mote does "
-                          "not read (it reads .babylon scenes)");
+        return mote__gltf_load_glb(ld, d, size);
     case MOTE__FORMAT_OBJ:
         return mote__fail(ld, MOTE_ERR_UNSUPPORTED, "%s, which mote does not read (it reads "
-                          ".babylon scenes)", kind);
+                          ".babylon and glTF scenes)", kind);
     case MOTE__FORMAT_LFS_POINTER:
         return mote__fail(ld, MOTE_ERR_IO, "a Git LFS pointer, not the file it stands for "
                           "(git lfs pull fetches it)");
@@ -161,22 +160,17 @@ static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, si
                           "a scene names)", kind);
     case MOTE__FORMAT_UNKNOWN:
         mote__first_bytes(d, size, first, sizeof first);
-        return mote__fail(ld, MOTE_ERR_PARSE, "not a scene: neither .babylon JSON nor a format "
-                          "mote knows (it starts with bytes %s)", first);
+        return mote__fail(ld, MOTE_ERR_PARSE, "not a scene: neither .babylon nor glTF, nor a "
+                          "format mote knows (it starts with bytes %s)", first);
     }
     cJSON *root;
     MOTE__TRY(mote__json_parse(ld, data, size, &root));
     mote_result r;
     const cJSON *gltf_version = mote__json_member(mote__json_member(root, "asset"), "version");
-    if (gltf_version) {
-        /* Here the glTF loader is to be called for a glTF JSON file. */
-        mote__quoted version = mote__quote(cJSON_IsString(gltf_version)
-                                               ? gltf_version->valuestring : "?");
-        r = mote__fail(ld, MOTE_ERR_UNSUPPORTED, "a glTF file (asset.version \"%s\"), which mote "
-                       "does not read (it reads .babylon scenes)", version.s);
-    } else {
+    if (gltf_version)
+        r = mote__gltf_load_json(ld, root);
+    else
         r = mote__babylon_load(ld, root);
-    }
     cJSON_Delete(root);
     return r;
 }
