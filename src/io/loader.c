@@ -127,8 +127,10 @@ void mote__warn(mote__loader *ld, const char *fmt, ...)
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     mote__warnings *ws = mote__warning_list(ld);
-    if (!ws)
-        return;                   /* out of memory: the load goes on without it */
+    if (!ws) {
+        ld->warning_lost = true;  /* out of memory: mote__loader_end says so */
+        return;
+    }
     size_t slot = mote__text_hash(text) & (MOTE__WARNING_SLOTS - 1);
     while (ws->slots[slot] && strcmp(ws->text[ws->slots[slot] - 1], text) != 0)
         slot = (slot + 1) & (MOTE__WARNING_SLOTS - 1);
@@ -138,6 +140,7 @@ void mote__warn(mote__loader *ld, const char *fmt, ...)
         size_t len = strlen(text) + 1;
         char *copy = ws->n < MOTE__MAX_WARNINGS ? mote__store_alloc(ld->keep, len, 1) : NULL;
         if (!copy) {
+            ld->warning_lost |= ws->n < MOTE__MAX_WARNINGS;
             ws->dropped++;
         } else {
             memcpy(copy, text, len);
@@ -269,6 +272,8 @@ mote_result mote__loader_end(mote__loader *ld, mote_result r)
 {
     if (r == MOTE_OK)
         r = mote__check_triangles(ld);
+    if (r == MOTE_OK && ld->warning_lost)
+        r = mote__oom(ld, "a warning");
     if (ld->warnings)
         ld->warnings->slots = NULL;   /* a temporary: no warnings come after the load */
     mote__store_release(&ld->tmp);

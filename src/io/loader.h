@@ -87,6 +87,7 @@ typedef struct mote__loader {
     mote__texture_set textures;   /* scene->textures, each file or data: URL decoded once
                                      (mote__texture_slots) */
     mote__warnings *warnings;     /* NULL until the first warning */
+    bool warning_lost;            /* out of memory for a warning: the load fails so */
 } mote__loader;
 
 /* Starts loading size bytes into *out (zeroed): the name cleaned for
