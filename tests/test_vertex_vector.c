@@ -3,11 +3,11 @@
  * scalar one, value by value.
  *
  * On SSE2 hosts a full vertex cache is transformed four vertices at a
- * time (geometry.c, mote__transform4), and the snap to sub-pixels goes
+ * time (vertex.c, mote__transform4), and the snap to sub-pixels goes
  * through double arithmetic (mote__v4_snap_axis) where the scalar path,
  * the one every microcontroller runs, splits the float into mantissa and
- * exponent (mote__snap_axis). Frames compare the two only on the values a
- * scene happens to produce; this file compiles geometry.c a second time
+ * exponent (clip.c, mote__snap_axis). Frames compare the two only on the
+ * values a scene happens to produce; this file compiles vertex.c a second time
  * and holds them to the same answer on the values where rounding is
  * decided: exact ties (n h = j + 1/2), their neighbouring floats, every
  * exponent, zero, denormals, NaN, infinities and the limit's edges, for
@@ -16,11 +16,19 @@
  * Threshold: 0 differences (whether the snap succeeds, and its value).
  */
 #include "core/internal.h"
-#define mote__resolve_draw_desc vector_test_resolve_draw_desc
-#define mote__vertex_cache_bytes vector_test_vertex_cache_bytes
-#define mote__prepare_vertices vector_test_prepare_vertices
-#define mote__process_draw vector_test_process_draw
-#include "core/geometry.c"
+/* its functions under other names: the library has them too */
+#define mote__vertex_begin vector_test_vertex_begin
+#define mote__light_at vector_test_light_at
+#define mote__normalize vector_test_normalize
+#define mote__tint vector_test_tint
+#define mote__shade_fixed vector_test_shade_fixed
+#define mote__to_setup vector_test_to_setup
+#define mote__finish vector_test_finish
+#define mote__finish4 vector_test_finish4
+#define mote__v4_light_init vector_test_v4_light_init
+#define mote__transform_range vector_test_transform_range
+#define mote__vertex vector_test_vertex
+#include "core/vertex.c"
 
 #include "support/testutil.h"
 #include "unity.h"

@@ -36,3 +36,6 @@ render-matrix: $(RM_BIN)
 	    if cmp -s $(RM_OUT) $(RENDER_MATRIX_REF); then echo "render matrix: identical to $(RENDER_MATRIX_REF)"; \
 	    else diff $(RENDER_MATRIX_REF) $(RM_OUT) | head -n 20; \
 	         echo "render matrix: DIFFERS from $(RENDER_MATRIX_REF)"; exit 1; fi; fi
+
+# No two core files call each other (tests/core/layers.sh), run by make test.
+TEST_EXTRA += tests/core/layers.sh
