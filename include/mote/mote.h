@@ -286,6 +286,11 @@ typedef enum mote_depth_format {
 int mote_format_bytes(mote_format format);
 /* Bytes per pixel of a depth format (0 for NONE or invalid). */
 int mote_depth_format_bytes(mote_depth_format format);
+/* A colour format's name as the tools take it ("rgba8888", "rgb565",
+ * "rgb565_swapped", "grey8"); NULL for an invalid one. */
+const char *mote_format_name(mote_format format);
+/* Whether a texture may have this format (RGBA8888, RGB565, GREY8). */
+bool mote_format_is_texture(mote_format format);
 
 typedef struct mote_rgba { uint8_t r, g, b, a; } mote_rgba;
 

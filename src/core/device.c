@@ -22,25 +22,6 @@ const char *mote_result_string(mote_result result)
     return s;
 }
 
-int mote_format_bytes(mote_format format)
-{
-    return mote__format_bytes(format);
-}
-
-int mote_depth_format_bytes(mote_depth_format format)
-{
-    return mote__depth_format_bytes(format);
-}
-
-size_t mote_band_bytes(int width, int band_height, mote_format color, mote_depth_format depth)
-{
-    /* no device is larger: the product then fits a 32-bit size_t */
-    if (width <= 0 || band_height <= 0 || width > MOTE_MAX_SIZE || band_height > MOTE_MAX_SIZE)
-        return 0;
-    return (size_t)width * (size_t)band_height
-         * (size_t)(mote_format_bytes(color) + mote_depth_format_bytes(depth));
-}
-
 mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc)
 {
     mote_device_desc d = *desc;
@@ -308,60 +289,4 @@ mote_result mote_end(mote_device *dev)
         d->flush(d->flush_user, y0, y1 - y0, d->color, d->color_stride);
     }
     return result;
-}
-
-/* ---- pixels -------------------------------------------------------------- */
-
-static void mote__read_rgb(const uint8_t *row, int x, mote_format f, uint8_t out[4])
-{
-    switch (f) {
-    case MOTE_FORMAT_RGB565:
-    case MOTE_FORMAT_RGB565_SWAPPED: {
-        uint32_t v = ((const uint16_t *)(const void *)row)[x];
-        if (f == MOTE_FORMAT_RGB565_SWAPPED)
-            v = ((v & 0xff) << 8) | (v >> 8);
-        out[0] = (uint8_t)(((v >> 11) * 527 + 23) >> 6);
-        out[1] = (uint8_t)((((v >> 5) & 63) * 259 + 33) >> 6);
-        out[2] = (uint8_t)(((v & 31) * 527 + 23) >> 6);
-        out[3] = 255;
-        break;
-    }
-    case MOTE_FORMAT_GREY8:
-        out[0] = out[1] = out[2] = row[x];
-        out[3] = 255;
-        break;
-    default:
-        memcpy(out, row + 4 * x, 4);
-        break;
-    }
-}
-
-mote_rgba mote_read_pixel(const mote_device *dev, int x, int y)
-{
-    mote_rgba c = {0, 0, 0, 0};
-    if (!dev || !dev->ready || x < 0 || y < 0 || x >= dev->desc.width || y >= dev->desc.band_height)
-        return c;
-    const uint8_t *row = (const uint8_t *)dev->desc.color + (size_t)y * (size_t)dev->desc.color_stride;
-    uint8_t v[4];
-    mote__read_rgb(row, x, dev->desc.color_format, v);
-    memcpy(&c, v, sizeof c);      /* r, g, b, a */
-    return c;
-}
-
-void mote_convert_row(const void *src, mote_format src_format, void *dst, mote_format dst_format, int count)
-{
-    if (src_format == MOTE_FORMAT_DEFAULT)
-        src_format = MOTE_FORMAT_RGBA8888;
-    if (dst_format == MOTE_FORMAT_DEFAULT)
-        dst_format = MOTE_FORMAT_RGBA8888;
-    /* an unknown format: no pixel has a size to convert */
-    if ((unsigned)src_format >= MOTE_FORMAT_COUNT || (unsigned)dst_format >= MOTE_FORMAT_COUNT)
-        return;
-    for (int x = 0; x < count; x++) {
-        uint8_t v[4];
-        mote__read_rgb((const uint8_t *)src, x, src_format, v);
-        mote__write_rgb((uint8_t *)dst, x, dst_format, v[0], v[1], v[2]);
-        if (dst_format == MOTE_FORMAT_RGBA8888)
-            ((uint8_t *)dst)[4 * x + 3] = v[3];
-    }
 }

@@ -50,8 +50,7 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
 static bool mote__texture_ok(const mote_texture *t)
 {
     if (!(t && t->pixels && t->width > 0 && t->height > 0 && t->width <= 65536 && t->height <= 65536
-          && (t->format == MOTE_FORMAT_RGBA8888 || t->format == MOTE_FORMAT_RGB565
-              || t->format == MOTE_FORMAT_GREY8)))
+          && mote__texture_format(t->format)))
         return false;
     /* texels are read as whole 16- and 32-bit words (a core without
      * unaligned access faults on others), and rows must hold a row */

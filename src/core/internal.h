@@ -21,6 +21,8 @@
  *   span.c      fill functions: rows of the walk x pixel loops, specialised
  *               from one inline body
  *   raster.c    exact scanline edge walking over a region
+ *   format.c    colour and depth formats (format.h): conversion, reading
+ *               pixels back
  */
 #ifndef MOTE_CORE_INTERNAL_H
 #define MOTE_CORE_INTERNAL_H
@@ -400,7 +402,6 @@ static inline void mote__raster_tri(const mote__tri *t, const mote__target *tg, 
  * how texels are addressed (rs->pow2_repeat). */
 void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format);
 void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r, int subpixel_bits);
-void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b);
 
 /* line.c: points and lines in screen pixels, clipped to the region. */
 void mote__draw_line(const mote__target *tg, mote__rect r, int x0, int y0, int x1, int y1,

@@ -67,16 +67,8 @@ void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect
         v = v > MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : v;
         size_t off = (size_t)(r.y0 - tg->y0) * (size_t)d->width + (size_t)r.x0;
         size_t bytes = (size_t)mote__depth_format_bytes(d->depth_format);
-        uint8_t *p;
-        if (d->depth_format == MOTE_DEPTH_FORMAT_16) {
-            uint16_t *p16 = (uint16_t *)d->depth + off;
-            *p16 = (uint16_t)(v >> 8);
-            p = (uint8_t *)p16;
-        } else {
-            uint32_t *p32 = (uint32_t *)d->depth + off;
-            *p32 = v;
-            p = (uint8_t *)p32;
-        }
+        mote__depth_store(d->depth, off, d->depth_format, v);
+        uint8_t *p = (uint8_t *)d->depth + off * bytes;
         mote__fill_rows(p, bytes, (size_t)w * bytes, (size_t)d->width * bytes, rows);
     }
 }
