@@ -73,8 +73,7 @@ $(LIB): $(LIB_OBJ)
 
 # The core must stay freestanding: compile it as a bare-metal target would.
 freestanding: | $(DEPS_OK)
-	$(CC) -std=c99 -ffreestanding -fsyntax-only $(WARN) -Iinclude -Isrc \
-	    $$(pkg-config --cflags cglm) $(CORE_SRC)
+	$(CC) -std=c99 -ffreestanding -fsyntax-only $(WARN) -Iinclude -Isrc $(CORE_SRC)
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/include/mote $(DESTDIR)$(PREFIX)/lib/pkgconfig

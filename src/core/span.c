@@ -21,12 +21,20 @@
  * vector registers (MOTE__VECTOR_COLOR): the same sums, on units the
  * integer pixel loop leaves idle. The generic loop stays scalar.
  *
- * Define MOTE_SPECIALISE_SPANS 0 to keep only the generic loop (small flash).
+ * MOTE_SPECIALISE_SPANS 0 keeps only the generic loop (small flash): the
+ * default of size builds (-Os) and of x86 without SSE2.
  */
 #include "internal.h"
 
 #ifndef MOTE_SPECIALISE_SPANS
+/* Specialised variants are hundreds of KB of code: worth it where speed
+ * is asked for on a host that can run them well, not in a size build
+ * (-Os) or on an x86 without SSE2. Define it to 1 to have them anyway. */
+#if defined(__OPTIMIZE_SIZE__) || ((defined(__i386__) || defined(__x86_64__)) && !defined(__SSE2__))
+#define MOTE_SPECIALISE_SPANS 0
+#else
 #define MOTE_SPECIALISE_SPANS 1
+#endif
 #endif
 
 /* Specialised variants need the body inlined with constant features; the
