@@ -313,9 +313,8 @@ static void mote__triangle(mote__ctx *cx, const uint32_t idx[3])
  * full cache, lit Gouraud, never wireframe): mote__triangle's path for an
  * unclipped face, the face's corners and area taken straight from its
  * vertices; any other triangle goes through mote__triangle. GCC kept
- * mote__triangle's arrays and the draw's flags on the stack: about 90
- * instructions a triangle before it reached the queue, against about 55
- * here, for each of the dense grid's 96,600 triangles a frame. */
+ * mote__triangle's arrays and the draw's flags on the stack, which cost
+ * the common face most of its work before the queue. */
 static void mote__queue_triangles(mote__ctx *cx, const uint32_t *indices, uint32_t first, uint32_t end)
 {
     mote__tvert *const cache = cx->cache;

@@ -49,12 +49,9 @@ static void mote__bin_reset(mote_device *dev)
 
 /* The tile jobs read the triangles on other cores, which leaves the
  * arena's lines shared between caches; the next frame's setup writes the
- * same bytes and then waited for each line's ownership one store at a
- * time. With 2 threads on a 2-core VM where a line takes 200-650 ns to
- * move between cores, the serial draw phase took 145 against 107 us
- * (Suzanne at 1080p; 10x10 Suzannes: 12-13 against 10 ms). A memset of
- * those bytes, whose stores overlap, takes the lines back for 3 us (0.3
- * ms), and the draw phase is as fast as on one thread again. */
+ * same bytes and would wait for each line's ownership one store at a
+ * time. A memset of those bytes, whose stores overlap, takes the lines
+ * back at once (docs/performance.md). */
 void mote__bin_begin(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
@@ -123,9 +120,9 @@ static bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
     if (need > b->top - b->used)
         return false;
     mote__tri *copy = (mote__tri *)mote__bin_alloc(dev, bytes);
-    /* nothing to copy when it was set up in place (mote__emit, in speed
-     * builds); else by its size's constant: one memcpy of a variable size
-     * made the dense grid 1.046x slower (9 runs) */
+    /* nothing to copy when it was set up in place (mote__bin_sink_place,
+     * in speed builds); else by its size's constant, which a memcpy of a
+     * variable size cannot unroll */
     if (!MOTE_SHORTCUTS || copy != t) {
         if (bytes == MOTE__TRI_BYTES(0))
             memcpy(copy, t, MOTE__TRI_BYTES(0));
@@ -162,8 +159,7 @@ static bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
 /* Asks the cache for a busy tile's colour and depth rows, a prefetch per
  * line, before its triangles: the frame's clear has pushed them out, and
  * a tile of small triangles otherwise waits for each line at the triangle
- * that first touches it (grid at 1080p, one thread: about 3% of the frame;
- * Suzanne alone: no change). Only on hosts with data caches and a
+ * that first touches it. Only on hosts with data caches and a
  * prefetch instruction; on a microcontroller it is nothing. */
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) \
                           || (defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'A'))
@@ -396,8 +392,7 @@ mote_result mote__bin_draw(mote_device *dev, const mote_mesh *mesh, const mote_d
  * flushes). */
 #define MOTE__BIN_GROUPS 16
 /* A cut draw's vertices are prepared in tasks of at least this many. Its
- * pieces have at least MOTE_PIECE_MIN triangles (mote.h: 64 and 256 were
- * no faster than 128 for Suzanne at 1080p on 2 threads). */
+ * pieces have at least MOTE_PIECE_MIN triangles (mote.h). */
 #define MOTE__VERTEX_CHUNK 256
 
 typedef struct mote__part {

@@ -167,14 +167,11 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     memset(&dev->stats, 0, sizeof dev->stats);
     dev->draw_count = 0;
     dev->in_frame = true;
-    /* The clear runs before binning, in stripes of whole rows. Clearing tile
-     * by tile inside the tile jobs was tried and measured slower (mote-render
-     * --frames, Suzanne at 1080p, 1 / 2 threads: 2.42 / 3.07 ms, against
-     * 2.31 / 1.3-1.7 ms in stripes): short scattered rows stream badly.
-     * Tried again with the tiles' rows as 8-byte stores: 1.5-1.6 against
-     * 1.22 ms at one thread, the stores waiting on their lines. When draws
-     * are recorded for parallel setup, the stripes wait for that setup and
-     * run beside it (mote__bin_run_draws), which touches no pixel. */
+    /* The clear runs before binning, in stripes of whole rows: tile by
+     * tile inside the tile jobs, short scattered rows streamed badly
+     * (docs/performance.md). When draws are recorded for parallel setup,
+     * the stripes wait for that setup and run beside it
+     * (mote__bin_run_draws), which touches no pixel. */
     if (MOTE_ENABLE_BINNING && mote__binned(dev))
         mote__bin_begin(dev);
     dev->clear_pending = MOTE_ENABLE_BINNING && mote__binned(dev) && mote__bin_defers(dev);

@@ -132,9 +132,8 @@ static inline bool mote__positive_finite(float x)
 }
 
 /* The helpers every vertex calls, inline for speed: as calls into
- * vmath.c they cost the dense grid 3-5% of its frame (the vertex stage
- * spilled registers around each). Where flash counts, one shared copy,
- * which vmath.c defines (MOTE__VMATH_DEFINE). */
+ * vmath.c the vertex stage spilled registers around each. Where flash
+ * counts, one shared copy, which vmath.c defines (MOTE__VMATH_DEFINE). */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && !defined(MOTE__VMATH_DEFINE)
 float mote__dot3(const float a[3], const float b[3]);
 float mote__rsqrtf(float x);

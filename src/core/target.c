@@ -26,10 +26,9 @@ void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *c
 /* Fills rows x row_bytes at p (rows stride bytes apart) with copies of the
  * element of elem_bytes already at p; rows that touch are one block. Each
  * memcpy doubles what is filled, up to MOTE__FILL_BLOCK bytes, and then
- * copies that much from the start, which stays in the L1 cache: a 1080p
- * RGBA + 32-bit depth clear on the bench machine takes 0.16 ms so (memset
- * 0.14), against 0.29-0.34 ms doubling over the whole block, which reads
- * back as much as it writes, and 0.75 ms as a store loop. */
+ * copies that much from the start, which stays in the L1 cache: nearly a
+ * memset's speed, where doubling over the whole block reads back as much
+ * as it writes (docs/performance.md). */
 #define MOTE__FILL_BLOCK 16384u
 
 static void mote__fill_rows(uint8_t *p, size_t elem_bytes, size_t row_bytes, size_t stride, int rows)

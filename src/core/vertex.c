@@ -141,9 +141,7 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
  * shading), Gouraud lighting, the costliest per-vertex step, and the
  * conversion to setup's units. None of it can make a vertex invalid, so
  * with the full cache it waits until a triangle using the vertex survives
- * culling: about half of a closed mesh's vertices are only on back faces
- * (grid, tex-nearest: 11.6 -> 10.8 ms of draws for the lighting; the world
- * position and normal too: 1.5% fewer instructions). */
+ * culling: about half of a closed mesh's vertices are only on back faces. */
 void mote__finish(const mote__ctx *cx, mote__tvert *tv)
 {
     if (tv->ready)
@@ -188,10 +186,8 @@ void mote__finish(const mote__ctx *cx, mote__tvert *tv)
 
 /* Four vertices' fields in and out by rows: a row is 16 bytes of one
  * vertex, four rows turned into four lanes and back (_MM_TRANSPOSE4_PS,
- * which moves bits and computes nothing). Where GCC moved lanes one float
- * at a time, about 40 instructions a vertex went into loading and storing
- * (the dense grid transforms 89,000 vertices a frame and lights 52,000).
- * These are the fields read and written as rows. */
+ * which moves bits and computes nothing), where GCC moved lanes one float
+ * at a time. These are the fields read and written as rows. */
 typedef char mote__vertex_rows[offsetof(mote_vertex, normal) == 12 && offsetof(mote_vertex, uv) == 24
                                && sizeof(mote_vertex) == 32 ? 1 : -1];
 typedef char mote__tvert_rows[offsetof(mote__tvert, ready) == 1 && offsetof(mote__tvert, outcode) == 2
@@ -227,9 +223,8 @@ static inline void mote__store_rows(mote__tvert *const dst[4], size_t offset, mo
  * 25 significant bits); below that the sum stays inside (-1, 1) and
  * truncates to 0 as it should. Valid texels are within 1e9, so
  * |x 2^16| < 2^46. Compared with mote__round_scaled on every float within
- * 1e9: none differ. With the depth below, some 70 instructions a vertex
- * fewer than mote__round_scaled's three calls. (The 64-bit conversion is
- * x86-64's.) */
+ * 1e9: none differ. With the depth below, it replaces
+ * mote__round_scaled's three calls. (The 64-bit conversion is x86-64's.) */
 static inline void mote__texels_fixed(const mote__cvert *c, int64_t out[2])
 {
 #if defined(__x86_64__)
@@ -337,10 +332,8 @@ void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
 /* mote__transform of vertices index to index + 3 into tv[0..3]: the clip
  * position, texels, validity, outcode and the quotients x / w and y / w in
  * vectors, each lane the scalar code's operations in the same order, and
- * the snap (mote__v4_snap_by, or per vertex). With the vector snap about
- * 130 instructions a vertex instead of 250 (the dense grid transforms
- * 89,000 a frame), and about 80 with the fields in and out by rows and
- * the draw's constants splatted once (mote__v4_draw). */
+ * the snap (mote__v4_snap_by, or per vertex), the fields in and out by
+ * rows and the draw's constants splatted once (mote__v4_draw). */
 MOTE__VERTEX_INLINE void mote__transform4(mote__ctx *cx, uint32_t index, mote__tvert tv[4])
 {
     const mote_vertex *in = &cx->mesh->vertices[index];
