@@ -92,6 +92,7 @@ help:
 	@echo "make bench      time against error, tables and plot (tests/bench)"
 	@echo "make profile    where a frame's instructions go, by stage (Callgrind)"
 	@echo "make accuracy   error of every mode against the reference renderer"
+	@echo "make render-matrix  a hash per configuration (RENDER_MATRIX_REF=file compares)"
 	@echo "make cross      build the core for Cortex-M0+, Cortex-M4F and RV32IMAC, sizes and stack"
 	@echo "make test-embedded  render on emulated M0+, M4F and RV32 boards (qemu) and compare"
 	@echo "make bench-embedded  instructions per frame on the emulated boards, RAM, flash"
