@@ -425,6 +425,13 @@ typedef struct mote_light {
 
 /* ---- frames and draws -------------------------------------------------- */
 
+/* mote_frame_desc: what mote_begin takes; zero is the default of each field.
+ *   .camera                 see mote_camera (up {0,1,0}, fov 0.8, near 0.1, far 100)
+ *   .lights, .light_count   none: only the ambient colour lights
+ *   .ambient                {0,0,0}
+ *   .keep_color             false: the colour buffer is cleared
+ *   .keep_depth             false: the depth buffer is cleared
+ */
 typedef struct mote_frame_desc {
     mote_camera camera;
     mote_light lights[MOTE_MAX_LIGHTS];
@@ -472,7 +479,19 @@ typedef enum mote_cull {
     MOTE_CULL_COUNT
 } mote_cull;
 
-/* Per-draw options; a zeroed struct (or NULL) gives the defaults. */
+/* mote_draw_desc: what mote_draw takes; a zeroed struct (or NULL) gives
+ * the defaults.
+ *   .mode                   MOTE_MODE_TEXTURED (Gouraud without a texture)
+ *   .cull                   MOTE_CULL_BACK
+ *   .front_face             MOTE_FRONT_CCW
+ *   .perspective            MOTE_PERSPECTIVE_CORRECT
+ *   .subspan_log2           3 (SUBSPAN: exact every 8 pixels; at most 6)
+ *   .filter                 MOTE_FILTER_NEAREST
+ *   .no_depth_test          false
+ *   .no_depth_write         false
+ *   .unlit                  false
+ *   .point_color            the material colour (white without one)
+ */
 typedef struct mote_draw_desc {
     mote_mode mode;
     mote_cull cull;
@@ -514,6 +533,25 @@ typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
                                       const int32_t y[3], const float z[3],
                                       const float w[3]);
 
+/* mote_device_desc: what mote_device_init takes; zero is the default of
+ * each field (mote_device_desc_defaults fills them in).
+ *   .width, .height         required, 1..MOTE_MAX_SIZE
+ *   .color_format           MOTE_FORMAT_RGBA8888
+ *   .color                  required: band_height rows of color_stride bytes
+ *   .color_stride           width x the format's bytes per pixel
+ *   .depth_format           MOTE_DEPTH_FORMAT_32
+ *   .depth                  required but with MOTE_DEPTH_FORMAT_NONE
+ *   .clear_color            {0,0,0,0}
+ *   .clear_depth            1.0 (far)
+ *   .subpixel_bits          8 (4..8)
+ *   .band_height            height: the whole frame at once
+ *   .flush, .flush_user     none; required in band mode
+ *   .arena, .arena_size     none: no binning
+ *   .tile_size              64 (a power of two, 8..256)
+ *   .clear_drawn_tiles_only false
+ *   .parallel_for, .parallel_user          none: tiles in order on this thread
+ *   .triangle_hook, .triangle_hook_user    none
+ */
 typedef struct mote_device_desc {
     int width, height;
     mote_format color_format;
