@@ -59,7 +59,9 @@ failures=0
 for t in $ready; do
     tools=$(board_tools "$t")
     for v in "$@"; do
-        scene=${v%-*}; rows=${v##*-}
+        # scene-rows[-tag...]: the scene column keeps the tags (suzanne-replay)
+        scene=$(echo "$v" | cut -d- -f1); rows=$(echo "$v" | cut -d- -f2)
+        tags=$(echo "$v" | cut -s -d- -f3-); [ -z "$tags" ] || scene="$scene-$tags"
         elf=$dir/$t/$v/mote-firmware.elf
         want=$("$dir/host/$v/mote-firmware" | sed -n 's/.*frame fnv1a //p')
         out=$(board_run "$t" "$elf" count)
@@ -74,7 +76,8 @@ for t in $ready; do
         fi
         verdict="= host"
         [ "$got" = "$want" ] || { verdict="DIFFERS from the host's $want"; failures=$((failures + 1)); }
-        buffers=$(( $(symbol_size "$t" "$elf" fw_color) + $(symbol_size "$t" "$elf" fw_depth) ))
+        buffers=$(( $(symbol_size "$t" "$elf" fw_color) + $(symbol_size "$t" "$elf" fw_color_back) \
+                    + $(symbol_size "$t" "$elf" fw_depth) ))
         device=$(symbol_size "$t" "$elf" fw_device)
         bins=$(symbol_size "$t" "$elf" fw_bins)
         stack=$(sh embedded/stack-usage.sh "$tools" "$elf" "$dir/$t/core-fw" "$dir/$t/fw" "$dir/$t/$v") || stack=0

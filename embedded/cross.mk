@@ -78,7 +78,8 @@ FW_EXAMPLE          := cube-30
 FW_TEST_VARIANTS    := cube-30 cube-16-lcd
 FW_BENCH_SCENES     := $(if $(wildcard $(FW_SCENE.suzanne)),suzanne) cube box sphere torus demo
 FW_BENCH_ROWS       := 16 30 $(FW_FULL_ROWS)
-FW_BENCH_VARIANTS   := $(foreach s,$(FW_BENCH_SCENES),$(foreach r,$(FW_BENCH_ROWS),$(s)-$(r)))
+FW_BENCH_VARIANTS   := $(foreach s,$(FW_BENCH_SCENES),$(foreach r,$(FW_BENCH_ROWS),$(s)-$(r))) \
+                       $(word 1,$(FW_BENCH_SCENES))-30-replay
 
 FW_SRC    := embedded/firmware/platform_semihost.c embedded/firmware/util.c \
              embedded/firmware/mini_libc.c embedded/firmware/lcd.c embedded/firmware/lcd_fake.c
@@ -99,10 +100,12 @@ $(CROSS_DIR)/scene/$(1)/scene.h: $(FW_SCENE.$(1)) $(BIN)/mote-bake
 endef
 $(foreach s,$(FW_SCENES),$(eval $(call FW_SCENE_RULES,$(s))))
 
-# The parts of a variant's name: scene, rows, and 1 when it drives the LCD.
+# The parts of a variant's name: scene, rows, then tags: lcd drives the LCD.
 fw_scene = $(word 1,$(subst -, ,$(1)))
 fw_rows  = $(word 2,$(subst -, ,$(1)))
-fw_lcd   = $(if $(filter lcd,$(word 3,$(subst -, ,$(1)))),1,0)
+fw_lcd   = $(if $(filter lcd,$(subst -, ,$(1))),1,0)
+# 0 for a "replay" variant: bands without band bins, each replaying the frame.
+fw_bins  = $(if $(filter replay,$(subst -, ,$(1))),0,1)
 # RAM budget of a variant: 64 KB for bands, more for a whole frame.
 fw_ram   = $(if $(filter $(FW_FULL_ROWS),$(call fw_rows,$(1))),384K,64K)
 
@@ -153,7 +156,7 @@ $(CROSS_DIR)/$(1)/$(2)/main.o: embedded/firmware/main.c $(CROSS_DIR)/scene/$(cal
         $$(FW_DEPS)
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_PROFILE) -Iembedded/firmware \
-	    -I$(CROSS_DIR)/scene/$(call fw_scene,$(2)) -DFW_BAND=$(call fw_rows,$(2)) -DFW_LCD=$(call fw_lcd,$(2)) \
+	    -I$(CROSS_DIR)/scene/$(call fw_scene,$(2)) -DFW_BAND=$(call fw_rows,$(2)) -DFW_LCD=$(call fw_lcd,$(2)) -DFW_BINS=$(call fw_bins,$(2)) \
 	    $$(CROSS_INCLUDE.$(1)) -c $$< -o $$@
 
 $(CROSS_DIR)/$(1)/$(2)/mote-firmware.elf: $(CROSS_DIR)/$(1)/$(2)/main.o $$(CROSS_FW_OBJ.$(1)) \
@@ -181,7 +184,7 @@ $(CROSS_DIR)/host/$(1)/mote-firmware: embedded/firmware/main.c $(FW_HOST_SRC) $(
         $(CROSS_DIR)/scene/$(call fw_scene,$(1))/scene.h $(FW_DEPS)
 	@mkdir -p $$(dir $$@)
 	$(CC) $(CROSS_HOST_CFLAGS) -Iembedded/firmware -I$(CROSS_DIR)/scene/$(call fw_scene,$(1)) \
-	    -DFW_BAND=$(call fw_rows,$(1)) -DFW_LCD=$(call fw_lcd,$(1)) \
+	    -DFW_BAND=$(call fw_rows,$(1)) -DFW_LCD=$(call fw_lcd,$(1)) -DFW_BINS=$(call fw_bins,$(1)) \
 	    embedded/firmware/main.c $(FW_HOST_SRC) $(CROSS_HOST_CORE) -o $$@
 endef
 

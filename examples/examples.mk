@@ -47,9 +47,12 @@ demo: examples
 	else \
 	    echo "demo: $(MONKEY) is absent: no $(OUT)/monkey_<mode>.png (the rest is done)"; \
 	fi
+	@mkdir -p $(OUT)/gltf
+	$(GEN_GLTF) $(OUT)/gltf
+	$(MOTE_RENDER) $(OUT)/gltf/demo.glb -o $(OUT)/gltf.png --size 800x600
 	@echo "demo: images are in $(OUT)/"
 
 # Only pictures of mote's own assets go into the repository.
 demo-images: demo
 	@mkdir -p $(DOC_IMAGES)
-	cp $(OUT)/demo.png $(OUT)/demo_wireframe.png $(addprefix $(OUT)/,$(addsuffix .png,$(EX_NAMES))) $(DOC_IMAGES)/
+	cp $(OUT)/demo.png $(OUT)/demo_wireframe.png $(OUT)/gltf.png $(addprefix $(OUT)/,$(addsuffix .png,$(EX_NAMES))) $(DOC_IMAGES)/

@@ -255,6 +255,41 @@ void loader_should_read_camera_planes_as_babylon_does(void)
     mote_scene_free(&s);
 }
 
+/* An old 3ds Max export: a camera framing an empty box, its numbers
+ * written as "-Infinity" and "Infinity", and colours of 4 components.
+ * Babylon.js loads it and draws nothing through that camera; mote loads
+ * it without the camera (mote_scene_frame frames the scene), warned, and
+ * reads the colours' first three components, as Color3.FromArray does. */
+void loader_should_frame_the_scene_itself_past_a_camera_written_with_infinity_text(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(DATA("camera_infinity_text.babylon"), NULL,
+                                                       &s, msg, sizeof msg), msg);
+    TEST_ASSERT_FALSE(s.has_camera);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "cameras[0].position: \"Infinity\", "
+                                        "\"-Infinity\" or \"NaN\" written as text"), s.warning);
+    TEST_ASSERT_EQUAL(1, s.mesh_count);
+    TEST_ASSERT_EQUAL(1, s.light_count);
+    ASSERT_VEC3(1.0f, 1.0f, 1.0f, s.lights[0].color, 0.0f);
+    ASSERT_VEC3(0.2f, 0.2f, 0.2f, s.lights[0].ground_color, 0.0f);
+    TEST_ASSERT_EQUAL_UINT8(255, s.meshes[0].material.color.r);
+    TEST_ASSERT_EQUAL_UINT8(0, s.meshes[0].material.color.g);
+    mote_frame_desc frame;
+    mote_scene_frame(&s, 4.0f / 3.0f, &frame);
+    TEST_ASSERT_TRUE(isfinite(frame.camera.position[2]) && isfinite(frame.camera.zfar));
+    mote_scene_free(&s);
+    /* a scene's ambient colour of 4 components too; 5 is still an error */
+    io_load_json("{\"ambientColor\":[0.25,0.5,0.75,1]}", "ambient4.babylon", &s);
+    ASSERT_VEC3(0.25f, 0.5f, 0.75f, s.ambient, 0.0f);
+    mote_scene_free(&s);
+    mote_scene bad;
+    const char *five = "{\"lights\":[{\"type\":3,\"diffuse\":[1,1,1,1,1]}]}";
+    TEST_ASSERT_EQUAL(MOTE_ERR_PARSE, mote_scene_load_memory(five, strlen(five), "five.babylon",
+                                                             NULL, NULL, &bad, msg, sizeof msg));
+    TEST_ASSERT_EQUAL_STRING("five.babylon: lights[0].diffuse: expected an array of 3 or 4 "
+                             "numbers", msg);
+}
+
 /* A file whose only light is disabled is lit by nothing: no light, and no
  * stand-in light from mote_scene_frame either. */
 void loader_should_leave_out_disabled_lights(void)
@@ -366,6 +401,7 @@ int main(void)
     RUN_TEST(loader_should_move_a_camera_level_with_its_target_as_babylon_does);
     RUN_TEST(loader_should_find_the_active_camera_by_name);
     RUN_TEST(loader_should_read_camera_planes_as_babylon_does);
+    RUN_TEST(loader_should_frame_the_scene_itself_past_a_camera_written_with_infinity_text);
     RUN_TEST(loader_should_leave_out_disabled_lights);
     RUN_TEST(loader_should_read_fov_mode_1_as_a_horizontal_field_of_view);
     RUN_TEST(loader_should_read_orthographic_cameras);

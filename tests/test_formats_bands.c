@@ -19,7 +19,7 @@
  *     for both buffers, and checks the renders against that: the two
  *     buffers may differ only at pixels where the quads' 16-bit depths tie,
  *     and there they must hold the quad drawn first.
- *   - The RAM budget of the README: a 320x240 RGB565 frame with 16-bit
+ *   - The RAM budget of docs/embedded.md: a 320x240 RGB565 frame with 16-bit
  *     depth in bands of 30 rows fits in 48 KB with the device.
  */
 #include <mote/mote.h>
@@ -141,36 +141,78 @@ static const variant variants[] = {
 
 /* ---- rendering into a whole frame, directly or band by band ------------- */
 
+/* A band's transfer as a DMA would make it: the flush only notes it, and
+ * the rows are copied when mote waits for the buffer (or at the frame's
+ * end), so a band drawn into a buffer still in flight would show. */
+typedef struct transfer {
+    const uint8_t *color;
+    int y0, rows, stride;
+} transfer;
+
 typedef struct assembly {
     uint8_t *frame;               /* the whole image */
     int row_bytes;
     int next_row;
     bool in_order;
+    bool deferred;                /* copy at flush_wait, not at flush */
+    transfer pending[2];
+    int waits;
 } assembly;
+
+static void copy_rows(assembly *a, const transfer *t)
+{
+    for (int y = 0; y < t->rows; y++)
+        memcpy(a->frame + (size_t)(t->y0 + y) * (size_t)a->row_bytes,
+               t->color + (size_t)y * (size_t)t->stride, (size_t)a->row_bytes);
+}
 
 static void flush_rows(void *user, int y0, int rows, const void *color, int stride)
 {
     assembly *a = user;
     if (y0 != a->next_row)
         a->in_order = false;
-    for (int y = 0; y < rows; y++)
-        memcpy(a->frame + (size_t)(y0 + y) * (size_t)a->row_bytes,
-               (const uint8_t *)color + (size_t)y * (size_t)stride, (size_t)a->row_bytes);
+    transfer t = {color, y0, rows, stride};
     a->next_row = y0 + rows;
+    if (!a->deferred) {
+        copy_rows(a, &t);
+        return;
+    }
+    for (int i = 0; i < 2; i++)
+        if (!a->pending[i].color) {
+            a->pending[i] = t;
+            return;
+        }
+    TEST_FAIL_MESSAGE("a third transfer started while two were in flight");
 }
 
-static uint8_t band_color[W * H * MAX_BPP];
+static void wait_rows(void *user, const void *color)
+{
+    assembly *a = user;
+    a->waits++;
+    for (int i = 0; i < 2; i++)
+        if (a->pending[i].color == color) {
+            copy_rows(a, &a->pending[i]);
+            a->pending[i].color = NULL;
+        }
+}
+
+static uint8_t band_color[W * H * MAX_BPP], band_back[W * H * MAX_BPP];
 static uint32_t band_depth[W * H];
+static uint16_t band_bins[64];
+
+/* Band options of render(): band bins (large enough, or too small for the
+ * frame's triangles), double buffering with deferred transfers. */
+enum { BAND_BINS = 1, BAND_FEW_BINS = 2, BAND_DOUBLE = 4, BAND_OPTIONS = 8 };
 
 /* Renders the cube and the quad with variant v into frame (W * H pixels of
  * fmt); band_height 0 renders the full frame into it, band_height H into a
  * separate buffer of H rows (a device is in band mode only below H). */
-static void render(const variant *v, mote_format fmt, mote_depth_format dfmt, int band_height,
-                   uint8_t *frame)
+static void render_with(const variant *v, mote_format fmt, mote_depth_format dfmt, int band_height,
+                        int options, uint8_t *frame)
 {
     mote_device *dev = malloc(sizeof *dev);
     TEST_ASSERT_NOT_NULL(dev);
-    assembly a = {frame, W * mote_format_bytes(fmt), 0, true};
+    assembly a = {frame, W * mote_format_bytes(fmt), 0, true, false, {{0}, {0}}, 0};
     mote_device_desc d;
     memset(&d, 0, sizeof d);
     d.width = W;
@@ -187,6 +229,15 @@ static void render(const variant *v, mote_format fmt, mote_depth_format dfmt, in
         d.band_height = band_height;
         d.flush = flush_rows;
         d.flush_user = &a;
+        if (options & (BAND_BINS | BAND_FEW_BINS)) {
+            d.band_bins = band_bins;
+            d.band_bins_size = options & BAND_BINS ? sizeof band_bins : 10;
+        }
+        if (options & BAND_DOUBLE) {
+            d.color_back = band_back;
+            d.flush_wait = wait_rows;
+            a.deferred = true;
+        }
     } else {
         d.color = frame;
     }
@@ -220,8 +271,22 @@ static void render(const variant *v, mote_format fmt, mote_depth_format dfmt, in
     } else if (band_height > 0) {
         TEST_ASSERT_TRUE_MESSAGE(a.in_order, "bands were not flushed top to bottom");
         TEST_ASSERT_EQUAL_INT(H, a.next_row);
+        /* the transfers still in flight land now, as the caller would wait */
+        for (int i = 0; i < 2; i++) {
+            if (a.pending[i].color)
+                copy_rows(&a, &a.pending[i]);
+        }
+        if ((options & BAND_DOUBLE) && H / band_height > 2) {
+            TEST_ASSERT_TRUE_MESSAGE(a.waits > 0, "no buffer was waited for");
+        }
     }
     free(dev);
+}
+
+static void render(const variant *v, mote_format fmt, mote_depth_format dfmt, int band_height,
+                   uint8_t *frame)
+{
+    render_with(v, fmt, dfmt, band_height, 0, frame);
 }
 
 static uint8_t frame_a[W * H * MAX_BPP], frame_b[W * H * MAX_BPP], frame_c[W * H * MAX_BPP];
@@ -279,13 +344,18 @@ void bands_of_any_height_should_equal_the_full_frame_in_every_format_depth_and_m
                 mote_format fmt = formats[fi];
                 size_t bytes = (size_t)(W * H * mote_format_bytes(fmt));
                 render(&variants[vi], fmt, depths[di], 0, frame_a);
-                for (int hi = 0; hi < (int)(sizeof heights / sizeof heights[0]); hi++) {
-                    memset(frame_b, 0xa5, sizeof frame_b);
-                    render(&variants[vi], fmt, depths[di], heights[hi], frame_b);
-                    snprintf(msg, sizeof msg, "%s, %s, %s, bands of %d rows", variants[vi].name,
-                             format_names[fmt], depth_names[depths[di]], heights[hi]);
-                    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(frame_a, frame_b, bytes, msg);
-                }
+                for (int hi = 0; hi < (int)(sizeof heights / sizeof heights[0]); hi++)
+                    for (int o = 0; o < BAND_OPTIONS; o++) {
+                        if ((o & BAND_BINS) && (o & BAND_FEW_BINS))
+                            continue;
+                        memset(frame_b, 0xa5, sizeof frame_b);
+                        render_with(&variants[vi], fmt, depths[di], heights[hi], o, frame_b);
+                        snprintf(msg, sizeof msg, "%s, %s, %s, bands of %d rows%s%s%s", variants[vi].name,
+                                 format_names[fmt], depth_names[depths[di]], heights[hi],
+                                 o & BAND_BINS ? ", band bins" : "", o & BAND_FEW_BINS ? ", too few bins" : "",
+                                 o & BAND_DOUBLE ? ", double-buffered" : "");
+                        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(frame_a, frame_b, bytes, msg);
+                    }
             }
 }
 
@@ -369,6 +439,66 @@ void depth16_should_differ_from_depth32_only_where_16_bit_depths_tie(void)
     TEST_ASSERT_GREATER_THAN_INT(0, differing);
 }
 
+static void count_triangle(void *user, const int32_t x[3], const int32_t y[3], const float z[3], const float w[3])
+{
+    (void)x, (void)y, (void)z, (void)w;
+    ++*(int *)user;
+}
+
+/* The triangles set up in a frame of 1-row bands: with band bins, each in
+ * the bands it touches; without, each in every band. */
+static int triangles_set_up(bool bins)
+{
+    static mote_device dev;
+    int calls = 0;
+    mote_device_desc d;
+    memset(&d, 0, sizeof d);
+    d.width = W;
+    d.height = H;
+    d.color = band_color;
+    d.depth = band_depth;
+    d.band_height = 1;
+    d.flush = flush_rows;
+    assembly a = {frame_b, W * 4, 0, true, false, {{0}, {0}}, 0};
+    d.flush_user = &a;
+    d.band_bins = bins ? band_bins : NULL;
+    d.band_bins_size = sizeof band_bins;
+    d.triangle_hook = count_triangle;
+    d.triangle_hook_user = &calls;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &d));
+    mote_frame_desc f = scene_frame();
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &f));
+    mote_mesh quad = make_quad(-0.5f, 0.5f, (mote_rgba){120, 255, 90, 255});
+    quad.scaling[0] = quad.scaling[1] = 0.2f;   /* a few rows high */
+    quad.scaling[2] = 1.0f;
+    mote_draw_desc dd;
+    memset(&dd, 0, sizeof dd);
+    dd.mode = MOTE_MODE_GOURAUD;
+    dd.cull = MOTE_CULL_NONE;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &quad, &dd));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    TEST_ASSERT_EQUAL_UINT32(2, mote_device_stats(&dev)->triangles_drawn);
+    return calls;
+}
+
+void band_bins_should_set_up_a_triangle_only_in_the_bands_it_touches(void)
+{
+    int replayed = triangles_set_up(false), binned = triangles_set_up(true);
+    TEST_ASSERT_EQUAL_INT(2 * H, replayed);
+    /* the quad covers a fifth of the rows: each triangle in its rows' bands
+     * (one more at most at either end), plus the first band's visit */
+    TEST_ASSERT_TRUE_MESSAGE(binned < replayed / 3, "band bins did not skip the bands a triangle misses");
+    TEST_ASSERT_TRUE(binned >= 2);
+}
+
+void band_bins_bytes_should_be_two_a_triangle_in_band_mode_only(void)
+{
+    TEST_ASSERT_EQUAL_UINT64(2 * 966, mote_band_bins_bytes(240, 30, 966));
+    TEST_ASSERT_EQUAL_UINT64(0, mote_band_bins_bytes(240, 240, 966));   /* full frame */
+    TEST_ASSERT_EQUAL_UINT64(0, mote_band_bins_bytes(300, 1, 966));     /* more than 255 bands */
+    TEST_ASSERT_EQUAL_UINT64(0, mote_band_bins_bytes(0, 1, 966));
+}
+
 void a_320x240_rgb565_depth16_frame_should_fit_in_48_kb_in_bands_of_30_rows(void)
 {
     /* 30 rows: 240 / 30 = 8 bands; each band replays every draw, so the
@@ -378,7 +508,7 @@ void a_320x240_rgb565_depth16_frame_should_fit_in_48_kb_in_bands_of_30_rows(void
     /* this build's device (64-bit pointers, MOTE_MAX_DRAWS as configured) is
      * at least as large as a 32-bit firmware's */
     TEST_ASSERT_LESS_OR_EQUAL_UINT32(48u * 1024u, (uint32_t)(band + sizeof(mote_device)));
-    /* and the other sizes the README gives */
+    /* and two other layouts: bands of 16 rows, a whole RGBA8888 frame */
     TEST_ASSERT_EQUAL_UINT32(320u * 16u * 4u, (uint32_t)mote_band_bytes(320, 16, MOTE_FORMAT_RGB565,
                                                                         MOTE_DEPTH_FORMAT_16));
     TEST_ASSERT_EQUAL_UINT32(320u * 240u * 8u, (uint32_t)mote_band_bytes(320, 240, MOTE_FORMAT_RGBA8888,
@@ -396,6 +526,8 @@ int main(void)
     RUN_TEST(rgb565_swapped_should_be_the_byte_swap_of_rgb565);
     RUN_TEST(bands_of_any_height_should_equal_the_full_frame_in_every_format_depth_and_mode);
     RUN_TEST(depth16_should_differ_from_depth32_only_where_16_bit_depths_tie);
+    RUN_TEST(band_bins_should_set_up_a_triangle_only_in_the_bands_it_touches);
+    RUN_TEST(band_bins_bytes_should_be_two_a_triangle_in_band_mode_only);
     RUN_TEST(a_320x240_rgb565_depth16_frame_should_fit_in_48_kb_in_bands_of_30_rows);
     return UNITY_END();
 }

@@ -107,6 +107,11 @@ static void scene_loader_should_hold_its_invariants_on_every_kept_input(void)
     replay_target("scene", mote_fuzz_scene);
 }
 
+static void gltf_loader_should_hold_its_invariants_on_every_kept_input(void)
+{
+    replay_target("gltf", mote_fuzz_gltf);
+}
+
 static void folder_resolution_should_hold_its_invariants_on_every_kept_input(void)
 {
     replay_target("folder", mote_fuzz_folder);
@@ -120,10 +125,12 @@ static void every_entry_should_survive_empty_and_all_ones_inputs(void)
     TEST_ASSERT_NULL(mote_fuzz_texture(NULL, 0));
     TEST_ASSERT_NULL(mote_fuzz_scene(NULL, 0));
     TEST_ASSERT_NULL(mote_fuzz_folder(NULL, 0));
+    TEST_ASSERT_NULL(mote_fuzz_gltf(NULL, 0));
     TEST_ASSERT_NULL(mote_fuzz_draw(ones, sizeof ones));
     TEST_ASSERT_NULL(mote_fuzz_texture(ones, sizeof ones));
     TEST_ASSERT_NULL(mote_fuzz_scene(ones, sizeof ones));
     TEST_ASSERT_NULL(mote_fuzz_folder(ones, sizeof ones));
+    TEST_ASSERT_NULL(mote_fuzz_gltf(ones, sizeof ones));
 }
 
 /* The canaries are what catch stray writes without sanitizers: make sure
@@ -149,6 +156,7 @@ int main(void)
     RUN_TEST(draw_path_should_hold_its_invariants_on_every_kept_input);
     RUN_TEST(texture_loader_should_hold_its_invariants_on_every_kept_input);
     RUN_TEST(scene_loader_should_hold_its_invariants_on_every_kept_input);
+    RUN_TEST(gltf_loader_should_hold_its_invariants_on_every_kept_input);
     RUN_TEST(folder_resolution_should_hold_its_invariants_on_every_kept_input);
     RUN_TEST(every_entry_should_survive_empty_and_all_ones_inputs);
     RUN_TEST(canary_check_should_notice_a_write_just_past_or_before_a_buffer);

@@ -7,6 +7,8 @@
 #include "io/json.h"
 #include "support/io_test.h"
 
+#include <float.h>
+
 static char msg[512];
 static long live_before;
 
@@ -123,6 +125,27 @@ void json_numbers_should_be_finite_floats_and_whole_numbers(void)
     finish(root);
 }
 
+/* FLT_MAX written to 8 digits is a hair above it and rounds to it, as a
+ * float; from FLT_MAX plus half its last step a float is infinite. */
+void json_floats_should_take_what_rounds_to_the_largest_float(void)
+{
+    cJSON *root;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, parse("{\"a\": [3.4028235e38, -3.4028235e38, "
+                                             "3.40282356779733e38], \"b\": 3.4028236e38}", NULL,
+                                             &root), msg);
+    float v[3] = {0, 0, 0}, f = 0;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote__json_floats(&ld, root, "a", "m", 3, 0, v), msg);
+    TEST_ASSERT_EQUAL_FLOAT(FLT_MAX, v[0]);
+    TEST_ASSERT_EQUAL_FLOAT(-FLT_MAX, v[1]);
+    TEST_ASSERT_EQUAL_FLOAT(FLT_MAX, v[2]);
+    TEST_ASSERT_EQUAL(MOTE_ERR_RANGE, mote__json_number(&ld, root, "b", "m", &f));
+    TEST_ASSERT_EQUAL_STRING("x.babylon: m.b: 3.40282e+38 is not a finite float", msg);
+    const cJSON *a = mote__json_get(root, "a");
+    TEST_ASSERT_EQUAL(MOTE_OK, mote__json_element_float(&ld, a->child, "a", 0, &f));
+    TEST_ASSERT_EQUAL_FLOAT(FLT_MAX, f);
+    finish(root);
+}
+
 /* The depth is counted on the text, before cJSON (which recurses) sees it;
  * brackets inside strings do not count. */
 void json_parse_should_stop_at_the_nesting_limit_before_parsing(void)
@@ -140,12 +163,56 @@ void json_parse_should_stop_at_the_nesting_limit_before_parsing(void)
     finish(root);
 }
 
+/* What the parse will allocate is told from the text, before cJSON sees
+ * it (an item per value, numbers too): past limits.max_json_bytes the
+ * text is refused, naming the limit, and nothing is parsed. */
+void json_parse_should_refuse_a_tree_larger_than_max_json_bytes(void)
+{
+    char text[4096] = "{\"a\": [0";
+    for (int i = 0; i < 200; i++)
+        strcat(text, ",0");
+    strcat(text, "]}");
+    mote_limits lim = mote_limits_default();
+    lim.max_json_bytes = 8000;    /* 204 items of 80 bytes, a key and a number copy */
+    cJSON *root = NULL;
+    TEST_ASSERT_EQUAL(MOTE_ERR_LIMIT, parse(text, &lim, &root));
+    TEST_ASSERT_NULL(root);
+    TEST_ASSERT_EQUAL_STRING("x.babylon: parsing its JSON (204 values) would take 16384 bytes, "
+                             "more than the limit of 8000 bytes (max_json_bytes)", msg);
+    finish(root);
+    lim.max_json_bytes = 20000;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, parse(text, &lim, &root), msg);
+    TEST_ASSERT_EQUAL(201, (int)mote__json_length(mote__json_get(root, "a")));
+    finish(root);
+}
+
+/* cJSON running out of memory is out of memory, not malformed JSON. */
+void json_parse_should_report_running_out_of_memory_as_such(void)
+{
+    const char *text = "{\"a\": [1, 2, 3],\n \"b\": \"x\"}";
+    TEST_ASSERT_EQUAL(MOTE_OK, mote__loader_begin(&ld, "x.babylon", NULL, NULL, strlen(text),
+                                                  &scene, msg, sizeof msg));
+    cJSON *root = NULL;
+    mote__io_set_alloc_failure_after(0);
+    mote_result r = mote__json_parse(&ld, text, strlen(text), &root);
+    mote__io_set_alloc_failure_after(-1);
+    TEST_ASSERT_EQUAL(MOTE_ERR_OUT_OF_MEMORY, r);
+    TEST_ASSERT_EQUAL_STRING("x.babylon: line 1, byte 0: out of memory parsing the JSON", msg);
+    finish(root);
+    /* the next parse is whole again */
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, parse(text, NULL, &root), msg);
+    finish(root);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(loader_should_take_the_last_of_keys_written_twice);
     RUN_TEST(json_getters_should_name_the_path_and_what_they_found);
     RUN_TEST(json_numbers_should_be_finite_floats_and_whole_numbers);
+    RUN_TEST(json_floats_should_take_what_rounds_to_the_largest_float);
     RUN_TEST(json_parse_should_stop_at_the_nesting_limit_before_parsing);
+    RUN_TEST(json_parse_should_refuse_a_tree_larger_than_max_json_bytes);
+    RUN_TEST(json_parse_should_report_running_out_of_memory_as_such);
     return UNITY_END();
 }

@@ -56,6 +56,70 @@ void loader_should_show_each_distinct_warning_once_with_its_count(void)
     mote_scene_free(&s);
 }
 
+/* A file of n meshes each naming a material of its own that is not there:
+ * n distinct warnings. */
+static char *meshes_naming_no_material(int n)
+{
+    size_t cap = 64 + (size_t)n * 64;
+    char *j = malloc(cap);
+    if (!j) {
+        TEST_FAIL_MESSAGE("out of memory");
+        return NULL;
+    }
+    size_t len = (size_t)snprintf(j, cap, "{\"meshes\":[");
+    for (int k = 0; k < n; k++)
+        len += (size_t)snprintf(j + len, cap - len, "%s{\"id\":\"m%d\",\"materialId\":\"x%d\"}",
+                                k ? "," : "", k, k);
+    snprintf(j + len, cap - len, "]}");
+    return j;
+}
+
+/* Every warning is kept, not only those scene.warning shows: one by
+ * one, in the order given, with their repeats; past 4096 distinct ones,
+ * counted. */
+void loader_should_keep_every_warning_for_mote_scene_warning(void)
+{
+    char *j = meshes_naming_no_material(113);
+    mote_scene s;
+    io_load_json(j, "w", &s);
+    unsigned dropped = 7, repeats = 0;
+    TEST_ASSERT_EQUAL(113, mote_scene_warning_count(&s, &dropped));
+    TEST_ASSERT_EQUAL_UINT(0, dropped);
+    TEST_ASSERT_EQUAL_STRING("meshes[0].materialId: \"x0\" names no material",
+                             mote_scene_warning(&s, 0, &repeats));
+    TEST_ASSERT_EQUAL_UINT(1, repeats);
+    TEST_ASSERT_NOT_NULL(strstr(mote_scene_warning(&s, 112, NULL), "\"x112\""));
+    TEST_ASSERT_NULL(mote_scene_warning(&s, 113, NULL));
+    TEST_ASSERT_NULL(mote_scene_warning(&s, -1, NULL));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "more warnings"), s.warning);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(0, mote_scene_warning_count(&s, &dropped));   /* freed: zeroed */
+    free(j);
+    /* repeats counted on the warning they repeat */
+    io_load_json("{\"multiMaterials\":[{\"id\":\"mm\",\"materials\":[null]}],"
+                 "\"meshes\":[{\"id\":\"a\",\"materialId\":\"mm\"," TRI ",\"subMeshes\":["
+                 "{\"materialIndex\":5,\"indexStart\":0,\"indexCount\":3},"
+                 "{\"materialIndex\":5,\"indexStart\":0,\"indexCount\":3}]}]}", "w", &s);
+    TEST_ASSERT_EQUAL(1, mote_scene_warning_count(&s, NULL));
+    TEST_ASSERT_NOT_NULL(mote_scene_warning(&s, 0, &repeats));
+    TEST_ASSERT_EQUAL_UINT(2, repeats);
+    mote_scene_free(&s);
+    /* no warnings, and no scene */
+    io_load_json("{}", "w", &s);
+    TEST_ASSERT_EQUAL(0, mote_scene_warning_count(&s, &dropped));
+    TEST_ASSERT_NULL(mote_scene_warning(&s, 0, NULL));
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(0, mote_scene_warning_count(NULL, NULL));
+    /* past what is kept */
+    j = meshes_naming_no_material(4100);
+    io_load_json(j, "w", &s);
+    TEST_ASSERT_EQUAL(4096, mote_scene_warning_count(&s, &dropped));
+    TEST_ASSERT_EQUAL_UINT(4, dropped);
+    mote_scene_free(&s);
+    free(j);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 /* A load begun as a loader begins one, its name "x.babylon". */
 static void begin(mote__loader *ld, mote_scene *s, size_t size, const mote_limits *lim)
 {
@@ -155,6 +219,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(loader_should_show_each_distinct_warning_once_with_its_count);
+    RUN_TEST(loader_should_keep_every_warning_for_mote_scene_warning);
     RUN_TEST(loader_should_refuse_a_file_over_the_size_limit_before_allocating);
     RUN_TEST(loader_should_refuse_counts_over_the_limit_or_an_int);
     RUN_TEST(loader_should_free_everything_of_a_failed_load);

@@ -1,7 +1,7 @@
 /*
  * test_raster_rules.c - coverage: mote against the reference's exact
  * per-pixel centre test, watertightness with a per-pixel hit counter, and
- * the exact cases of piglit and dEQP (see ACCURACY.md).
+ * the exact cases of piglit and dEQP (see docs/accuracy.md).
  *
  * Thresholds (all seeded, reproducible): 0 mismatched pixels against the
  * reference over 100,000 random triangles per sub-pixel precision (4 and 8

@@ -49,23 +49,26 @@ static void assert_refused(const void *bytes, size_t size, mote_result code, con
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
-void scene_load_should_name_a_gltf_json_file(void)
+/* A glTF 1.0 file (JSON or binary) is told for what it is: its layout
+ * differs throughout from glTF 2.0's, which mote reads. */
+void scene_load_should_name_a_gltf_1_json_file(void)
 {
-    static const char gltf[] = " {\"asset\": {\"generator\": \"x\", \"version\": \"2.0\"}, "
-                               "\"meshes\": [], \"scene\": 0}";
+    static const char gltf[] = " {\"asset\": {\"generator\": \"x\", \"version\": \"1.0\"}, "
+                               "\"meshes\": {}, \"scene\": \"s\"}";
     assert_refused(gltf, strlen(gltf), MOTE_ERR_UNSUPPORTED,
-                   "a glTF file (asset.version \"2.0\"), which mote does not read");
+                   "asset.version: \"1.0\": a glTF 1.0 file, which mote does not read (it reads "
+                   "glTF 2.0)");
 }
 
-void scene_load_should_name_a_binary_gltf_file(void)
+void scene_load_should_name_a_binary_gltf_1_file(void)
 {
     /* the 12-byte header, then a JSON chunk: a .glb reported "nesting
      * deeper than the limit" when read as JSON */
     static const unsigned char glb[] = {
-        'g', 'l', 'T', 'F', 2, 0, 0, 0, 48, 0, 0, 0, 28, 0, 0, 0, 'J', 'S', 'O', 'N',
+        'g', 'l', 'T', 'F', 1, 0, 0, 0, 48, 0, 0, 0, 28, 0, 0, 0, 0, 0, 0, 0,
         '{', '"', 'a', 's', 's', 'e', 't', '"', ':', '{', '"', 'v', 'e', 'r', 's', 'i',
-        'o', 'n', '"', ':', '"', '2', '.', '0', '"', '}', '}', ' '};
-    assert_refused(glb, sizeof glb, MOTE_ERR_UNSUPPORTED, "a binary glTF file (.glb)");
+        'o', 'n', '"', ':', '"', '1', '.', '0', '"', '}', '}', ' '};
+    assert_refused(glb, sizeof glb, MOTE_ERR_UNSUPPORTED, "a glTF 1.0 binary file");
 }
 
 void scene_load_should_name_a_wavefront_obj_file(void)
@@ -115,8 +118,8 @@ void scene_load_should_say_what_it_cannot_name(void)
 {
     static const unsigned char elf[16] = {0x7f, 'E', 'L', 'F', 2, 1, 1, 0};
     assert_refused(elf, sizeof elf, MOTE_ERR_PARSE,
-                   "not a scene: neither .babylon JSON nor a format mote knows (it starts with "
-                   "bytes 7f 45 4c 46 02 01 01 00)");
+                   "not a scene: neither .babylon nor glTF, nor a format mote knows (it starts "
+                   "with bytes 7f 45 4c 46 02 01 01 00)");
     assert_refused("42", 2, MOTE_ERR_PARSE, "it starts with bytes 34 32)");
 }
 
@@ -176,11 +179,11 @@ void scene_load_should_go_by_the_bytes_not_the_file_name(void)
     snprintf(path, sizeof path, "%s/scene.babylon", dir);
     f = fopen(path, "wb");
     TEST_ASSERT_NOT_NULL(f);
-    fputs("{\"asset\": {\"version\": \"2.0\"}}", f);
+    fputs("{\"asset\": {\"version\": \"1.0\"}}", f);
     fclose(f);
     TEST_ASSERT_EQUAL(MOTE_ERR_UNSUPPORTED, mote_scene_load(path, NULL, &s, msg, sizeof msg));
-    TEST_ASSERT_EQUAL_STRING("scene.babylon: a glTF file (asset.version \"2.0\"), which mote does "
-                             "not read (it reads .babylon scenes)", msg);
+    TEST_ASSERT_EQUAL_STRING("scene.babylon: asset.version: \"1.0\": a glTF 1.0 file, which mote "
+                             "does not read (it reads glTF 2.0)", msg);
     TEST_ASSERT_TRUE(scene_is_zeroed(&s));
     remove(path);
     rmdir(dir);
@@ -217,11 +220,40 @@ void frame_should_look_at_the_box_from_the_front_top_right_without_a_camera(void
     mote_scene_free(&s);
 }
 
+/* A caller's eye gets planes that hold the whole scene from there, as the
+ * framing camera gets them from its own: far away, inside the scene,
+ * at its centre. */
+void fit_planes_should_hold_the_scene_from_any_eye(void)
+{
+    const char *j = "{\"meshes\":[{\"id\":\"m\",\"positions\":[-1,-1,-1, 1,1,1, 1,-1,1],"
+                    "\"indices\":[0,1,2]}]}";
+    mote_scene s;
+    io_load_json(j, "f", &s);
+    const float radius = sqrtf(3.0f), eyes[3] = {50.0f, 0.5f, 0.0f};
+    for (int k = 0; k < 3; k++) {
+        mote_camera c;
+        memset(&c, 0, sizeof c);
+        c.position[2] = -eyes[k];
+        mote_scene_fit_planes(&s, &c);
+        TEST_ASSERT_TRUE(c.znear > 0.0f && c.znear < c.zfar);
+        TEST_ASSERT_TRUE(c.zfar >= eyes[k] + radius);
+        /* where the scene begins; from inside it, a hundredth of the way
+         * to its centre or a thousandth of far */
+        float inside = fmaxf(eyes[k] * 0.01f, c.zfar * 0.001f);
+        TEST_ASSERT_TRUE(c.znear <= (eyes[k] > radius ? eyes[k] - radius : inside));
+    }
+    mote_camera untouched;
+    memset(&untouched, 0, sizeof untouched);
+    mote_scene_fit_planes(NULL, &untouched);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, untouched.zfar);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
-    RUN_TEST(scene_load_should_name_a_gltf_json_file);
-    RUN_TEST(scene_load_should_name_a_binary_gltf_file);
+    RUN_TEST(scene_load_should_name_a_gltf_1_json_file);
+    RUN_TEST(scene_load_should_name_a_binary_gltf_1_file);
     RUN_TEST(scene_load_should_name_a_wavefront_obj_file);
     RUN_TEST(scene_load_should_name_a_git_lfs_pointer);
     RUN_TEST(scene_load_should_name_an_image);
@@ -230,5 +262,6 @@ int main(void)
     RUN_TEST(scene_load_should_load_babylon_json_whatever_its_keys);
     RUN_TEST(scene_load_should_go_by_the_bytes_not_the_file_name);
     RUN_TEST(frame_should_look_at_the_box_from_the_front_top_right_without_a_camera);
+    RUN_TEST(fit_planes_should_hold_the_scene_from_any_eye);
     return UNITY_END();
 }

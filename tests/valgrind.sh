@@ -91,10 +91,28 @@ if [ -f ../shared/assets/monkey.babylon ]; then
 else
     ignore mote_render_should_render_the_monkey_clean "../shared/assets/monkey.babylon is absent"
 fi
+# glTF: gen_gltf's demo (a .glb with an embedded image) and a .gltf with
+# its buffer in a file, and every glTF file of assimp-testmodels
+if [ -x "$BIN/gen_gltf" ] && "$BIN/gen_gltf" "$tmp" >/dev/null 2>&1; then
+    check mote_render_should_render_a_glb_clean ok \
+        "$R" "$tmp/demo.glb" -o "$tmp/glb.png" --size 64x48 --threads 1
+    check mote_render_should_render_a_gltf_with_a_bin_file_clean ok \
+        "$R" "$tmp/materials.gltf" -o "$tmp/gltf.png" --size 64x48 --threads 1
+else
+    ignore mote_render_should_render_a_glb_clean "$BIN/gen_gltf is not built (make tools)"
+fi
+for f in /usr/share/assimp/models/glTF2/*/*.gl* /usr/share/assimp/models/glTF/*/*.gl*; do
+    [ -f "$f" ] || continue
+    n=$(echo "$f" | sed 's|/usr/share/assimp/models/||' | tr -c 'A-Za-z0-9_\n' '_')
+    check "mote_render_should_handle_${n}_clean" any "$R" "$f" -o "$tmp/g.png" --size 16x12 --threads 1
+done
 check mote_render_should_print_help_clean ok "$R" --help
 check mote_render_should_draw_a_scene_missing_a_texture_when_allowed_clean ok \
     "$R" tests/data/bad/texture_missing.babylon -o "$tmp/missing.png" --size 16x12 --threads 1 \
     --allow-missing-textures
+check mote_render_should_list_every_warning_clean ok \
+    "$R" tests/data/bad/texture_missing.babylon -o "$tmp/missing.png" --size 16x12 --threads 1 \
+    --allow-missing-textures --warnings --camera 0,0,-9:0,0,0 --near 0.5
 
 # ---- error paths -------------------------------------------------------------
 check mote_render_should_refuse_a_missing_file_clean fail \

@@ -6,7 +6,7 @@
  * ambient) and the clear colour. The
  * firmware then renders with no file system, no JSON and no heap.
  *
- *   mote-bake SCENE.babylon -o scene.h [--format rgb565|rgba8888|grey8]
+ *   mote-bake SCENE -o scene.h [--format rgb565|rgba8888|grey8]
  *             [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]
  *
  * Floats are written as C99 hexadecimal literals, so the baked scene is the
@@ -59,7 +59,7 @@ typedef struct baker {
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: mote-bake SCENE.babylon -o OUT.h [--format rgb565|rgba8888|grey8]\n"
+            "usage: mote-bake SCENE -o OUT.h [--format rgb565|rgba8888|grey8]\n"
             "                 [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]\n"
             "Writes a C header with the scene's meshes, textures (in FORMAT, default\n"
             "rgb565), camera and lights as const mote structs (identifiers NAME_*,\n"
@@ -489,8 +489,12 @@ static void bake(baker *b, int width, int height, const char *source)
         b->name, b->name);
     put(b, "#ifndef MOTE_BAKE_NAN\n#define MOTE_BAKE_NAN (__builtin_nanf(\"\"))\n"
                "#define MOTE_BAKE_INF (__builtin_inff())\n#endif\n\n");
-    put(b, "#define %s_WIDTH %d\n#define %s_HEIGHT %d\n#define %s_MESH_COUNT %d\n\n", upper, width,
-            upper, height, upper, s->mesh_count);
+    unsigned long triangles = 0;
+    for (int i = 0; i < s->mesh_count; i++)
+        triangles += s->meshes[i].index_count / 3;
+    put(b, "#define %s_WIDTH %d\n#define %s_HEIGHT %d\n#define %s_MESH_COUNT %d\n"
+           "#define %s_TRIANGLE_COUNT %lu\n\n", upper, width, upper, height, upper, s->mesh_count, upper,
+        triangles);
 
     /* only the textures some mesh uses: an unused static const would warn */
     int slots = 0;
@@ -688,6 +692,8 @@ int main(int argc, char **argv)
                                               || !strcmp(a, "--format") || !strcmp(a, "--size")
                                               || !strcmp(a, "--texture-size") || !strcmp(a, "--max-bytes")))
                 fprintf(stderr, "mote-bake: %s needs a value\n", a);
+            else if (a[0] == '-')
+                fprintf(stderr, "mote-bake: unknown option %s\n", a);
             else
                 fprintf(stderr, "mote-bake: unexpected argument '%s'\n", a);
             usage(stderr);

@@ -7,6 +7,7 @@
  *               [--frames N] [--threads T] [--spin DEGREES]
  *               [--perspective correct|affine|subspan] [--filter nearest|bilinear]
  *               [--subpixel-bits N] [--full-clear] [--allow-missing-textures]
+ *               [--near N] [--far F] [--max-triangles N] [--warnings|-v]
  *
  * The device bins triangles into an arena and rasterises the tiles on OpenMP
  * threads (mote_parallel_openmp; with --threads 1 on the calling thread, the
@@ -21,7 +22,9 @@
  * --fov, --ortho's) chooses for the meshes as turned in it. A
  * texture file that is missing or cannot be read fails the load, unless
  * --allow-missing-textures: its material is then drawn in its colour, and
- * the loader's warning says which file it was. The image is written as
+ * the loader's warning says which file it was. --camera on a scene
+ * without a camera of its own fits the near and far planes to the scene
+ * from the eye given (mote_scene_fit_planes); --near and --far set them. The image is written as
  * mote_write_image writes (a new file renamed over OUT), and never over
  * the scene's own file or one of its textures.
  */
@@ -31,6 +34,7 @@
 #include <mote/mote_io.h>
 
 #include <errno.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,18 +57,23 @@ typedef struct options {
     int subpixel_bits;            /* 0: default */
     bool full_clear;              /* clear every tile, not only those drawn into */
     bool allow_missing_textures;  /* draw in the material's colour, warn */
+    uint32_t max_triangles;       /* 0: the loader's default */
+    float znear, zfar;            /* > 0: --near, --far */
+    bool all_warnings;            /* --warnings: each on a line of its own */
 } options;
 
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: mote-render SCENE.babylon -o OUT.png|OUT.ppm [options]\n"
+            "usage: mote-render SCENE -o OUT.png|OUT.ppm [options]\n"
             "  --size WxH              image size (default 640x480)\n"
             "  --mode MODE             points|wireframe|flat|gouraud|textured\n"
             "                          (default: gouraud, textured where a material has a texture)\n"
             "  --no-cull               draw back faces too\n"
             "  --camera EX,EY,EZ:TX,TY,TZ  eye and target (default: the scene's camera,\n"
-            "                          else one that frames the scene)\n"
+            "                          else one that frames the scene); without a camera in\n"
+            "                          the scene, near and far fitted to the scene from EX,EY,EZ\n"
+            "  --near N, --far F       the near and far planes (default: the camera's)\n"
             "  --fov RADIANS           vertical field of view (whatever the file's fovMode;\n"
             "                          a perspective view also of an orthographic camera)\n"
             "  --ortho HEIGHT          an orthographic view, HEIGHT world units high and\n"
@@ -81,6 +90,10 @@ static void usage(FILE *out)
             "  --allow-missing-textures  draw a material whose texture file is missing or\n"
             "                          unreadable in its colour, with a warning (default:\n"
             "                          such a scene fails to load)\n"
+            "  --max-triangles N       load scenes of up to N triangles, instances counted\n"
+            "                          (default 1048576)\n"
+            "  --warnings, -v          print every warning of the loader, one a line (default:\n"
+            "                          those that fit in a line, and how many more)\n"
             "  --help                  this text\n");
 }
 
@@ -166,6 +179,10 @@ static int parse_args(int argc, char **argv, options *o)
                                                     MOTE_PERSPECTIVE_SUBSPAN};
     static const char *const filters[] = {"nearest", "bilinear", NULL};
     static const mote_filter filter_values[] = {MOTE_FILTER_NEAREST, MOTE_FILTER_BILINEAR};
+    static const char *const valued[] = {"-o", "--size", "--mode", "--camera", "--fov", "--ortho",
+                                         "--rotate", "--frames", "--threads", "--spin",
+                                         "--perspective", "--filter", "--max-triangles",
+                                         "--subpixel-bits", "--near", "--far", NULL};
 
     memset(o, 0, sizeof *o);
     o->width = 640;
@@ -186,6 +203,10 @@ static int parse_args(int argc, char **argv, options *o)
             o->allow_missing_textures = true;
             continue;
         }
+        if (strcmp(a, "--warnings") == 0 || strcmp(a, "-v") == 0) {
+            o->all_warnings = true;
+            continue;
+        }
         if (a[0] != '-' || a[1] == '\0') {
             if (o->scene_path)
                 return fail("more than one scene given (\"%s\"); see --help", a);
@@ -193,6 +214,8 @@ static int parse_args(int argc, char **argv, options *o)
             continue;
         }
         /* every other option takes a value */
+        if (pick(a, valued) < 0)
+            return fail("unknown option %s; see --help", a);
         if (i + 1 >= argc)
             return fail("%s needs a value; see --help", a);
         const char *v = argv[++i];
@@ -223,6 +246,10 @@ static int parse_args(int argc, char **argv, options *o)
         } else if (strcmp(a, "--ortho") == 0) {
             if (!parse_floats(v, &o->ortho_height, 1) || !(o->ortho_height > 0.0f && o->ortho_height < 1e30f))
                 return fail("--ortho \"%s\": expected a height above 0", v);
+        } else if (strcmp(a, "--near") == 0 || strcmp(a, "--far") == 0) {
+            float *plane = a[2] == 'n' ? &o->znear : &o->zfar;
+            if (!parse_floats(v, plane, 1) || !(*plane > 0.0f))
+                return fail("%s \"%s\": expected a distance above 0", a, v);
         } else if (strcmp(a, "--rotate") == 0) {
             if (!parse_floats(v, o->rotate, 3))
                 return fail("--rotate \"%s\": expected rx,ry,rz in radians", v);
@@ -243,22 +270,63 @@ static int parse_args(int argc, char **argv, options *o)
             if ((k = pick(v, filters)) < 0)
                 return fail("--filter \"%s\": expected nearest or bilinear", v);
             o->draw.filter = filter_values[k];
+        } else if (strcmp(a, "--max-triangles") == 0) {
+            if (!parse_int(v, 1, INT_MAX, &k))
+                return fail("--max-triangles \"%s\": expected a count from 1 to %d", v, INT_MAX);
+            o->max_triangles = (uint32_t)k;
         } else if (strcmp(a, "--subpixel-bits") == 0) {
             if (!parse_int(v, 4, 8, &o->subpixel_bits))
                 return fail("--subpixel-bits \"%s\": expected 4 to 8", v);
-        } else {
-            return fail("unknown option \"%s\"; see --help", a);
         }
     }
     if (!o->scene_path)
         return fail("no scene given; see --help");
     if (o->fov > 0.0f && o->ortho_height > 0.0f)
         return fail("--fov and --ortho: one view or the other");
+    if (o->znear > 0.0f && o->zfar > 0.0f && !(o->znear < o->zfar))
+        return fail("--near %g and --far %g: near must be below far", o->znear, o->zfar);
     if (!o->out_path)
         return fail("no output given (-o OUT.png or OUT.ppm); see --help");
     if (!has_suffix(o->out_path, ".png") && !has_suffix(o->out_path, ".ppm"))
         return fail("-o \"%s\": the name must end in .png or .ppm", o->out_path);
     return 0;
+}
+
+/* The loader's message, its hint at the limit that downgrades a missing
+ * texture said as the option that sets it. */
+static void print_load_error(const char *message)
+{
+    static const char hint[] = "limits.missing_texture_is_warning";
+    const char *at = strstr(message, hint);
+    if (!at) {
+        fprintf(stderr, "mote-render: %s\n", message);
+        return;
+    }
+    fprintf(stderr, "mote-render: %.*s--allow-missing-textures%s\n", (int)(at - message), message,
+            at + strlen(hint));
+}
+
+/* The loader's warnings: the line that holds those that fit, or with
+ * --warnings each on a line of its own. */
+static void print_warnings(const mote_scene *scene, bool all)
+{
+    unsigned dropped = 0, repeats = 0;
+    int n = mote_scene_warning_count(scene, &dropped);
+    if (!all) {
+        if (scene->warning[0])
+            fprintf(stderr, "mote-render: warning: %s%s\n", scene->warning,
+                    strstr(scene->warning, " more warning") ? " (--warnings lists them all)" : "");
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        const char *w = mote_scene_warning(scene, i, &repeats);
+        if (repeats > 1)
+            fprintf(stderr, "mote-render: warning: %s (x%u)\n", w, repeats);
+        else
+            fprintf(stderr, "mote-render: warning: %s\n", w);
+    }
+    if (dropped)
+        fprintf(stderr, "mote-render: warning: and %u more, not kept\n", dropped);
 }
 
 /* q = a * b for quaternions stored (x, y, z, w). */
@@ -378,13 +446,14 @@ int main(int argc, char **argv)
     mote_scene scene;
     mote_limits limits = mote_limits_default();
     limits.missing_texture_is_warning = o.allow_missing_textures;
+    if (o.max_triangles)
+        limits.max_triangles = o.max_triangles;
     mote_result r = mote_scene_load(o.scene_path, &limits, &scene, message, sizeof message);
     if (r != MOTE_OK) {
-        fprintf(stderr, "mote-render: %s\n", message[0] ? message : mote_result_string(r));
+        print_load_error(message[0] ? message : mote_result_string(r));
         return 1;
     }
-    if (scene.warning[0])
-        fprintf(stderr, "mote-render: warning: %s\n", scene.warning);
+    print_warnings(&scene, o.all_warnings);
 
     int exit_code = 1;
     if (mote_scene_reads_file(&scene, o.out_path)) {
@@ -449,6 +518,10 @@ int main(int argc, char **argv)
         memcpy(frame.camera.position, o.eye, sizeof o.eye);
         memcpy(frame.camera.target, o.target, sizeof o.target);
         memset(frame.camera.up, 0, sizeof frame.camera.up);
+        /* the framing camera's planes were made for its own eye; a file's
+         * camera keeps its minZ and maxZ */
+        if (!scene.has_camera)
+            mote_scene_fit_planes(&scene, &frame.camera);
     }
     if (o.fov > 0.0f) {
         frame.camera.fov = o.fov;
@@ -459,6 +532,15 @@ int main(int argc, char **argv)
         const float box[4] = {-w, w, -h, h};
         frame.camera.projection = MOTE_PROJECTION_ORTHOGRAPHIC;
         memcpy(frame.camera.ortho, box, sizeof box);
+    }
+    if (o.znear > 0.0f)
+        frame.camera.znear = o.znear;
+    if (o.zfar > 0.0f)
+        frame.camera.zfar = o.zfar;
+    if (!(frame.camera.znear < frame.camera.zfar)) {
+        fprintf(stderr, "mote-render: the near plane %g is not below the far plane %g (--near, "
+                        "--far)\n", frame.camera.znear, frame.camera.zfar);
+        goto done;
     }
 
     if (o.frames > 0) {

@@ -2,6 +2,7 @@
 #   mote-render   scene file -> PNG/PPM (tools/mote_render.c)
 #   mote-bake     scene file -> C header for firmware (tools/mote_bake.c)
 #   gen_assets    writes the project's own assets/ (tools/gen_assets.c)
+#   gen_gltf      writes the project's glTF test scenes at test time (tools/gen_gltf.c)
 #
 #   make tools         build them (part of `make`)
 #   make assets        regenerate assets/ with gen_assets (committed outputs)
@@ -10,12 +11,13 @@
 MOTE_RENDER := $(BIN)/mote-render
 MOTE_BAKE   := $(BIN)/mote-bake
 GEN_ASSETS  := $(BIN)/gen_assets
+GEN_GLTF    := $(BIN)/gen_gltf
 TOOL_OBJ_DIR := $(BUILD)/tools
 
 .PHONY: tools assets assets-check
 
 all: tools
-tools: $(MOTE_RENDER) $(MOTE_BAKE) $(GEN_ASSETS)
+tools: $(MOTE_RENDER) $(MOTE_BAKE) $(GEN_ASSETS) $(GEN_GLTF)
 
 $(TOOL_OBJ_DIR)/%.o: tools/%.c $(wildcard include/mote/*.h) | $(DEPS_OK)
 	@mkdir -p $(dir $@)
@@ -31,6 +33,11 @@ $(MOTE_BAKE): $(TOOL_OBJ_DIR)/mote_bake.o $(LIB)
 
 # gen_assets needs only stb_image_write (in libstb) and libm, not libmote.
 $(GEN_ASSETS): $(TOOL_OBJ_DIR)/gen_assets.o
+	@mkdir -p $(dir $@)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+# gen_gltf too: it writes its scenes with stb_image_write's PNGs embedded.
+$(GEN_GLTF): $(TOOL_OBJ_DIR)/gen_gltf.o
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 

@@ -7,14 +7,20 @@
  * embedded/test-embedded.sh and embedded/bench-embedded.sh compare with.
  *
  * FW_LCD 0: RGB565, the frame only hashed. FW_LCD 1: RGB565_SWAPPED, the
- * byte order of SPI LCDs, each band sent to an ST7789 through lcd.c; on the
- * emulated boards and the host the panel is lcd_fake.c, and the image it
- * received must hash as the frame does.
+ * byte order of SPI LCDs, each band sent to an ST7789 through lcd.c from
+ * two band buffers: the DMA sends one while mote draws the next into the
+ * other (desc.color_back, desc.flush_wait). On the emulated boards and the
+ * host the panel is lcd_fake.c, which takes a DMA's bytes only when it is
+ * waited for, and the image it received must hash as the frame does.
  *
- * RAM for the library is static and sized for the band: fw_color and
- * fw_depth (mote_band_bytes(W, rows, format, DEPTH16)) and fw_device;
- * bench-embedded reads their sizes from the ELF's symbols (and fw_bins',
- * a binning arena, where there is one).
+ * FW_BINS 1 (the default): band bins, two bytes a triangle
+ * (mote_band_bins_bytes), so that each band sets up only the triangles
+ * that touch it; 0: every band replays the frame.
+ *
+ * RAM for the library is static and sized for the band: fw_color (and
+ * fw_color_back), fw_depth (mote_band_bytes(W, rows, format, DEPTH16)),
+ * fw_bins and fw_device; bench-embedded reads their sizes from the ELF's
+ * symbols.
  *
  * Counted per frame (fw_count_start to fw_count_stop): mote_begin, the
  * draws and mote_end, less the flush callback, which stands for the
@@ -33,6 +39,9 @@
 #ifndef FW_LCD
 #define FW_LCD 0
 #endif
+#ifndef FW_BINS
+#define FW_BINS 1
+#endif
 
 #define W SCENE_WIDTH
 #define H SCENE_HEIGHT
@@ -42,8 +51,13 @@
 static uint16_t fw_color[W * ROWS];
 static uint16_t fw_depth[W * ROWS];
 static mote_device fw_device;
+#if FW_BINS && ROWS < H
+static uint16_t fw_bins[SCENE_TRIANGLE_COUNT];   /* 2 bytes a triangle */
+#endif
 #if FW_LCD
+static uint16_t fw_color_back[W * ROWS];
 static lcd fw_lcd;
+static const void *fw_sending;    /* the buffer the DMA reads, until waited for */
 #endif
 
 /* What the flush callback saw: the hash so far and the next row expected. */
@@ -61,11 +75,25 @@ static void take_rows(frame_check *fc, int y0, int rows, const void *color, int 
     fc->hash = fw_fnv1a(fc->hash, color, (size_t)rows * W * 2);
     fc->next_row = y0 + rows;
 #if FW_LCD
-    /* one band buffer: the band must be sent before mote draws the next */
+    /* started, not waited for: mote draws the next band into the other
+     * buffer meanwhile, and waits (wait_rows) before it reuses this one */
     lcd_start_rows(&fw_lcd, y0, rows, color);
-    lcd_wait(&fw_lcd);
+    fw_sending = color;
 #endif
 }
+
+#if FW_LCD
+static void wait_rows(void *user, const void *color)
+{
+    (void)user;
+    fw_count_stop();
+    if (color == fw_sending) {
+        lcd_wait(&fw_lcd);
+        fw_sending = NULL;
+    }
+    fw_count_start();
+}
+#endif
 
 static void flush(void *user, int y0, int rows, const void *color, int stride)
 {
@@ -116,6 +144,14 @@ int main(void)
     if (ROWS < H) {
         desc.flush = flush;
         desc.flush_user = &fc;
+#if FW_BINS && ROWS < H
+        desc.band_bins = fw_bins;
+        desc.band_bins_size = sizeof fw_bins;
+#endif
+#if FW_LCD
+        desc.color_back = fw_color_back;
+        desc.flush_wait = wait_rows;
+#endif
     }
     mote_result r = mote_device_init(&fw_device, &desc);
     if (r != MOTE_OK)
@@ -129,6 +165,9 @@ int main(void)
     fw_count_stop();
     if (ROWS == H)
         take_rows(&fc, 0, H, fw_color, W * 2);
+#if FW_LCD
+    lcd_wait(&fw_lcd);            /* the last band's transfer */
+#endif
 
     if (fc.out_of_order || fc.next_row != H) {
         fw_puts("mote-firmware: the bands did not cover the frame in order\n");
@@ -141,9 +180,17 @@ int main(void)
     fw_put_uint(" rows, triangles drawn ", mote_device_stats(&fw_device)->triangles_drawn, 10);
     fw_puts("\n");
     size_t buffers = mote_band_bytes(W, ROWS, FORMAT, MOTE_DEPTH_FORMAT_16);
+#if FW_LCD
+    buffers += sizeof fw_color_back;
+#endif
+    size_t bins = 0;
+#if FW_BINS && ROWS < H
+    bins = sizeof fw_bins;
+#endif
     fw_put_uint("mote-firmware: RAM for mote: band buffers ", (uint32_t)buffers, 10);
+    fw_put_uint(" + band bins ", (uint32_t)bins, 10);
     fw_put_uint(" + device ", (uint32_t)sizeof fw_device, 10);
-    fw_put_uint(" = ", (uint32_t)(buffers + sizeof fw_device), 10);
+    fw_put_uint(" = ", (uint32_t)(buffers + bins + sizeof fw_device), 10);
     fw_puts(" bytes\n");
     if (fw_stack_used() > 0) {
         fw_put_uint("mote-firmware: stack used ", fw_stack_used(), 10);

@@ -49,6 +49,9 @@
  *   - Band mode (desc.band_height < desc.height): the colour and depth buffers
  *     hold only band_height rows; mote_end produces the frame band by band and
  *     calls desc.flush after each. Full frame and bands give the same bytes.
+ *     With desc.band_bins (2 bytes a triangle) a band sets up only the
+ *     triangles that touch it; with desc.color_back and desc.flush_wait the
+ *     flush may send one buffer by DMA while the next band is drawn.
  *
  * ERRORS
  *   Every function that can fail returns a mote_result; mote_result_string()
@@ -519,16 +522,20 @@ typedef void (*mote_parallel_for_fn)(void *user, int count,
                                      mote_task_fn fn, void *task_arg);
 
 /* Band mode: called after each band with the band's first row y0, its row
- * count, and the colour buffer holding those rows (desc.color). */
+ * count, and the colour buffer holding those rows (desc.color, or
+ * desc.color_back for every other band when it is given). With flush_wait
+ * set, the flush may start a transfer (DMA) and return at once: mote calls
+ * flush_wait(user, color) before it draws into that buffer again. */
 typedef void (*mote_flush_fn)(void *user, int y0, int rows,
                               const void *color, int stride);
+typedef void (*mote_flush_wait_fn)(void *user, const void *color);
 
 /* Testing aid: called for every triangle that reaches the rasteriser, after
  * clipping, snapping and culling, in submission order, with its snapped
  * screen vertices (fixed point, subpixel_bits fraction), their depth z/w
  * clamped to [0, 1] as the rasteriser uses it, and clip w, in the original
- * winding. Band mode calls it again for each band a frame's draws are
- * replayed in. */
+ * winding. Band mode calls it again for each band the triangle is drawn
+ * in: every band without desc.band_bins, those it touches with them. */
 typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
                                       const int32_t y[3], const float z[3],
                                       const float w[3]);
@@ -567,6 +574,20 @@ typedef struct mote_device_desc {
     int band_height;              /* 0 = height (full frame) */
     mote_flush_fn flush;
     void *flush_user;
+    /* Band mode, double buffering: a second colour buffer of color's size
+     * and alignment (NULL: one buffer), and the wait for a flush's transfer
+     * (NULL: flush returns when the buffer may be reused). */
+    void *color_back;
+    mote_flush_wait_fn flush_wait;
+    /* Band mode, binning: memory for each triangle's band range,
+     * mote_band_bins_bytes(height, band_height, triangles) bytes for a
+     * frame of that many triangles (NULL: none). The first band records
+     * which bands each triangle touches; the others then skip every draw
+     * and triangle that does not touch them, instead of transforming and
+     * setting up the whole frame again. Triangles past its size are
+     * replayed in every band, as without it: slower, never wrong. */
+    void *band_bins;
+    size_t band_bins_size;
     void *arena;                  /* optional binning memory (full frame only), 8-byte aligned */
     size_t arena_size;            /* used in whole 8-byte words, up to 4 GiB */
     int tile_size;                /* 0 = 64; a power of two from 8 to 256 */
@@ -624,6 +645,7 @@ typedef struct mote_device {
     int draw_count;
     mote__draw draws[MOTE_MAX_DRAWS];
     mote__bin bin;                /* binned mode state */
+    mote__bands bands;            /* band mode state */
     int band_y0, band_rows;       /* region being drawn in direct mode */
 } mote_device;
 
@@ -670,6 +692,11 @@ size_t mote_arena_bytes_per_triangle(void);
  * 0 for a size no device can have (outside [1, MOTE_MAX_SIZE]). */
 size_t mote_band_bytes(int width, int band_height, mote_format color,
                        mote_depth_format depth);
+
+/* Bytes of desc.band_bins for a band-mode frame of up to triangles
+ * triangles (2 a triangle); 0 when band binning does not apply: a full
+ * frame, or more than 255 bands. */
+size_t mote_band_bins_bytes(int height, int band_height, uint32_t triangles);
 
 /* Reads pixel (x, y) of a full-frame colour buffer as RGBA, whatever the
  * format: alpha as stored in RGBA8888 (255 where triangles drew, the clear

@@ -10,7 +10,25 @@
 typedef struct mote__draw {
     const struct mote_mesh *mesh;
     struct mote_draw_desc desc;
+    /* band mode with band bins: where its triangles' ranges start, and the
+     * bands its triangles touch (first > last: none), known once the
+     * first band has drawn it with every triangle's range recorded */
+    uint32_t bin_first;
+    uint8_t band_first, band_last;
+    bool band_known;
 } mote__draw;
+
+/* Band-mode state: the band being drawn, the buffer it is drawn into, and
+ * the band bins (2 bytes a triangle: first and last band). */
+typedef struct mote__bands {
+    unsigned char *bins;
+    uint32_t capacity, used;      /* triangles */
+    uint32_t scale_lo, scale_hi;  /* 2^16 / band_height, floored and ceiled */
+    int index;                    /* the band being drawn */
+    void *color;                  /* the buffer it is drawn into */
+    struct mote__draw *draw;      /* the recorded draw being drawn */
+    bool in_flight[2];            /* color, color_back: flushed, not waited for */
+} mote__bands;
 
 /* Binned-mode state: a bump allocator over the caller's arena. */
 typedef struct mote__bin {

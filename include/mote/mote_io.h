@@ -1,6 +1,6 @@
 /*
- * mote_io.h - host-side companions of the mote core: .babylon scene files
- * (cJSON), textures (stb_image), PNG/PPM output (stb_image_write and a
+ * mote_io.h - host-side companions of the mote core: .babylon and glTF 2.0
+ * scene files (cJSON), textures (stb_image), PNG/PPM output (stb_image_write and a
  * hand-written P6 writer), and the OpenMP tile loop.
  *
  * Everything here may allocate; every object it creates has a function that
@@ -36,6 +36,17 @@ typedef struct mote_limits {
      * 0.75 times its decoded size). */
     size_t max_total_texture_bytes;
     int max_json_depth;           /* default 64 */
+    /* What parsing a scene's JSON may allocate, default 512 MiB: told
+     * from the text before it is parsed (cJSON takes an item of 64 bytes
+     * a value, numbers too: 40 times the text of "0,0,0,..."), so a file
+     * past it is refused without the memory being taken. */
+    size_t max_json_bytes;
+    /* The triangles of all the scene's meshes together, default 1 Mi
+     * (1,048,576): instances, thin instances, levels of detail and
+     * hidden meshes each count, as any may be drawn. It bounds the time
+     * a frame can take, which the counts above do not: 100,000 triangles
+     * with 10 instances are 1.1 million to draw. */
+    uint32_t max_triangles;
     bool allow_any_texture_path;  /* false: only inside the scene's folder */
     bool missing_texture_is_warning; /* true: render untextured, warn */
 } mote_limits;
@@ -50,7 +61,7 @@ mote_limits mote_limits_default(void);
  * 2.27's decoders of those hang or overrun on hostile files. Files built to
  * reach the other known faults of that stb_image are refused as corrupt
  * (MOTE_ERR_PARSE), and palettes it would read past are padded with black
- * (README, "Hostile input"). */
+ * (docs/security.md, "Image decoding"). */
 mote_result mote_texture_load(const char *path, const mote_limits *limits,
                               mote_texture *out, char *message, size_t message_size);
 mote_result mote_texture_load_memory(const void *data, size_t size,
@@ -123,7 +134,8 @@ typedef struct mote_scene {
     bool mirrored_z;
     /* Non-fatal notes (downgraded textures, ...), "; " between them: each
      * distinct one once, " (x12)" after one given 12 times, and "; N more
-     * warnings" for those that do not fit. */
+     * warnings" for those that do not fit. Every one of them, one by one:
+     * mote_scene_warning. */
     char warning[256];
     /* One flag per mesh (mesh_count): drawn with both sides (its material
      * says so). The core's culling is a draw option (mote_draw_desc.cull),
@@ -140,26 +152,39 @@ typedef struct mote_scene {
     const mote_lod *lods;
     int lod_count;
     void *files_;                 /* private: the files read (mote_scene_reads_file) */
+    void *warnings_;              /* private: every warning (mote_scene_warning) */
     void *storage_;               /* private: owned allocations */
 } mote_scene;
 
 /* Loads a scene file. Its format is told by its bytes, whatever its
- * name: a .babylon scene (Babylon.js's JSON, either layout; what is read,
- * and how, is docs/babylon.md) loads; anything else fails saying what it
- * is: MOTE_ERR_UNSUPPORTED for a glTF file (JSON or binary), a Wavefront
- * OBJ file or an image, MOTE_ERR_IO for a Git LFS pointer in place of the
- * file, MOTE_ERR_PARSE for none of these. Textures resolve relative to
- * the scene's folder. limits may be NULL. On failure *out is zeroed and
- * the message names the file and the place. */
+ * name: a .babylon scene (Babylon.js's JSON, either layout;
+ * docs/babylon.md) or a glTF 2.0 one (.gltf JSON with its buffers and
+ * images, or a binary .glb; docs/gltf.md) loads; anything else fails
+ * saying what it is: MOTE_ERR_UNSUPPORTED for a glTF 1.0 file, a
+ * Wavefront OBJ file or an image, MOTE_ERR_IO for a Git LFS pointer in
+ * place of the file, MOTE_ERR_PARSE for none of these. Textures and glTF
+ * buffers resolve relative to the scene's folder. limits may be NULL. On
+ * failure *out is zeroed and the message names the file and the place
+ * (for a .glb's container, the byte offset). */
 mote_result mote_scene_load(const char *path, const mote_limits *limits,
                             mote_scene *out, char *message, size_t message_size);
 /* The same from size bytes of memory; base_dir resolves texture names
- * (NULL: no textures are loaded, materials keep their colour); name is
- * used in messages. */
+ * and glTF buffer files (NULL: no textures are loaded, materials keep
+ * their colour, and a glTF buffer in a file is an error); name is used
+ * in messages. */
 mote_result mote_scene_load_memory(const char *data, size_t size, const char *name,
                                    const char *base_dir, const mote_limits *limits,
                                    mote_scene *out, char *message, size_t message_size);
 void mote_scene_free(mote_scene *scene);
+
+/* The scene's warnings, all of them where scene.warning shows those that
+ * fit in 256 bytes: how many distinct ones the load kept (the first 4096
+ * given; *dropped, when not NULL: how many more distinct ones it did
+ * not), and the i-th of them in the order first given (NULL past the
+ * last), with how many times it was given in *repeats (may be NULL). The
+ * texts live as long as the scene. */
+int mote_scene_warning_count(const mote_scene *scene, unsigned *dropped);
+const char *mote_scene_warning(const mote_scene *scene, int i, unsigned *repeats);
 
 /* Whether path names a file the scene was read from: its scene file
  * (mote_scene_load) or one its textures were decoded from. The same file
@@ -174,6 +199,14 @@ bool mote_scene_reads_file(const mote_scene *scene, const char *path);
  * the file lists no lights, a point light above the camera. The ambient
  * stays 0: the materials hold the scene's (see mote_scene.ambient). */
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame);
+
+/* Sets camera's znear and zfar for its position so that the whole scene
+ * lies between them, as mote_scene_frame sets them for the camera it
+ * frames the scene with: far past the far side of the sphere around the
+ * scene's bounding box, near where the sphere begins (at least 1/100 of
+ * the distance to its centre, and 1/1000 of far). For a caller's own
+ * eye on a scene without a camera (mote-render --camera). */
+void mote_scene_fit_planes(const mote_scene *scene, mote_camera *camera);
 
 /* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with
  * cull MOTE_CULL_NONE where the mesh's material has backFaceCulling false,

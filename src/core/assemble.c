@@ -16,10 +16,26 @@ static bool mote__culled(const mote__ctx *cx, int64_t area2)
 }
 
 
+/* Widens the triangle's range of bands to its rows (band bins). */
+static void mote__band_note(const mote__ctx *cx, const int32_t Y[3])
+{
+    const mote_device *dev = cx->dev;
+    const int F = dev->desc.subpixel_bits, last = dev->desc.height - 1;
+    int32_t lo = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), hi = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
+    uint32_t r0 = lo <= 0 ? 0u : (uint32_t)MOTE__MIN(lo >> F, last);
+    uint32_t r1 = hi <= 0 ? 0u : (uint32_t)MOTE__MIN(hi >> F, last);
+    uint32_t b0 = (r0 * dev->bands.scale_lo) >> 16, b1 = MOTE__MIN((r1 * dev->bands.scale_hi) >> 16, 254u);
+    unsigned char *r = cx->band_range;
+    r[0] = (unsigned char)MOTE__MIN(r[0], b0);
+    r[1] = (unsigned char)MOTE__MAX(r[1], b1);
+}
+
 static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
                        const mote__svert *const v[3])
 {
     mote_device *dev = cx->dev;
+    if (cx->band_range)
+        mote__band_note(cx, Y);
     if (dev->desc.triangle_hook) {
         float z[3] = {v[0]->depth, v[1]->depth, v[2]->depth};
         float w[3] = {v[0]->w, v[1]->w, v[2]->w};
@@ -359,6 +375,20 @@ void mote__triangles(mote__ctx *cx, uint32_t first, uint32_t end, bool prepared)
 #else
     (void)prepared;
 #endif
-    for (; i < end && !cx->sink->full; i++)
+    /* band bins: the first band records where each triangle goes, the
+     * others skip those that miss them (mote_device_desc.band_bins) */
+    const int band = cx->dev->bands.index;
+    for (; i < end && !cx->sink->full; i++) {
+        if (cx->band_bins) {
+            unsigned char *range = cx->band_bins + 2 * (size_t)i;
+            if (band == 0) {
+                range[0] = 255;   /* none until emitted */
+                range[1] = 0;
+                cx->band_range = range;
+            } else if (band < range[0] || band > range[1]) {
+                continue;
+            }
+        }
         mote__triangle(cx, &cx->mesh->indices[3 * i]);
+    }
 }

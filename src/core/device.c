@@ -22,6 +22,20 @@ const char *mote_result_string(mote_result result)
     return s;
 }
 
+/* The bands of a frame: ceil(height / band_height). */
+static int mote__band_count(int height, int band_height)
+{
+    return (height + band_height - 1) / band_height;
+}
+
+size_t mote_band_bins_bytes(int height, int band_height, uint32_t triangles)
+{
+    if (height <= 0 || band_height <= 0 || height > MOTE_MAX_SIZE || band_height >= height
+        || mote__band_count(height, band_height) > 255)
+        return 0;
+    return 2 * (size_t)triangles;
+}
+
 mote_device_desc mote_device_desc_defaults(const mote_device_desc *desc)
 {
     mote_device_desc d = *desc;
@@ -67,7 +81,8 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
     const int pixel_mask = mote_format_bytes(d.color_format) - 1;
     const uintptr_t depth_bytes = (uintptr_t)mote_depth_format_bytes(d.depth_format);
     if (d.color_stride < d.width * (pixel_mask + 1) || (d.color_stride & pixel_mask)
-        || ((uintptr_t)d.color & (uintptr_t)pixel_mask) || (depth_bytes && ((uintptr_t)d.depth & (depth_bytes - 1))))
+        || ((uintptr_t)d.color & (uintptr_t)pixel_mask) || ((uintptr_t)d.color_back & (uintptr_t)pixel_mask)
+        || (depth_bytes && ((uintptr_t)d.depth & (depth_bytes - 1))))
         return MOTE_ERR_INVALID_ARGUMENT;
     if (d.subpixel_bits < 4 || d.subpixel_bits > 8 || d.band_height < 1)
         return MOTE_ERR_INVALID_ARGUMENT;
@@ -76,6 +91,18 @@ mote_result mote_device_init(mote_device *dev, const mote_device_desc *desc)
     if (d.tile_size < 8 || d.tile_size > 256 || (d.tile_size & (d.tile_size - 1)))
         return MOTE_ERR_INVALID_ARGUMENT;
     dev->desc = d;
+    dev->bands.color = d.color;
+    if (d.band_bins && mote_band_bins_bytes(d.height, d.band_height, 1) > 0) {
+        mote__bands *bb = &dev->bands;
+        size_t cap = d.band_bins_size / 2;
+        bb->bins = (unsigned char *)d.band_bins;
+        bb->capacity = cap < UINT32_MAX ? (uint32_t)cap : UINT32_MAX;
+        /* row * scale >> 16 is within one band of row / band_height, below
+         * it with scale_lo and above with scale_hi: a range one band wider
+         * at most, never narrower, and no division per triangle */
+        bb->scale_lo = 65536u / (uint32_t)d.band_height;
+        bb->scale_hi = (65536u + (uint32_t)d.band_height - 1) / (uint32_t)d.band_height;
+    }
     if (d.arena) {
         if (!MOTE_ENABLE_BINNING)
             return MOTE_ERR_UNSUPPORTED;
@@ -197,6 +224,7 @@ static void mote__record(mote_device *dev, const mote_mesh *mesh, const mote_dra
     mote__draw *rec = &dev->draws[dev->draw_count++];
     rec->mesh = mesh;
     rec->desc = *d;
+    rec->band_known = false;
 }
 
 mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *draw)
@@ -246,6 +274,8 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
     return r;
 }
 
+static mote_result mote__draw_bands(mote_device *dev);
+
 mote_result mote_end(mote_device *dev)
 {
     if (!dev)
@@ -260,30 +290,65 @@ mote_result mote_end(mote_device *dev)
     }
     if (!mote__band_mode(dev))
         return MOTE_OK;
+    return mote__draw_bands(dev);
+}
+
+/* Band b of a draw: whether it may touch the band (unknown: yes). */
+static bool mote__draw_in_band(const mote__draw *rec, int band)
+{
+    return !rec->band_known || (band >= rec->band_first && band <= rec->band_last);
+}
+
+/* The buffer band k is drawn into, once the transfer that last read it
+ * (if any) is over. */
+static void *mote__band_buffer(mote_device *dev, int k)
+{
     const mote_device_desc *d = &dev->desc;
+    int which = d->color_back ? (k & 1) : 0;
+    void *color = which ? d->color_back : d->color;
+    if (dev->bands.in_flight[which] && d->flush_wait)
+        d->flush_wait(d->flush_user, color);
+    dev->bands.in_flight[which] = false;
+    return color;
+}
+
+static mote_result mote__draw_bands(mote_device *dev)
+{
+    const mote_device_desc *d = &dev->desc;
+    mote__bands *bb = &dev->bands;
     mote_result result = MOTE_OK;
     mote_stats first_band = dev->stats;
-    for (int y0 = 0; y0 < d->height; y0 += d->band_height) {
+    bb->used = 0;
+    for (int k = 0, y0 = 0; y0 < d->height; k++, y0 += d->band_height) {
         int y1 = MOTE__MIN(y0 + d->band_height, d->height);
         mote__target tg;
         mote__counts count = {0, 0};
         mote__full_target(dev, &tg, &count);
+        tg.color = (uint8_t *)mote__band_buffer(dev, k);
         tg.y0 = y0;
+        bb->index = k;
+        bb->color = tg.color;
         mote__rect band = {0, y0, d->width, y1};
         mote__clear_rect(dev, &tg, band);
         for (int i = 0; i < dev->draw_count; i++) {
-            mote_result r = mote__draw_direct(dev, dev->draws[i].mesh, &dev->draws[i].desc, &tg, band);
+            mote__draw *rec = &dev->draws[i];
+            if (!mote__draw_in_band(rec, k))
+                continue;
+            bb->draw = rec;
+            mote_result r = mote__draw_direct(dev, rec->mesh, &rec->desc, &tg, band);
             if (r != MOTE_OK)
                 result = r;
         }
+        bb->draw = NULL;
         mote__add_counts(dev, &count);
-        /* each band replays every draw: count the triangles once */
-        if (y0 == 0)
+        /* the first band visits every triangle: count them once */
+        if (k == 0)
             first_band = dev->stats;
         first_band.pixels_tested = dev->stats.pixels_tested;
         first_band.pixels_written = dev->stats.pixels_written;
         dev->stats = first_band;
-        d->flush(d->flush_user, y0, y1 - y0, d->color, d->color_stride);
+        bb->in_flight[d->color_back ? (k & 1) : 0] = true;
+        d->flush(d->flush_user, y0, y1 - y0, tg.color, d->color_stride);
     }
     return result;
 }

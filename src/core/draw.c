@@ -219,8 +219,19 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
     dev->stats.draws += first_piece;
     mote__ctx cx;
     mote__raster_state rs;
+    /* band bins (mote_device_desc.band_bins): the draw being drawn in a
+     * band, recorded in the first */
+    mote__draw *rec = dev->bands.bins ? dev->bands.draw : NULL;
+    const bool recording = rec && dev->bands.index == 0;
+    if (recording) {
+        rec->band_first = 255;
+        rec->band_last = 0;
+        rec->band_known = false;
+    }
     if (!mote__draw_context(&cx, &rs, dev, mesh, desc)) {
         dev->stats.meshes_culled += first_piece;
+        if (recording)
+            rec->band_known = true;   /* in no band */
         return MOTE_OK;
     }
     cx.sink = sink;
@@ -264,7 +275,22 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
             tris = MOTE__MIN(piece->tri1, tris);
         }
         dev->stats.triangles_in += tris - first;
+        const bool triangles = !(MOTE_ENABLE_LINES && mode == MOTE_MODE_WIREFRAME);
+        if (recording && triangles && cx.cache_mask && first == 0 && tris <= dev->bands.capacity - dev->bands.used) {
+            rec->bin_first = dev->bands.used;
+            dev->bands.used += tris;
+            cx.band_bins = dev->bands.bins + 2 * (size_t)rec->bin_first;
+        } else if (rec && !recording && rec->band_known) {
+            cx.band_bins = dev->bands.bins + 2 * (size_t)rec->bin_first;
+        }
         mote__triangles(&cx, first, tris, MOTE_ENABLE_BINNING && piece && piece->vertices);
+        if (recording && cx.band_bins) {
+            for (uint32_t k = 0; k < tris; k++) {
+                rec->band_first = MOTE__MIN(rec->band_first, cx.band_bins[2 * k]);
+                rec->band_last = MOTE__MAX(rec->band_last, cx.band_bins[2 * k + 1]);
+            }
+            rec->band_known = true;
+        }
     }
     return MOTE_OK;
 }

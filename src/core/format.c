@@ -65,7 +65,7 @@ mote_rgba mote_read_pixel(const mote_device *dev, int x, int y)
     mote_rgba c = {0, 0, 0, 0};
     if (!dev || !dev->ready || x < 0 || y < 0 || x >= dev->desc.width || y >= dev->desc.band_height)
         return c;
-    const uint8_t *row = (const uint8_t *)dev->desc.color + (size_t)y * (size_t)dev->desc.color_stride;
+    const uint8_t *row = (const uint8_t *)dev->bands.color + (size_t)y * (size_t)dev->desc.color_stride;
     uint8_t v[4];
     mote__read_rgba(row, x, dev->desc.color_format, v);
     memcpy(&c, v, sizeof c);      /* r, g, b, a */

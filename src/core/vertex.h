@@ -158,6 +158,8 @@ typedef struct mote__ctx {
     mote_draw_desc d;
     float nrm[9], mvp[16], world[16];
     struct mote__lit_queue *queue; /* not NULL: front faces wait for their vertices (MOTE__VECTOR_VERTEX) */
+    unsigned char *band_bins;     /* band bins of the draw's triangles (see mote__triangles) */
+    unsigned char *band_range;    /* the first band: the triangle's range of bands to widen */
     mote__lights lights;          /* lit draws (mote__vertex_begin) */
 #if MOTE__VECTOR_VERTEX
     mote__v4_draw v4;             /* last: mote__draw_context leaves it to the code that reads it */

@@ -13,7 +13,7 @@
 static mote_result mote__scene_colors(mote__babylon *bl)
 {
     mote_scene *sc = bl->load->scene;
-    MOTE__TRY(mote__json_floats(bl->load, bl->root, "ambientColor", "scene", 3, 0, sc->ambient));
+    MOTE__TRY(mote__babylon_color3(bl, bl->root, "ambientColor", "scene", sc->ambient));
     float c[4] = {0, 0, 0, 1};
     MOTE__TRY(mote__json_floats(bl->load, bl->root, "clearColor", "scene", 3, 4, c));
     sc->clear_color.r = mote__unit_byte(c[0]);
@@ -53,6 +53,15 @@ mote_result mote__babylon_load(mote__loader *ld, const cJSON *root)
 }
 
 /* ---- values as Babylon.js writes them ---------------------------------- */
+
+/* key -> a Color3 (absent or null keeps out): 3 numbers, or 4, whose last
+ * is not read, as Color3.FromArray reads the first three (old 3ds Max
+ * exporters write [r, g, b, a] for every colour). */
+mote_result mote__babylon_color3(mote__babylon *bl, const cJSON *obj, const char *key,
+                                 const char *where, float out[3])
+{
+    return mote__json_floats(bl->load, obj, key, where, 3, 4, out);
+}
 
 /* key -> a side orientation (MOTE__SIDE_...): a number, 0 or not (Babylon.js
  * tells only Material.ClockWiseSideOrientation, 0, from the rest); absent

@@ -199,6 +199,8 @@ typedef struct mote__babylon {
 mote_result mote__babylon_load(mote__loader *ld, const cJSON *root);
 
 /* babylon.c */
+mote_result mote__babylon_color3(mote__babylon *bl, const cJSON *obj, const char *key,
+                                 const char *where, float out[3]);
 mote_result mote__babylon_side(mote__babylon *bl, const cJSON *obj, const char *key,
                                const char *where, unsigned char *out);
 mote_result mote__babylon_id_ref(mote__babylon *bl, const cJSON *obj, const char *key,

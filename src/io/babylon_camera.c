@@ -11,6 +11,39 @@
 
 /* ---- cameras and lights in the node tree ------------------------------- */
 
+/* Whether v is, or an array holds, a number written as the text
+ * "Infinity", "-Infinity" or "NaN", as .NET serialisers write a float
+ * JSON has no number for. */
+static bool mote__non_finite_text(const cJSON *v)
+{
+    if (cJSON_IsArray(v)) {
+        for (const cJSON *e = v->child; e; e = e->next)
+            if (mote__non_finite_text(e))
+                return true;
+        return false;
+    }
+    return cJSON_IsString(v) && (strcmp(v->valuestring, "Infinity") == 0 ||
+                                 strcmp(v->valuestring, "-Infinity") == 0 ||
+                                 strcmp(v->valuestring, "NaN") == 0);
+}
+
+/* The first key of the camera that holds such a text, or NULL. Old 3ds
+ * Max exporters write a "Default camera" framing an empty box this way:
+ * position and target ["-Infinity", ...], maxZ "Infinity". JSON.parse
+ * keeps the strings, Camera.Parse copies them in as they are, and
+ * JavaScript's arithmetic makes them infinite: the view and projection
+ * come out NaN and Babylon.js draws nothing through that camera. */
+static const char *mote__camera_non_finite(const cJSON *cam)
+{
+    static const char *const keys[] = {"position", "target", "rotation", "rotationQuaternion",
+                                       "upVector", "fov", "minZ", "maxZ", "orthoLeft",
+                                       "orthoRight", "orthoBottom", "orthoTop"};
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
+        if (mote__non_finite_text(mote__json_get(cam, keys[k])))
+            return keys[k];
+    return NULL;
+}
+
 /* lights[k].type: 0 point, 1 directional, 2 spot, 3 hemispheric. */
 static mote_result mote__light_type(mote__babylon *bl, const cJSON *l, const char *at, uint32_t *t)
 {
@@ -230,7 +263,8 @@ mote_result mote__babylon_camera_light_nodes(mote__babylon *bl)
     int index, unused;
     MOTE__TRY(mote__index_entries(bl));
     MOTE__TRY(mote__active_camera(bl, false, &cam, &index));
-    if (cam && cJSON_IsObject(cam) && mote__babylon_names_parent(cam)) {
+    if (cam && cJSON_IsObject(cam) && mote__babylon_names_parent(cam) &&
+        !mote__camera_non_finite(cam)) {  /* not used (mote__babylon_camera) */
         char at[48];
         snprintf(at, sizeof at, "cameras[%d]", index);
         MOTE__TRY(mote__entry_node(bl, 0, index, at, &unused));
@@ -320,6 +354,14 @@ mote_result mote__babylon_camera(mote__babylon *bl)
     char at[48];
     snprintf(at, sizeof at, "cameras[%d]", index);
     MOTE__TRY(mote__json_object(bl->load, cam, at));
+    const char *infinite = mote__camera_non_finite(cam);
+    if (infinite) {
+        /* rather than nothing, the scene as a camera of mote's frames it */
+        mote__warn(bl->load, "%s.%s: \"Infinity\", \"-Infinity\" or \"NaN\" written as text: "
+                   "Babylon.js's view through this camera is not a number and draws nothing; "
+                   "mote frames the scene with a camera of its own", at, infinite);
+        return MOTE_OK;
+    }
     const cJSON *mode = mote__json_get(cam, "mode");
     const bool ortho = cJSON_IsNumber(mode) && mode->valuedouble == 1.0;   /* ORTHOGRAPHIC_CAMERA */
     mote_camera *c = &bl->load->scene->camera;
@@ -461,14 +503,14 @@ mote_result mote__babylon_lights(mote__babylon *bl)
             if (has_data)
                 memcpy(L.direction, data, sizeof data);
             MOTE__TRY(mote__json_floats(bl->load, l, "direction", at, 3, 0, L.direction));
-            MOTE__TRY(mote__json_floats(bl->load, l, "groundColor", at, 3, 0, L.ground_color));
+            MOTE__TRY(mote__babylon_color3(bl, l, "groundColor", at, L.ground_color));
         }
         if (bl->right_handed) {
             mote__mirror_point(L.position);
             mote__mirror_point(L.direction);
         }
         float color[3] = {1, 1, 1}, intensity = 1.0f;
-        MOTE__TRY(mote__json_floats(bl->load, l, "diffuse", at, 3, 0, color));
+        MOTE__TRY(mote__babylon_color3(bl, l, "diffuse", at, color));
         MOTE__TRY(mote__json_number(bl->load, l, "intensity", at, &intensity));
         memcpy(L.color, color, sizeof color);
         L.intensity = intensity;

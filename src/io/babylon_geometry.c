@@ -334,6 +334,12 @@ mote_result mote__babylon_current_geometry(mote__babylon *bl, const cJSON *src, 
                                            mote__node *nd)
 {
     const cJSON *pos, *nrm, *uvs, *uvs2 = NULL, *colors, *ind;
+    /* null is no geometry to Babylon.js, but a file that writes it means
+     * positions it lost: said here rather than by the indices it leaves
+     * out of range */
+    if (cJSON_IsNull(mote__json_member(src, "positions")))
+        return mote__fail(bl->load, MOTE_ERR_PARSE, "%s.positions: expected an array of "
+                          "numbers, found null", where);
     MOTE__TRY(mote__json_array(bl->load, src, "positions", where, &pos));
     MOTE__TRY(mote__json_array(bl->load, src, "normals", where, &nrm));
     MOTE__TRY(mote__json_array(bl->load, src, "uvs", where, &uvs));

@@ -105,8 +105,8 @@ static mote_result mote__emissive(mote__babylon *bl, const cJSON *m, const char 
     const char *key = mote__json_get(m, "emissiveColor") && !mote__json_get(m, "emissive")
                           ? "emissiveColor"
                           : "emissive";
-    MOTE__TRY(mote__json_floats(bl->load, m, key, at, 3, 4, emissive));
-    MOTE__TRY(mote__json_floats(bl->load, m, "ambient", at, 3, 4, ambient));
+    MOTE__TRY(mote__babylon_color3(bl, m, key, at, emissive));
+    MOTE__TRY(mote__babylon_color3(bl, m, "ambient", at, ambient));
     /* an emissive texture (one with a name: Texture.Parse makes none
      * otherwise) adds its colour, lit or not, as no mote draw can: named,
      * as a glowing colour is (Maya's incandescence map is one) */
@@ -211,7 +211,7 @@ mote_result mote__babylon_materials(mote__babylon *bl)
             float c[4] = {1, 1, 1, 1};
             if (!mote__json_get(m, color_keys[k]))
                 continue;
-            MOTE__TRY(mote__json_floats(bl->load, m, color_keys[k], at, 3, 4, c));
+            MOTE__TRY(mote__babylon_color3(bl, m, color_keys[k], at, c));
             mote__set_color(&mm->material, c);
             break;
         }

@@ -149,6 +149,25 @@ static mote_result mote__read_matrix(mote__babylon *bl, const cJSON *node, const
     return MOTE_OK;
 }
 
+/* Whether JavaScript takes v for true: absent, null, false, 0, NaN and ""
+ * are false. */
+static bool mote__js_truthy(const cJSON *v)
+{
+    if (!v || cJSON_IsNull(v) || cJSON_IsFalse(v))
+        return false;
+    if (cJSON_IsNumber(v))
+        return v->valuedouble != 0.0 && v->valuedouble == v->valuedouble;
+    if (cJSON_IsString(v))
+        return v->valuestring && v->valuestring[0];
+    return true;
+}
+
+static void mote__warn_separate_geometry(mote__babylon *bl, const char *where)
+{
+    mote__warn(bl->load, "%s: its geometry is in a separate file (an incremental or binary "
+               "export), which mote does not read; it is drawn without it", where);
+}
+
 /* One entry of meshes[] or transformNodes[]. */
 static mote_result mote__node_read(mote__babylon *bl, const cJSON *mesh, const char *where,
                                    mote__node *nd)
@@ -164,6 +183,15 @@ static mote_result mote__node_read(mote__babylon *bl, const cJSON *mesh, const c
      * material's (the glTF loader sets it on every mesh it makes) */
     MOTE__TRY(mote__babylon_side(bl, mesh, "overrideMaterialSideOrientation", where, &nd->side));
     MOTE__TRY(mote__babylon_side(bl, mesh, "sideOrientation", where, &nd->side));
+    /* An incremental (.incremental.babylon) or binary export keeps the
+     * arrays in another file, which mote does not read: said rather than
+     * drawn as nothing without a word. Mesh.Parse tests delayLoadingFile
+     * (as JavaScript tests truth) before any geometry, so the file's
+     * geometryId, arrays and subMeshes are not looked at either. */
+    if (mote__js_truthy(mote__json_get(mesh, "delayLoadingFile"))) {
+        mote__warn_separate_geometry(bl, where);
+        return MOTE_OK;
+    }
     const cJSON *verts, *pos;
     MOTE__TRY(mote__json_array(bl->load, mesh, "vertices", where, &verts));
     MOTE__TRY(mote__json_array(bl->load, mesh, "positions", where, &pos));
@@ -196,13 +224,11 @@ static mote_result mote__node_read(mote__babylon *bl, const cJSON *mesh, const c
             MOTE__TRY(mote__babylon_current_geometry(bl, g->json, gat, nd));
             *owner = (int)(nd - bl->nodes);
         }
+    } else if (cJSON_IsNull(mote__json_member(mesh, "positions"))) {
+        MOTE__TRY(mote__babylon_current_geometry(bl, mesh, where, nd)); /* says it is null */
     } else {
-        /* an incremental (.incremental.babylon) or binary export keeps the
-         * arrays in another file, which mote does not read: say so rather
-         * than draw nothing without a word */
-        if (mote__json_get(mesh, "delayLoadingFile") || mote__json_get(mesh, "_binaryInfo"))
-            mote__warn(bl->load, "%s: its geometry is in a separate file (an incremental or binary "
-                       "export), which mote does not read; it is drawn without it", where);
+        if (mote__json_get(mesh, "_binaryInfo"))
+            mote__warn_separate_geometry(bl, where);
         const cJSON *ind;
         MOTE__TRY(mote__json_array(bl->load, mesh, "indices", where, &ind));
         if (ind && ind->child) {
@@ -728,21 +754,7 @@ mote_result mote__babylon_scene_bounds(mote__babylon *bl)
         const mote__node *nd = &bl->nodes[i];
         if (nd->nv == 0 || sc->meshes[nd->first_mesh].hidden)
             continue;
-        float w[16];
-        mote_mesh_world_matrix(&sc->meshes[nd->first_mesh], w);
-        for (uint32_t v = 0; v < nd->nv; v++) {
-            const float *p = nd->verts[v].position;
-            float q[3];
-            for (int k = 0; k < 3; k++)
-                q[k] = w[k] * p[0] + w[4 + k] * p[1] + w[8 + k] * p[2] + w[12 + k];
-            if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]))
-                continue;
-            for (int k = 0; k < 3; k++) {
-                if (!any || q[k] < sc->bounds_min[k]) sc->bounds_min[k] = q[k];
-                if (!any || q[k] > sc->bounds_max[k]) sc->bounds_max[k] = q[k];
-            }
-            any = true;
-        }
+        mote__scene_bounds_add(sc, &sc->meshes[nd->first_mesh], &any);
     }
     return MOTE_OK;
 }

@@ -1,8 +1,7 @@
 /*
  * common.c - the allocator, messages and limits shared by src/io (files
- * are file.c's). The counters below exist for the failing-allocator tests;
- * they are updated with atomic builtins where the compiler has them, so
- * that loading scenes on several threads stays well defined.
+ * are file.c's). The counters below exist for the failing-allocator tests
+ * (atomic: io_internal.h).
  */
 #include "io_internal.h"
 
@@ -14,42 +13,32 @@
 static long mote__fail_after = -1;
 static long mote__live;
 
-#if defined(__GNUC__)
-#define MOTE__ADD(p, v) __atomic_add_fetch((p), (v), __ATOMIC_RELAXED)
-#define MOTE__LOAD(p) __atomic_load_n((p), __ATOMIC_RELAXED)
-#define MOTE__STORE(p, v) __atomic_store_n((p), (v), __ATOMIC_RELAXED)
-#else
-#define MOTE__ADD(p, v) (*(p) += (v))
-#define MOTE__LOAD(p) (*(p))
-#define MOTE__STORE(p, v) (*(p) = (v))
-#endif
-
 void mote__io_set_alloc_failure_after(int n)
 {
-    MOTE__STORE(&mote__fail_after, (long)(n < 0 ? -1 : n));
+    MOTE__IO_STORE(&mote__fail_after, (long)(n < 0 ? -1 : n));
 }
 
 int mote__io_failure_pending(void)
 {
-    return MOTE__LOAD(&mote__fail_after) >= 0;
+    return MOTE__IO_LOAD(&mote__fail_after) >= 0;
 }
 
 long mote__io_live_allocations(void)
 {
-    return MOTE__LOAD(&mote__live);
+    return MOTE__IO_LOAD(&mote__live);
 }
 
 int mote__io_should_fail(void)
 {
-    if (MOTE__LOAD(&mote__fail_after) < 0)
+    if (MOTE__IO_LOAD(&mote__fail_after) < 0)
         return 0;
     /* one-shot: the n-th request fails, later ones succeed again */
-    return MOTE__ADD(&mote__fail_after, -1) == -1;
+    return MOTE__IO_ADD(&mote__fail_after, -1) == -1;
 }
 
 void mote__io_track(int delta)
 {
-    MOTE__ADD(&mote__live, (long)delta);
+    MOTE__IO_ADD(&mote__live, (long)delta);
 }
 
 void *mote__io_malloc(size_t size)
@@ -113,6 +102,8 @@ mote_limits mote_limits_default(void)
     l.max_texture_bytes = (size_t)256 << 20;
     l.max_total_texture_bytes = (size_t)512 << 20;
     l.max_json_depth = 64;
+    l.max_json_bytes = (size_t)512 << 20;
+    l.max_triangles = 1u << 20;
     return l;
 }
 
@@ -131,6 +122,8 @@ mote_limits mote__io_limits(const mote_limits *limits)
     if (l.max_texture_bytes == 0) l.max_texture_bytes = d.max_texture_bytes;
     if (l.max_total_texture_bytes == 0) l.max_total_texture_bytes = d.max_total_texture_bytes;
     if (l.max_json_depth <= 0) l.max_json_depth = d.max_json_depth;
+    if (l.max_json_bytes == 0) l.max_json_bytes = d.max_json_bytes;
+    if (l.max_triangles == 0) l.max_triangles = d.max_triangles;
     return l;
 }
 

@@ -13,6 +13,42 @@
 #include <stdint.h>
 #include <stdio.h>
 
+/* Process-wide counters and flags (tests' failure injection, cJSON's
+ * hooks) are touched with atomic builtins where the compiler has them, so
+ * that loading scenes on several threads stays well defined.
+ * mote__io_claim turns *p from 0 to 1 and says whether this call did. */
+#if defined(__GNUC__)
+#define MOTE__IO_ADD(p, v) __atomic_add_fetch((p), (v), __ATOMIC_RELAXED)
+#define MOTE__IO_LOAD(p) __atomic_load_n((p), __ATOMIC_RELAXED)
+#define MOTE__IO_STORE(p, v) __atomic_store_n((p), (v), __ATOMIC_RELAXED)
+#define MOTE__IO_EXCHANGE(p, v) __atomic_exchange_n((p), (v), __ATOMIC_RELAXED)
+#define MOTE__IO_LOAD_ACQUIRE(p) __atomic_load_n((p), __ATOMIC_ACQUIRE)
+#define MOTE__IO_STORE_RELEASE(p, v) __atomic_store_n((p), (v), __ATOMIC_RELEASE)
+static inline bool mote__io_claim(int *p)
+{
+    int expected = 0;
+    return __atomic_compare_exchange_n(p, &expected, 1, false, __ATOMIC_ACQ_REL,
+                                       __ATOMIC_ACQUIRE);
+}
+#else
+#define MOTE__IO_ADD(p, v) (*(p) += (v))
+#define MOTE__IO_LOAD(p) (*(p))
+#define MOTE__IO_STORE(p, v) (*(p) = (v))
+#define MOTE__IO_EXCHANGE(p, v) mote__io_exchange((p), (v))
+#define MOTE__IO_LOAD_ACQUIRE(p) (*(p))
+#define MOTE__IO_STORE_RELEASE(p, v) (*(p) = (v))
+static inline bool mote__io_claim(int *p)
+{
+    return *p == 0 ? (*p = 1, true) : false;
+}
+static inline int mote__io_exchange(int *p, int v)
+{
+    int old = *p;
+    *p = v;
+    return old;
+}
+#endif
+
 /* Every allocation of src/io goes through these, so that tests can make
  * the n-th one fail and check that nothing leaks. */
 void *mote__io_malloc(size_t size);
@@ -140,6 +176,12 @@ void mote__io_clean_name(char *dst, size_t n, const char *s);
 
 /* Whether s starts with "data:" (any case): an embedded image, not a file. */
 bool mote__io_is_data_url(const char *s);
+/* Strict base64 (RFC 4648, no line breaks or spaces): '=' only as the last
+ * one or two characters of a 4-character group, padding optional (some
+ * writers omit it), no lone final character. Bytes go to out (room for
+ * len / 4 * 3 + 2); *bad: the offending offset on failure. */
+bool mote__io_base64_decode(const char *in, size_t len, unsigned char *out, size_t *out_len,
+                            size_t *bad);
 /* Decodes a base64 data: URL ("data:image/png;base64,...") with strict
  * validation (decoded size within limits->max_file_bytes) and loads the
  * image as mote_texture_load_memory does. */
@@ -174,6 +216,12 @@ mote_result mote__texture_set_file(mote__texture_set *set, const char *folder, c
 mote_result mote__texture_set_data_url(mote__texture_set *set, const char *url,
                                        const mote_limits *limits, int *index, char *message,
                                        size_t message_size);
+
+/* The same for size bytes of an image held in memory (a glTF buffer
+ * view), decoded each time: its caller names each image once. */
+mote_result mote__texture_set_memory(mote__texture_set *set, const void *data, size_t size,
+                                     const mote_limits *limits, int *index, char *message,
+                                     size_t message_size);
 
 /* Whether w x h pixels are more than *limits allow: the decode refuses
  * every such image by its size, before stb_image decodes it. */

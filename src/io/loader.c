@@ -5,6 +5,7 @@
  */
 #include "loader.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -68,47 +69,102 @@ mote_result mote__check_count(mote__loader *ld, const char *at, size_t count,
  * end. */
 static void mote__show_warnings(mote__loader *ld)
 {
+    const mote__warnings *ws = ld->warnings;
     char *w = ld->scene->warning;
     const size_t cap = sizeof ld->scene->warning, tail = 24; /* "; 99 more warnings" */
     size_t used = 0;
     int shown = 0;
     w[0] = '\0';
-    for (; shown < ld->warning_count; shown++) {
-        const mote__warning *e = &ld->warnings[shown];
+    for (; shown < ws->n; shown++) {
         char count[24] = "";
-        if (e->count > 1)
-            snprintf(count, sizeof count, " (x%u)", e->count);
-        size_t need = (used ? 2 : 0) + strlen(e->text) + strlen(count);
+        if (ws->count[shown] > 1)
+            snprintf(count, sizeof count, " (x%u)", ws->count[shown]);
+        size_t need = (used ? 2 : 0) + strlen(ws->text[shown]) + strlen(count);
         if (used && used + need + tail >= cap)
             break;                /* the first is shown, cut short if it must be */
-        snprintf(w + used, cap - used, "%s%s%s", used ? "; " : "", e->text, count);
+        snprintf(w + used, cap - used, "%s%s%s", used ? "; " : "", ws->text[shown], count);
         used = strlen(w);
     }
-    unsigned more = ld->warnings_dropped + (unsigned)(ld->warning_count - shown);
+    unsigned more = ws->dropped + (unsigned)(ws->n - shown);
     if (more)
         snprintf(w + used, cap - used, "; %u more warning%s", more, more > 1 ? "s" : "");
 }
 
+/* Slots of the lookup: a power of 2, at least twice the warnings kept. */
+#define MOTE__WARNING_SLOTS (2 * MOTE__MAX_WARNINGS)
+
+static size_t mote__text_hash(const char *s)
+{
+    size_t h = 2166136261u;       /* FNV-1a */
+    for (; *s; s++)
+        h = (h ^ (unsigned char)*s) * 16777619u;
+    return h;
+}
+
+/* The list at the first warning; NULL when out of memory. */
+static mote__warnings *mote__warning_list(mote__loader *ld)
+{
+    if (ld->warnings)
+        return ld->warnings;
+    mote__warnings *ws = mote__store_alloc(ld->keep, 1, sizeof *ws);
+    if (!ws)
+        return NULL;
+    ws->text = mote__store_alloc(ld->keep, MOTE__MAX_WARNINGS, sizeof *ws->text);
+    ws->count = mote__store_alloc(ld->keep, MOTE__MAX_WARNINGS, sizeof *ws->count);
+    ws->slots = mote__store_alloc(&ld->tmp, MOTE__WARNING_SLOTS, sizeof *ws->slots);
+    if (!ws->text || !ws->count || !ws->slots)
+        return NULL;              /* what was allocated goes with the scene */
+    ld->warnings = ws;
+    ld->scene->warnings_ = ws;
+    return ws;
+}
+
 void mote__warn(mote__loader *ld, const char *fmt, ...)
 {
-    char text[sizeof ld->warnings[0].text];
+    char text[256];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    int i = 0;
-    while (i < ld->warning_count && strcmp(ld->warnings[i].text, text) != 0)
-        i++;
-    if (i < ld->warning_count) {
-        ld->warnings[i].count++;
-    } else if (i < MOTE__MAX_WARNINGS) {
-        memcpy(ld->warnings[i].text, text, sizeof text);
-        ld->warnings[i].count = 1;
-        ld->warning_count++;
+    mote__warnings *ws = mote__warning_list(ld);
+    if (!ws)
+        return;                   /* out of memory: the load goes on without it */
+    size_t slot = mote__text_hash(text) & (MOTE__WARNING_SLOTS - 1);
+    while (ws->slots[slot] && strcmp(ws->text[ws->slots[slot] - 1], text) != 0)
+        slot = (slot + 1) & (MOTE__WARNING_SLOTS - 1);
+    if (ws->slots[slot]) {
+        ws->count[ws->slots[slot] - 1]++;
     } else {
-        ld->warnings_dropped++;
+        size_t len = strlen(text) + 1;
+        char *copy = ws->n < MOTE__MAX_WARNINGS ? mote__store_alloc(ld->keep, len, 1) : NULL;
+        if (!copy) {
+            ws->dropped++;
+        } else {
+            memcpy(copy, text, len);
+            ws->text[ws->n] = copy;
+            ws->count[ws->n] = 1;
+            ws->slots[slot] = ++ws->n;
+        }
     }
     mote__show_warnings(ld);
+}
+
+int mote_scene_warning_count(const mote_scene *scene, unsigned *dropped)
+{
+    const mote__warnings *ws = scene ? scene->warnings_ : NULL;
+    if (dropped)
+        *dropped = ws ? ws->dropped : 0;
+    return ws ? ws->n : 0;
+}
+
+const char *mote_scene_warning(const mote_scene *scene, int i, unsigned *repeats)
+{
+    const mote__warnings *ws = scene ? scene->warnings_ : NULL;
+    if (!ws || i < 0 || i >= ws->n)
+        return NULL;
+    if (repeats)
+        *repeats = ws->count[i];
+    return ws->text[i];
 }
 
 mote__quoted mote__quote(const char *s)
@@ -125,6 +181,25 @@ uint8_t mote__unit_byte(float c)
     if (c >= 1.0f)
         return 255;
     return (uint8_t)(c * 255.0f + 0.5f);
+}
+
+void mote__scene_bounds_add(mote_scene *sc, const mote_mesh *m, bool *any)
+{
+    float w[16];
+    mote_mesh_world_matrix(m, w);
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        const float *p = m->vertices[v].position;
+        float q[3];
+        for (int k = 0; k < 3; k++)
+            q[k] = w[k] * p[0] + w[4 + k] * p[1] + w[8 + k] * p[2] + w[12 + k];
+        if (!isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]))
+            continue;
+        for (int k = 0; k < 3; k++) {
+            if (!*any || q[k] < sc->bounds_min[k]) sc->bounds_min[k] = q[k];
+            if (!*any || q[k] > sc->bounds_max[k]) sc->bounds_max[k] = q[k];
+        }
+        *any = true;
+    }
 }
 
 static void mote__free_storage(mote_scene *scene)
@@ -172,8 +247,30 @@ mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *b
     return MOTE_OK;
 }
 
+/* The triangles of every mesh the scene holds (instances, thin
+ * instances, levels of detail and hidden meshes each count: any of them
+ * may be drawn in a frame) against limits.max_triangles, which bounds
+ * the time a frame takes as max_meshes and the vertex limits do not. */
+static mote_result mote__check_triangles(mote__loader *ld)
+{
+    const mote_scene *sc = ld->scene;
+    uint64_t total = 0;
+    for (int i = 0; i < sc->mesh_count; i++)
+        total += sc->meshes[i].index_count / 3;
+    if (total > ld->lim.max_triangles)
+        return mote__fail(ld, MOTE_ERR_LIMIT, "%llu triangles in its %d meshes (instances "
+                          "count), more than the limit of %llu (max_triangles)",
+                          (unsigned long long)total, sc->mesh_count,
+                          (unsigned long long)ld->lim.max_triangles);
+    return MOTE_OK;
+}
+
 mote_result mote__loader_end(mote__loader *ld, mote_result r)
 {
+    if (r == MOTE_OK)
+        r = mote__check_triangles(ld);
+    if (ld->warnings)
+        ld->warnings->slots = NULL;   /* a temporary: no warnings come after the load */
     mote__store_release(&ld->tmp);
     if (r != MOTE_OK)
         mote_scene_free(ld->scene);

@@ -57,14 +57,23 @@ void mote__store_release(mote__store *s);
 
 /* ---- a load in progress ------------------------------------------------ */
 
-/* A distinct warning and how many times it was given. */
-typedef struct mote__warning {
-    char text[256];
-    unsigned count;
-} mote__warning;
+/* The distinct warnings a scene keeps (mote_scene_warning); those past
+ * them are counted. A file that warns once per mesh keeps them all up to
+ * here, in 12 bytes each plus their text. */
+#define MOTE__MAX_WARNINGS 4096
 
-/* More distinct warnings than scene.warning (256 bytes) can show anyway. */
-#define MOTE__MAX_WARNINGS 16
+/* Every distinct warning of a load, in the order first given, and how
+ * many times each was given: the texts and both arrays in the scene's
+ * store (what mote_scene.warnings_ points to), the lookup in the load's
+ * temporaries; allocated at the first warning. */
+typedef struct mote__warnings {
+    const char **text;
+    unsigned *count;
+    int n;
+    unsigned dropped;             /* distinct ones given past MOTE__MAX_WARNINGS, or
+                                     that could not be allocated */
+    int *slots;                   /* by the text's hash: index + 1, 0 empty */
+} mote__warnings;
 
 typedef struct mote__loader {
     char name[128];               /* the file's name, first in every message */
@@ -77,9 +86,7 @@ typedef struct mote__loader {
     mote__store tmp;              /* released when the load ends */
     mote__texture_set textures;   /* scene->textures, each file or data: URL decoded once
                                      (mote__texture_slots) */
-    mote__warning warnings[MOTE__MAX_WARNINGS]; /* in order of first appearance */
-    int warning_count;
-    unsigned warnings_dropped;    /* given after the list was full */
+    mote__warnings *warnings;     /* NULL until the first warning */
 } mote__loader;
 
 /* Starts loading size bytes into *out (zeroed): the name cleaned for
@@ -88,8 +95,9 @@ typedef struct mote__loader {
 mote_result mote__loader_begin(mote__loader *ld, const char *name, const char *base_dir,
                                const mote_limits *limits, size_t size, mote_scene *out,
                                char *message, size_t message_size);
-/* Ends the load whose result is r: the temporaries released and, when r
- * is an error, the scene freed and zeroed. Returns r. */
+/* Ends the load whose result is r: the scene's triangles checked against
+ * limits.max_triangles, the temporaries released and, when that leaves
+ * an error, the scene freed and zeroed. Returns the result. */
 mote_result mote__loader_end(mote__loader *ld, mote_result r);
 
 /* The message "NAME: what" (printf-style); returns code. */
@@ -106,8 +114,9 @@ mote_result mote__oom(mote__loader *ld, const char *at);
 mote_result mote__check_count(mote__loader *ld, const char *at, size_t count,
                               const char *what, size_t limit);
 
-/* A non-fatal note in scene->warning: each distinct one once, " (xN)" when
- * given N times, "; N more warnings" for those that do not fit. */
+/* A non-fatal note, kept for mote_scene_warning and shown in
+ * scene->warning: each distinct one once, " (xN)" when given N times,
+ * "; N more warnings" for those that do not fit. */
 void mote__warn(mote__loader *ld, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
@@ -120,6 +129,10 @@ typedef struct mote__quoted {
 } mote__quoted;
 
 mote__quoted mote__quote(const char *s);
+
+/* Widens sc->bounds_min/max to m's vertices in world space (non-finite
+ * ones skipped); *any: whether the box holds a point yet. */
+void mote__scene_bounds_add(mote_scene *sc, const mote_mesh *m, bool *any);
 
 /* A 0..1 colour channel as a byte, rounded, clamped (NaN: 0). */
 uint8_t mote__unit_byte(float c);
@@ -140,6 +153,19 @@ mote_result mote__texture_slots(mote__loader *ld, size_t n, const char *at);
  * limits.missing_texture_is_warning leaves m untextured with a warning. */
 mote_result mote__scene_texture(mote__loader *ld, const char *at, const char *key,
                                 const char *name, const char *embedded, mote_material *m);
+
+/* The same for an image held in the scene file itself (size bytes of
+ * data: a glTF buffer view), decoded each time it is named: the caller
+ * names each one once. */
+mote_result mote__scene_texture_bytes(mote__loader *ld, const char *at, const char *key,
+                                      const void *data, size_t size, mote_material *m);
+
+/* A file name written as a URL ("my%20tex.png?v=2", as web exporters
+ * write them) read as a file name: the "?query" dropped and %XX escapes
+ * decoded. An invalid escape, or %00, leaves the escapes as written.
+ * *out NULL: the same as name; else in the temporary store. */
+mote_result mote__url_decoded_name(mote__loader *ld, const char *at, const char *name,
+                                   char **out);
 
 /* ---- the loaded scene (scene.c) ---------------------------------------- */
 

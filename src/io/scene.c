@@ -5,6 +5,7 @@
  * lists the files).
  */
 #include "babylon.h"
+#include "gltf.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -136,8 +137,8 @@ static void mote__first_bytes(const unsigned char *d, size_t n, char *out, size_
         used += (size_t)snprintf(out + used, out_size - used, "%s%02x", i ? " " : "", d[i]);
 }
 
-/* The scene in data into ld->scene: a .babylon scene, or an error that
- * says what else the file is. */
+/* The scene in data into ld->scene: a .babylon or glTF scene, or an
+ * error that says what else the file is. */
 static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, size_t size)
 {
     const unsigned char *d = (const unsigned char *)data;
@@ -147,12 +148,10 @@ static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, si
     case MOTE__FORMAT_JSON:
         break;
     case MOTE__FORMAT_GLB:
-        /* Here the glTF loader is to be called for a binary glTF. */
-        return mote__fail(ld, MOTE_ERR_UNSUPPORTED, "a binary glTF file (.glb), which mote does "
-                          "not read (it reads .babylon scenes)");
+        return mote__gltf_load_glb(ld, d, size);
     case MOTE__FORMAT_OBJ:
         return mote__fail(ld, MOTE_ERR_UNSUPPORTED, "%s, which mote does not read (it reads "
-                          ".babylon scenes)", kind);
+                          ".babylon and glTF scenes)", kind);
     case MOTE__FORMAT_LFS_POINTER:
         return mote__fail(ld, MOTE_ERR_IO, "a Git LFS pointer, not the file it stands for "
                           "(git lfs pull fetches it)");
@@ -161,22 +160,17 @@ static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, si
                           "a scene names)", kind);
     case MOTE__FORMAT_UNKNOWN:
         mote__first_bytes(d, size, first, sizeof first);
-        return mote__fail(ld, MOTE_ERR_PARSE, "not a scene: neither .babylon JSON nor a format "
-                          "mote knows (it starts with bytes %s)", first);
+        return mote__fail(ld, MOTE_ERR_PARSE, "not a scene: neither .babylon nor glTF, nor a "
+                          "format mote knows (it starts with bytes %s)", first);
     }
     cJSON *root;
     MOTE__TRY(mote__json_parse(ld, data, size, &root));
     mote_result r;
     const cJSON *gltf_version = mote__json_member(mote__json_member(root, "asset"), "version");
-    if (gltf_version) {
-        /* Here the glTF loader is to be called for a glTF JSON file. */
-        mote__quoted version = mote__quote(cJSON_IsString(gltf_version)
-                                               ? gltf_version->valuestring : "?");
-        r = mote__fail(ld, MOTE_ERR_UNSUPPORTED, "a glTF file (asset.version \"%s\"), which mote "
-                       "does not read (it reads .babylon scenes)", version.s);
-    } else {
+    if (gltf_version)
+        r = mote__gltf_load_json(ld, root);
+    else
         r = mote__babylon_load(ld, root);
-    }
     cJSON_Delete(root);
     return r;
 }
@@ -328,6 +322,49 @@ void mote_scene_choose_lod(const mote_scene *scene, mote_mesh *meshes, const mot
         mote__lod_show(scene, meshes, g, mote_scene_lod_level(scene, g, meshes, camera));
 }
 
+/* The sphere around the scene's bounding box: its centre and radius (1
+ * for an empty or degenerate box). */
+static float mote__scene_sphere(const mote_scene *scene, float c[3])
+{
+    float r2 = 0.0f;
+    for (int k = 0; k < 3; k++) {
+        float d = 0.5f * (scene->bounds_max[k] - scene->bounds_min[k]);
+        c[k] = 0.5f * (scene->bounds_min[k] + scene->bounds_max[k]);
+        r2 += d * d;
+    }
+    float radius = sqrtf(r2);
+    return radius > 1e-6f && isfinite(radius) ? radius : 1.0f;
+}
+
+/* Planes that hold the sphere (c, radius) seen from dist away: far past
+ * its far side, near where it begins (at least 1/100 of the distance, and
+ * 1/1000 of far for an eye inside it). */
+static void mote__planes_for(float dist, float radius, mote_camera *cam)
+{
+    cam->zfar = dist + radius * 2.0f;
+    cam->znear = dist - radius * 1.5f;
+    if (cam->znear < dist * 0.01f)
+        cam->znear = dist * 0.01f;
+    if (cam->znear < cam->zfar * 0.001f)
+        cam->znear = cam->zfar * 0.001f;
+}
+
+void mote_scene_fit_planes(const mote_scene *scene, mote_camera *camera)
+{
+    if (!scene || !camera)
+        return;
+    float c[3];
+    float radius = mote__scene_sphere(scene, c);
+    double d2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        double d = (double)camera->position[k] - c[k];
+        d2 += d * d;
+    }
+    float dist = (float)sqrt(d2);
+    if (isfinite(dist))
+        mote__planes_for(dist, radius, camera);
+}
+
 void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *frame)
 {
     if (!frame)
@@ -335,15 +372,8 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
     memset(frame, 0, sizeof *frame);
     if (!scene)
         return;
-    float c[3], d[3], r2 = 0.0f;
-    for (int k = 0; k < 3; k++) {
-        c[k] = 0.5f * (scene->bounds_min[k] + scene->bounds_max[k]);
-        d[k] = 0.5f * (scene->bounds_max[k] - scene->bounds_min[k]);
-        r2 += d[k] * d[k];
-    }
-    float radius = sqrtf(r2);
-    if (!(radius > 1e-6f) || !isfinite(radius))
-        radius = 1.0f;
+    float c[3];
+    float radius = mote__scene_sphere(scene, c);
     if (scene->has_camera) {
         frame->camera = scene->camera;
         /* the horizontal field of view as the core's vertical one, as
@@ -372,10 +402,7 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
             cam->target[k] = c[k];
         }
         cam->fov = fov;
-        cam->znear = dist - radius * 1.5f;
-        if (cam->znear < dist * 0.01f)
-            cam->znear = dist * 0.01f;
-        cam->zfar = dist + radius * 2.0f;
+        mote__planes_for(dist, radius, cam);
     }
     int n = scene->light_count;
     if (n > MOTE_MAX_LIGHTS)

@@ -8,6 +8,10 @@
 
 #include <string.h>
 
+static mote_result mote__texture_outcome(mote__loader *ld, const char *at, const char *key,
+                                         mote_result r, const char *why, int index,
+                                         mote_material *m);
+
 /* The texture a material names (a file in the scene's folder, or with
  * embedded a data: URL), loaded once however many materials name it
  * (mote__texture_set); key names the JSON member in messages. fallback
@@ -32,7 +36,16 @@ static mote_result mote__texture_found(mote__loader *ld, const char *at, const c
             memcpy(why, fallback_why, sizeof why);
         }
     }
-    ld->scene->texture_count = set->count;
+    return mote__texture_outcome(ld, at, key, r, why, index, m);
+}
+
+/* What a texture's load (r, why) makes of m: its texture, a warning
+ * (limits.missing_texture_is_warning) or the load's failure. */
+static mote_result mote__texture_outcome(mote__loader *ld, const char *at, const char *key,
+                                         mote_result r, const char *why, int index,
+                                         mote_material *m)
+{
+    ld->scene->texture_count = ld->textures.count;
     if (r == MOTE_ERR_RANGE)
         return mote__fail(ld, r, "%s.%s: %s (textures must be inside the scene's folder; see "
                           "limits.allow_any_texture_path)", at, key, why);
@@ -43,7 +56,8 @@ static mote_result mote__texture_found(mote__loader *ld, const char *at, const c
             mote__warn(ld, "%s: %s (drawn untextured)", at, why);
             return MOTE_OK;
         }
-        return mote__fail(ld, r, "%s.%s: %s", at, key, why);
+        return mote__fail(ld, r, "%s.%s: %s (limits.missing_texture_is_warning draws its "
+                          "material untextured)", at, key, why);
     }
     m->texture = &ld->scene->textures[index];
     return MOTE_OK;
@@ -58,11 +72,7 @@ static int mote__hex_digit(char c)
     return -1;
 }
 
-/* A texture name written as a URL ("my%20tex.png?v=2", as web exporters
- * write them) read as a file name: the "?query" dropped and %XX escapes
- * decoded. An invalid escape, or %00, leaves the escapes as written.
- * NULL: the same as name. */
-static mote_result mote__url_decoded_name(mote__loader *ld, const char *at, const char *name,
+mote_result mote__url_decoded_name(mote__loader *ld, const char *at, const char *name,
                                           char **out)
 {
     *out = NULL;
@@ -123,7 +133,8 @@ mote_result mote__scene_texture(mote__loader *ld, const char *at, const char *ke
             return MOTE_OK;
         }
         return mote__fail(ld, MOTE_ERR_IO, "%s.%s: \"%s\" is a web address, which mote does "
-                          "not download (textures are files in the scene's folder, or embedded)",
+                          "not download (textures are files in the scene's folder, or embedded; "
+                          "limits.missing_texture_is_warning draws its material untextured)",
                           at, key, mote__quote(name).s);
     }
     /* decoded, the name is checked again: "%2e%2e/x.png" is not tried */
@@ -133,4 +144,16 @@ mote_result mote__scene_texture(mote__loader *ld, const char *at, const char *ke
     if (decoded && !ld->lim.allow_any_texture_path && mote__io_name_escapes(decoded, &why))
         decoded = NULL;
     return mote__texture_found(ld, at, key, name, decoded, false, m);
+}
+
+mote_result mote__scene_texture_bytes(mote__loader *ld, const char *at, const char *key,
+                                      const void *data, size_t size, mote_material *m)
+{
+    if (!ld->base_dir)
+        return MOTE_OK; /* colours only, as for data: URLs */
+    char why[256];
+    int index = -1;
+    mote_result r = mote__texture_set_memory(&ld->textures, data, size, &ld->lim, &index, why,
+                                             sizeof why);
+    return mote__texture_outcome(ld, at, key, r, why, index, m);
 }

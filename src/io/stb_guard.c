@@ -11,7 +11,7 @@
  * stack memory of the process (CVE-2023-45663 and its kin). mote cannot
  * patch the library, so each construct is found here and the image refused,
  * or, for the palettes stb_image reads past, padded with black in a copy.
- * README "Hostile input" lists what is handled and what is not.
+ * docs/security.md ("Image decoding") lists what is handled and what is not.
  *
  * Each check follows stb_image's own reading of the bytes (which format it
  * takes a file for, where its reader stands), so that what is checked is

@@ -233,11 +233,7 @@ static int mote__b64_value(unsigned char c)
     return -1;
 }
 
-/* Strict base64 (RFC 4648, no line breaks or spaces): '=' only as the last
- * one or two characters of a 4-character group, padding optional (some
- * writers omit it), no lone final character. Bytes go to out (room for
- * len / 4 * 3 + 2); *bad: the offending offset on failure. */
-static bool mote__b64_decode(const char *in, size_t len, unsigned char *out, size_t *out_len,
+bool mote__io_base64_decode(const char *in, size_t len, unsigned char *out, size_t *out_len,
                              size_t *bad)
 {
     size_t pad = 0;
@@ -317,7 +313,7 @@ static mote_result mote__data_url_load(const char *url, const mote_limits *limit
                               "out of memory decoding an embedded image of %zu characters", len);
     size_t size = 0, bad = 0;
     mote_result r;
-    if (!mote__b64_decode(b64, len, data, &size, &bad)) {
+    if (!mote__io_base64_decode(b64, len, data, &size, &bad)) {
         unsigned char c = bad < len ? (unsigned char)b64[bad] : 0;
         r = mote__io_error(message, message_size, MOTE_ERR_PARSE,
                            "invalid base64 at character %zu of %zu (0x%02x)", bad, len, c);
@@ -412,6 +408,24 @@ mote_result mote__texture_set_data_url(mote__texture_set *set, const char *url,
     if (r == MOTE_OK)
         mote__set_add(set, none, url, index);
     return r;
+}
+
+mote_result mote__texture_set_memory(mote__texture_set *set, const void *data, size_t size,
+                                     const mote_limits *limits, int *index, char *message,
+                                     size_t message_size)
+{
+    *index = -1;
+    if (set->count >= set->cap)
+        return mote__set_full(set, message, message_size);
+    mote_limits lim = mote__io_limits(limits);
+    const mote__io_file_id none = {0, 0};
+    char inner[256];
+    mote_result r = mote__texture_load_within(data, size, &lim, mote__set_budget(set, &lim),
+                                              &set->textures[set->count], inner, sizeof inner);
+    if (r != MOTE_OK)
+        return mote__io_error(message, message_size, r, "embedded image: %s", mote__why(inner));
+    mote__set_add(set, none, NULL, index);
+    return MOTE_OK;
 }
 
 void mote_texture_free(mote_texture *texture)

@@ -12,7 +12,7 @@
 FUZZ_CC      ?= clang
 FUZZ_BUILD   ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= draw texture scene folder
+FUZZ_TARGETS ?= draw texture scene gltf folder
 FUZZ_DIR     := $(FUZZ_BUILD)/clang
 FUZZ_OK      := $(FUZZ_DIR)/.fuzz-ok
 # No OpenMP here: clang's runtime is another package, and tiles run through

@@ -1187,6 +1187,43 @@ const char *mote_fuzz_scene(const uint8_t *data, size_t size)
     return err;
 }
 
+static void fz_le32(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8), p[2] = (uint8_t)(v >> 16), p[3] = (uint8_t)(v >> 24);
+}
+
+const char *mote_fuzz_gltf(const uint8_t *data, size_t size)
+{
+    if (size == 0 || data[0] != 1)
+        return mote_fuzz_scene(data, size);
+    const uint8_t *json = data + 1;
+    size_t rest = size - 1;
+    const uint8_t *nul = memchr(json, 0, rest);
+    size_t jn = nul ? (size_t)(nul - json) : rest;
+    const uint8_t *bin = nul ? nul + 1 : NULL;
+    size_t bn = nul ? rest - jn - 1 : 0;
+    size_t jp = (jn + 3) & ~(size_t)3, bp = (bn + 3) & ~(size_t)3;
+    size_t total = 12 + 8 + jp + (bin ? 8 + bp : 0);
+    uint8_t *glb = calloc(total, 1);
+    if (!glb)
+        return NULL;
+    memcpy(glb, "glTF", 4);
+    fz_le32(glb + 4, 2);
+    fz_le32(glb + 8, (uint32_t)total);
+    fz_le32(glb + 12, (uint32_t)jp);
+    memcpy(glb + 16, "JSON", 4);
+    memcpy(glb + 20, json, jn);
+    memset(glb + 20 + jn, ' ', jp - jn);
+    if (bin) {
+        uint8_t *c = glb + 20 + jp;
+        fz_le32(c, (uint32_t)bp);
+        memcpy(c + 4, "BIN", 4);
+        memcpy(c + 8, bin, bn);
+    }
+    const char *err = mote_fuzz_scene(glb, total);
+    free(glb);
+    return err;
+}
 
 /* ---- a scene's folder with links (mote_fuzz_folder) --------------------- */
 

@@ -28,6 +28,12 @@ const char *mote_fuzz_texture(const uint8_t *data, size_t size);
  * with an allocation failing part-way. */
 const char *mote_fuzz_scene(const uint8_t *data, size_t size);
 
+/* glTF through mote_fuzz_scene: the bytes as they are (a .gltf's JSON or
+ * a .glb), or, when the first byte is 1, a .glb made of the rest: its
+ * JSON up to the first NUL byte, its BIN chunk after it (so that mutations
+ * reach the JSON and the binary data behind a valid container). */
+const char *mote_fuzz_gltf(const uint8_t *data, size_t size);
+
 /* A folder tree built from the input's lines (folders, inside textures,
  * FIFOs, links to anywhere, outside/ included) and a texture name: the
  * name is opened beneath the scene's folder by openat2 and by the walk,

@@ -22,6 +22,7 @@ for t in "$@"; do
         [ -f "$f" ] || continue
         case "$t:$f" in
             scene:*.babylon|scene:*.json) cp "$f" "$seeds/" ;;
+            gltf:*.gltf|gltf:*.glb) cp "$f" "$seeds/" ;;
             texture:*.png|texture:*.jpg|texture:*.jpeg|texture:*.bmp|texture:*.tga|texture:*.gif|texture:*.ppm|texture:*.pgm|texture:*.psd|texture:*.hdr|texture:*.pic)
                 cp "$f" "$seeds/" ;;
         esac

@@ -85,3 +85,23 @@ void io_world_origin(const mote_mesh *m, float out[3])
     mote_mesh_world_matrix(m, w);
     memcpy(out, &w[12], 3 * sizeof *out);
 }
+
+void io_render_scene(const mote_scene *s, uint8_t *rgba, int width, int height)
+{
+    uint32_t *depth = malloc((size_t)width * (size_t)height * sizeof *depth);
+    TEST_ASSERT_NOT_NULL(depth);
+    mote_device dev;
+    mote_device_desc dd = {.width = width, .height = height, .color = rgba, .depth = depth,
+                           .clear_color = s->clear_color};
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &dd));
+    mote_frame_desc frame;
+    mote_scene_frame(s, (float)width / (float)height, &frame);
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    for (int i = 0; i < s->mesh_count; i++) {
+        mote_draw_desc d;
+        mote_scene_draw_desc(s, i, NULL, &d);
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s->meshes[i], &d));
+    }
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    free(depth);
+}

@@ -53,6 +53,11 @@ void io_init_color_device(mote_device *dev, uint8_t *color, int width, int heigh
  * z = -3 looking at the origin. */
 void io_begin_small_frame(mote_device *dev, uint8_t *color, int size);
 
+/* Draws a loaded scene as mote-render does (its camera and lights, or the
+ * framing ones; its draw options) into width x height RGBA pixels, with
+ * a 32-bit depth buffer. */
+void io_render_scene(const mote_scene *s, uint8_t *rgba, int width, int height);
+
 /* Where a mesh's origin lands in the world. */
 void io_world_origin(const mote_mesh *m, float out[3]);
 

@@ -25,6 +25,7 @@ fails size_with_spaces_should_be_refused 2 "--size wants WxH" "$B" "$scene" -o "
 fails size_past_int_should_be_refused 2 "--size wants WxH" "$B" "$scene" -o "$tmp/a.h" --size 99999999999x2
 fails size_past_the_limit_should_be_refused 2 "--size wants WxH" "$B" "$scene" -o "$tmp/a.h" --size 4097x2
 fails a_missing_value_should_be_named 2 "--size needs a value" "$B" "$scene" -o "$tmp/a.h" --size
+fails an_unknown_option_should_be_named_as_unknown 2 "unknown option --bogus" "$B" "$scene" -o "$tmp/a.h" --bogus
 
 fails an_unwritable_output_should_say_why any "cannot create (a new file beside it): No such file or directory" \
     "$B" "$scene" -o "$tmp/no/such/folder.h"

@@ -81,6 +81,72 @@ else
     fail $name "exit status $?: $(cat "$tmp/out")"
 fi
 
+fails a_missing_texture_should_name_the_option_that_downgrades_it any \
+    "no-such-image.png.*(--allow-missing-textures draws its material untextured)" \
+    "$R" "$tmp/missing.babylon" -o "$tmp/missing.ppm" --size 16x16 --threads 1
+
+# ---- --camera, --near, --far on a scene without a camera --------------------------
+# The framing camera's planes hold the scene from its own eye; --camera
+# fits them again from the eye given: a red quad seen from 50 away (past
+# the framing far plane, through a narrow field of view) and from 0.5 away
+# (inside its near plane) fills the view both times. --far 1 from 50 away
+# leaves it out.
+cat >"$tmp/nocam.babylon" <<'JSON'
+{"materials":[{"id":"red","disableLighting":true,"emissive":[1,0,0],"backFaceCulling":false}],
+ "meshes":[{"id":"q","materialId":"red",
+  "positions":[-1,-1,0, 1,-1,0, 1,1,0, -1,1,0],"indices":[0,1,2, 0,2,3]}]}
+JSON
+for view in 50:0.03 0.5:0.8; do
+    eye=${view%:*}
+    name=camera_from_${eye}_away_should_fit_the_planes_to_the_scene
+    if "$R" "$tmp/nocam.babylon" -o "$tmp/nocam.ppm" --size 16x16 --threads 1 \
+            --camera 0,0,-$eye:0,0,0 --fov ${view#*:} >"$tmp/out" 2>&1; then
+        centre=$(pixel "$tmp/nocam.ppm" 8 8)
+        if [ "$centre" = "255 0 0" ]; then pass $name; else fail $name "centre \"$centre\", expected red"; fi
+    else
+        fail $name "exit status $?: $(cat "$tmp/out")"
+    fi
+done
+name=far_should_set_the_far_plane
+if "$R" "$tmp/nocam.babylon" -o "$tmp/nocam.ppm" --size 16x16 --threads 1 \
+        --camera 0,0,-50:0,0,0 --fov 0.03 --far 1 --near 0.5 >"$tmp/out" 2>&1; then
+    centre=$(pixel "$tmp/nocam.ppm" 8 8)
+    if [ "$centre" = "0 0 0" ]; then pass $name; else fail $name "centre \"$centre\", expected black"; fi
+else
+    fail $name "exit status $?: $(cat "$tmp/out")"
+fi
+fails near_beyond_far_should_be_refused any "near must be below far" \
+    "$R" "$tmp/nocam.babylon" -o "$tmp/nocam.ppm" --near 2 --far 1
+
+# ---- options and warnings ------------------------------------------------------
+fails an_unknown_option_should_be_named_as_unknown any "unknown option --bogus" \
+    "$R" "$tmp/nocam.babylon" -o "$tmp/nocam.ppm" --bogus
+fails an_unknown_option_with_a_value_should_be_named_as_unknown any "unknown option --bogus" \
+    "$R" "$tmp/nocam.babylon" -o "$tmp/nocam.ppm" --bogus 3
+fails a_known_option_without_its_value_should_say_so any "\-\-size needs a value" \
+    "$R" "$tmp/nocam.babylon" -o "$tmp/nocam.ppm" --size
+# 30 meshes naming 30 missing materials: one line shows what fits and
+# points at --warnings, which prints each on a line of its own
+awk 'BEGIN { printf "{\"meshes\":["
+    for (i = 0; i < 30; i++) printf "%s{\"id\":\"m%d\",\"materialId\":\"x%d\"}", (i ? "," : ""), i, i
+    printf "]}" }' >"$tmp/warn.babylon"
+name=warnings_should_list_every_warning
+if "$R" "$tmp/warn.babylon" -o "$tmp/warn.ppm" --size 8x8 --threads 1 >"$tmp/out" 2>&1 &&
+        "$R" "$tmp/warn.babylon" -o "$tmp/warn.ppm" --size 8x8 --threads 1 --warnings \
+            >"$tmp/all" 2>&1 && "$R" "$tmp/warn.babylon" -o "$tmp/warn.ppm" --size 8x8 -v \
+            >"$tmp/v" 2>&1; then
+    lines=$(grep -c "^mote-render: warning: meshes\[[0-9]*\].materialId: \"x[0-9]*\" names no material$" "$tmp/all")
+    if ! grep -q "more warnings (--warnings lists them all)" "$tmp/out"; then
+        fail $name "the line does not point at --warnings: $(cat "$tmp/out")"
+    elif [ "$lines" -ne 30 ] || ! grep -q '"x29"' "$tmp/all" || ! cmp -s "$tmp/all" "$tmp/v"; then
+        fail $name "$lines lines of 30 with --warnings (-v the same): $(cat "$tmp/all")"
+    else
+        pass $name
+    fi
+else
+    fail $name "exit status $?: $(cat "$tmp/out" "$tmp/all")"
+fi
+
 # ---- --ortho -------------------------------------------------------------------
 # A 2 x 2 red quad 20 units ahead: --ortho 4 draws it half the image wide,
 # whatever its distance (from the scene's camera perspective would draw it
@@ -156,10 +222,11 @@ if [ -c /dev/full ]; then
     if [ -L "$tmp/full.ppm" ]; then pass $name; else fail $name "removed"; fi
 fi
 
-# 2,000 instances of a 1,000-triangle mesh: the binning arena was sized for
+# 2,000 instances of a 968-triangle mesh: the binning arena was sized for
 # every triangle twice over (1.2 GB here, and "out of memory" for larger
 # scenes); capped, the frame is drawn under a 1 GB address-space limit.
-# ASan reserves terabytes of address space: no limit then.
+# ASan reserves terabytes of address space: no limit then. Its 1.9
+# million triangles pass the default limit of the triangles drawn.
 awk 'BEGIN {
     n = 22
     printf "{\"cameras\":[{\"id\":\"c\",\"position\":[0,0,-2000],\"target\":[0,0,0]}],"
@@ -179,7 +246,8 @@ awk 'BEGIN {
 }' >"$tmp/many.babylon"
 name=two_thousand_instances_should_render_in_a_bounded_arena
 if grep -q __asan_init "$R" 2>/dev/null; then limit=unlimited; else limit=1000000; fi
-if (ulimit -v $limit && "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --size 160x120 --threads 1) \
+if (ulimit -v $limit && "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --size 160x120 --threads 1 \
+        --max-triangles 2000000) \
         >"$tmp/out" 2>&1; then
     # past the 15-byte header "P6\n160 120\n255\n", some byte not 0
     if [ "$(od -An -tu1 -j 15 "$tmp/many.ppm" | tr -d ' 0\n' | wc -c)" -gt 0 ]; then
@@ -190,5 +258,10 @@ if (ulimit -v $limit && "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --size 160x1
 else
     fail $name "$(cat "$tmp/out")"
 fi
+
+fails the_triangle_limit_should_be_named any "1936000 triangles in its 2000 meshes (instances count), more than the limit of 1048576 (max_triangles)" \
+    "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --size 160x120 --threads 1
+fails max_triangles_should_be_a_count any "\-\-max-triangles \"0\": expected a count" \
+    "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --max-triangles 0
 
 summary
