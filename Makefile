@@ -73,8 +73,7 @@ $(LIB): $(LIB_OBJ)
 
 # The core must stay freestanding: compile it as a bare-metal target would.
 freestanding: | $(DEPS_OK)
-	$(CC) -std=c99 -ffreestanding -fsyntax-only $(WARN) -Iinclude -Isrc \
-	    $$(pkg-config --cflags cglm) $(CORE_SRC)
+	$(CC) -std=c99 -ffreestanding -fsyntax-only $(WARN) -Iinclude -Isrc $(CORE_SRC)
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/include/mote $(DESTDIR)$(PREFIX)/lib/pkgconfig
@@ -93,6 +92,7 @@ help:
 	@echo "make bench      time against error, tables and plot (tests/bench)"
 	@echo "make profile    where a frame's instructions go, by stage (Callgrind)"
 	@echo "make accuracy   error of every mode against the reference renderer"
+	@echo "make render-matrix  a hash per configuration (RENDER_MATRIX_REF=file compares)"
 	@echo "make cross      build the core for Cortex-M0+, Cortex-M4F and RV32IMAC, sizes and stack"
 	@echo "make test-embedded  render on emulated M0+, M4F and RV32 boards (qemu) and compare"
 	@echo "make bench-embedded  instructions per frame on the emulated boards, RAM, flash"

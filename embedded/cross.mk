@@ -9,11 +9,10 @@
 #   make bench-embedded instructions per frame (embedded/bench.mk)
 #
 # The cross compilers see no C library: -nostdinc -nostdlib, the compiler's
-# own freestanding headers, embedded/include/string.h, a folder holding only
-# a link to the host's cglm headers, and libgcc for soft float and 64-bit
-# division. The core is built with -DMOTE_SPECIALISE_SPANS=0 (one generic
-# span loop, small flash) and the firmware with -DMOTE_MAX_DRAWS=8 (a small
-# mote_device).
+# own freestanding headers, embedded/include/string.h and libgcc for soft
+# float and 64-bit division. The core is built with its defaults for -Os
+# (one generic span loop, small flash) and the firmware with
+# -DMOTE_MAX_DRAWS=8 (a small mote_device).
 #
 # Two archives per target: libmote.a with every feature, and libmote-fw.a,
 # the firmware profile, with the features the example does not use left out
@@ -51,9 +50,8 @@ CROSS_LD.rv32imac         := embedded/riscv/rv32.ld
 CROSS_CFLAGS := -std=c99 -Os -g -ffp-contract=off -ffreestanding -nostdinc \
                 -ffunction-sections -fdata-sections $(WARN) \
                 -fstack-usage -fcallgraph-info=su \
-                -Iinclude -Isrc -Iembedded/include -I$(CROSS_DIR)/sysinclude \
+                -Iinclude -Isrc -Iembedded/include \
                 -DMOTE_MAX_DRAWS=8
-CROSS_CORE_FLAGS := -DMOTE_SPECIALISE_SPANS=0
 CROSS_PROFILE := -DMOTE_ENABLE_LINES=0 -DMOTE_ENABLE_BINNING=0 -DMOTE_ENABLE_BILINEAR=0 \
                  -DMOTE_ENABLE_SUBSPAN=0 -DMOTE_ENABLE_VERTEX_COLORS=0 -DMOTE_ENABLE_LIGHT_FALLOFF=0 \
                  -DMOTE_ENABLE_ORTHOGRAPHIC=0 -DMOTE_ENABLE_EMISSIVE=0
@@ -89,16 +87,10 @@ FW_HOST_SRC := embedded/firmware/platform_host.c embedded/firmware/util.c \
              embedded/firmware/lcd.c embedded/firmware/lcd_fake.c
 FW_DEPS   := $(wildcard embedded/firmware/*.h embedded/include/*.h include/mote/*.h src/core/*.h) embedded/cross.mk
 
-CROSS_CGLM := $(CROSS_DIR)/sysinclude/cglm
-
 .PHONY: cross cross-build test-embedded $(foreach t,$(CROSS_TARGETS) host,fw-test-$(t))
 
 cross: cross-build
 	@sh embedded/cross-sizes.sh $(CROSS_DIR) $(FW_EXAMPLE) $(CROSS_TARGETS)
-
-$(CROSS_CGLM): | $(DEPS_OK)
-	@mkdir -p $(dir $@)
-	ln -sfn $$(pkg-config --variable=includedir cglm)/cglm $@
 
 # A scene baked once for every target and the host.
 define FW_SCENE_RULES
@@ -125,16 +117,16 @@ CROSS_PROF_OBJ.$(1) := $$(patsubst src/core/%.c,$(CROSS_DIR)/$(1)/core-fw/%.o,$$
 CROSS_FW_OBJ.$(1)   := $$(patsubst embedded/%,$(CROSS_DIR)/$(1)/fw/%.o,$$(FW_SRC) $$(CROSS_START.$(1)))
 CROSS_INCLUDE.$(1)   = -isystem $$$$($$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) -print-file-name=include)
 
-$(CROSS_DIR)/$(1)/core/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) embedded/cross.mk | $(CROSS_CGLM)
+$(CROSS_DIR)/$(1)/core/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) embedded/cross.mk
 	@mkdir -p $$(dir $$@)
-	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_CORE_FLAGS) $$(CROSS_INCLUDE.$(1)) -c $$< -o $$@
+	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_INCLUDE.$(1)) -c $$< -o $$@
 
-$(CROSS_DIR)/$(1)/core-fw/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) embedded/cross.mk | $(CROSS_CGLM)
+$(CROSS_DIR)/$(1)/core-fw/%.o: src/core/%.c $$(wildcard include/mote/*.h src/core/*.h embedded/include/*.h) embedded/cross.mk
 	@mkdir -p $$(dir $$@)
-	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_CORE_FLAGS) $$(CROSS_PROFILE) \
+	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_PROFILE) \
 	    $$(CROSS_INCLUDE.$(1)) -c $$< -o $$@
 
-$(CROSS_DIR)/$(1)/fw/%.o: embedded/% $$(FW_DEPS) | $(CROSS_CGLM)
+$(CROSS_DIR)/$(1)/fw/%.o: embedded/% $$(FW_DEPS)
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_PROFILE) -Iembedded/firmware \
 	    $$(CROSS_INCLUDE.$(1)) -c $$< -o $$@
@@ -161,7 +153,7 @@ $(foreach t,$(CROSS_TARGETS),$(eval $(call CROSS_TARGET_RULES,$(t))))
 # map (for the per-archive sizes).
 define FW_VARIANT_RULES
 $(CROSS_DIR)/$(1)/$(2)/main.o: embedded/firmware/main.c $(CROSS_DIR)/scene/$(call fw_scene,$(2))/scene.h \
-        $$(FW_DEPS) | $(CROSS_CGLM)
+        $$(FW_DEPS)
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC.$(1)) $$(CROSS_ARCH.$(1)) $$(CROSS_CFLAGS) $$(CROSS_PROFILE) -Iembedded/firmware \
 	    -I$(CROSS_DIR)/scene/$(call fw_scene,$(2)) -DFW_BAND=$(call fw_rows,$(2)) -DFW_LCD=$(call fw_lcd,$(2)) -DFW_BINS=$(call fw_bins,$(2)) \
@@ -185,7 +177,7 @@ CROSS_HOST_CORE := $(patsubst src/core/%.c,$(CROSS_DIR)/host/core/%.o,$(CORE_SRC
 
 $(CROSS_DIR)/host/core/%.o: src/core/%.c $(wildcard include/mote/*.h src/core/*.h) embedded/cross.mk | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(CROSS_HOST_CFLAGS) $$(pkg-config --cflags cglm) -c $< -o $@
+	$(CC) $(CROSS_HOST_CFLAGS) -c $< -o $@
 
 define FW_HOST_VARIANT_RULES
 $(CROSS_DIR)/host/$(1)/mote-firmware: embedded/firmware/main.c $(FW_HOST_SRC) $(CROSS_HOST_CORE) \

@@ -36,8 +36,8 @@ $(BUILD)/tests/test_%: $(BUILD)/tests/obj/test_%.o $(TEST_SUP_OBJ) $(BUILD)/test
 
 # test_setup_portable compiles src/core/setup.c a second time (without __int128)
 $(BUILD)/tests/obj/test_setup_portable.o: src/core/setup.c
-# test_vertex_vector compiles src/core/geometry.c a second time (its static snaps)
-$(BUILD)/tests/obj/test_vertex_vector.o: src/core/geometry.c
+# test_vertex compiles src/core/vertex.c a second time (its static conversions and lighting)
+$(BUILD)/tests/obj/test_vertex.o: src/core/vertex.c
 
 # The glTF scenes tests/test_gltf.c reads, written by tools/gen_gltf.c.
 GLTF_TEST_DIR := $(BUILD)/gltf

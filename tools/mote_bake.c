@@ -133,13 +133,24 @@ static void put_floats(baker *b, const float *v, int n)
     put(b, "}");
 }
 
+/* The enumerator of a texture format: MOTE_FORMAT_ and its name in capitals. */
 static const char *format_name(mote_format f)
 {
-    switch (f) {
-    case MOTE_FORMAT_RGB565: return "MOTE_FORMAT_RGB565";
-    case MOTE_FORMAT_GREY8: return "MOTE_FORMAT_GREY8";
-    default: return "MOTE_FORMAT_RGBA8888";
-    }
+    static char id[64];
+    const char *n = mote_format_name(f);
+    snprintf(id, sizeof id, "MOTE_FORMAT_%s", n ? n : "RGBA8888");
+    for (char *c = id; *c; c++)
+        *c = (char)toupper((unsigned char)*c);
+    return id;
+}
+
+/* The texture format of that name (mote_format_name), or DEFAULT. */
+static mote_format texture_format(const char *name)
+{
+    for (int f = MOTE_FORMAT_DEFAULT + 1; f < MOTE_FORMAT_COUNT; f++)
+        if (mote_format_is_texture((mote_format)f) && !strcmp(name, mote_format_name((mote_format)f)))
+            return (mote_format)f;
+    return MOTE_FORMAT_DEFAULT;
 }
 
 static const char *wrap_name(mote_wrap w)
@@ -606,7 +617,7 @@ static const char *name_problem(const char *s)
  * RGB565, "0," a byte otherwise. */
 static size_t texel_chars(mote_format format)
 {
-    return format == MOTE_FORMAT_RGB565 ? 7 : 2 * (size_t)mote_format_bytes(format);
+    return mote_format_bytes(format) == 2 ? 7 : 2 * (size_t)mote_format_bytes(format);
 }
 
 /* "WxH", each 1..MOTE_MAX_SIZE, nothing else (sscanf's %d was undefined
@@ -647,13 +658,8 @@ int main(int argc, char **argv)
             name = argv[++i];
         } else if (!strcmp(a, "--format") && has_value) {
             const char *v = argv[++i];
-            if (!strcmp(v, "rgb565"))
-                format = MOTE_FORMAT_RGB565;
-            else if (!strcmp(v, "rgba8888"))
-                format = MOTE_FORMAT_RGBA8888;
-            else if (!strcmp(v, "grey8"))
-                format = MOTE_FORMAT_GREY8;
-            else {
+            format = texture_format(v);
+            if (format == MOTE_FORMAT_DEFAULT) {
                 fprintf(stderr, "mote-bake: unknown texture format '%s' (rgb565, rgba8888, grey8)\n", v);
                 return 2;
             }

@@ -133,8 +133,8 @@
  *   (edge walking, interpolation, texturing, depth, pixel formats) is
  *   integer. On a core without an FPU (Cortex-M0+) the float work is done
  *   by libgcc's soft-float routines, per vertex and per triangle, never per
- *   pixel: they and 64-bit division add about 12.5 KB of flash there
- *   (`make cross` prints it), against 3 KB on a Cortex-M4F.
+ *   pixel: `make cross` prints the flash they and 64-bit division take
+ *   (docs/embedded.md).
  */
 #ifndef MOTE_H
 #define MOTE_H
@@ -149,41 +149,41 @@ extern "C" {
 
 /* ---- compile-time options ---------------------------------------------- */
 
-/* Largest width and height of a device. */
 #ifndef MOTE_MAX_SIZE
+/* Largest width and height of a device. */
 #define MOTE_MAX_SIZE 4096
 #endif
 
-/* Draws that band mode (or a full-frame device without arena) can record per
- * frame. Each costs about 200 bytes inside mote_device. */
 #ifndef MOTE_MAX_DRAWS
+/* Draws that band mode (or a full-frame device without arena) can record
+ * per frame. Each costs about 200 bytes inside mote_device. */
 #define MOTE_MAX_DRAWS 64
 #endif
 
-/* Guard band: geometry is clipped to +-2^MOTE_GUARD_BITS pixels around the
- * viewport centre before snapping. */
 #ifndef MOTE_GUARD_BITS
+/* Guard band: geometry is clipped to +-2^MOTE_GUARD_BITS pixels around
+ * the viewport centre before snapping. */
 #define MOTE_GUARD_BITS 13
 #endif
 
+#ifndef MOTE_MAX_PARENTS
 /* Parents a mesh's world matrix follows (mote_mesh.parent): a longer
  * chain is cut there, which also ends a cyclic one. The scene loader
  * refuses files whose chains are longer. */
-#ifndef MOTE_MAX_PARENTS
 #define MOTE_MAX_PARENTS 64
 #endif
 
-/* Lights per frame. */
 #ifndef MOTE_MAX_LIGHTS
+/* Lights per frame. */
 #define MOTE_MAX_LIGHTS 4
 #endif
 
+#ifndef MOTE_PIECE_MIN
 /* Binned mode with parallel_for: a draw of at least twice this many
  * triangles (and more than its share of the frame's) is cut into pieces
  * that are set up on several threads, and each thread's group of draws
  * holds at least this many (fewer are set up on the calling thread). The
  * fuzz build lowers it, so that its small draws are cut too. */
-#ifndef MOTE_PIECE_MIN
 #define MOTE_PIECE_MIN 128
 #endif
 
@@ -191,54 +191,42 @@ extern "C" {
  * header is seen, for the library and its users alike; all default to 1).
  * Left out, a feature costs no flash, and asking for it at run time gets
  * MOTE_ERR_UNSUPPORTED and draws nothing; everything else draws the same
- * bytes. On a Cortex-M0+ each saves about this much of the core's 22 KB
- * (-Os, one left out at a time; `make cross` prints the sizes of the
- * firmware profile, which turns all eight off):
- *   MOTE_ENABLE_LINES     ~0.8 KB  MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS
- *                                  (mote_draw refuses them)
- *   MOTE_ENABLE_BINNING   ~4.2 KB  desc.arena, tile binning and parallel
- *                                  setup (mote_device_init refuses an arena)
- *   MOTE_ENABLE_BILINEAR  ~0.3 KB  MOTE_FILTER_BILINEAR (mote_draw refuses it)
- *   MOTE_ENABLE_SUBSPAN   ~0.3 KB  MOTE_PERSPECTIVE_SUBSPAN (mote_draw
- *                                  refuses it)
- *   MOTE_ENABLE_VERTEX_COLORS
- *                         ~0.2 KB  mote_mesh.colors (mote_draw refuses any
- *                                  draw of a mesh that has them)
- *   MOTE_ENABLE_LIGHT_FALLOFF
- *                         ~0.8 KB  MOTE_LIGHT_SPOT and mote_light.range;
- *                                  the one exception to the rule above:
- *                                  left out, a spot light lights nothing
- *                                  and a range is ignored (the check that
- *                                  would refuse them costs 48 bytes, which
- *                                  the Cortex-M0+ profile does not have)
- *   MOTE_ENABLE_ORTHOGRAPHIC
- *                         ~0.3 KB  MOTE_PROJECTION_ORTHOGRAPHIC (mote_begin
- *                                  refuses it)
- *   MOTE_ENABLE_EMISSIVE  ~40 B    mote_material.emissive; left out, it is
- *                                  ignored, as the falloff is (a check
- *                                  that refused it would cost as much) */
+ * bytes. docs/embedded.md gives the flash each saves on a Cortex-M0+. */
 #ifndef MOTE_ENABLE_LINES
+/* MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS (mote_draw refuses them). */
 #define MOTE_ENABLE_LINES 1
 #endif
 #ifndef MOTE_ENABLE_BINNING
+/* desc.arena: tile binning and parallel setup (mote_device_init refuses
+ * an arena). */
 #define MOTE_ENABLE_BINNING 1
 #endif
 #ifndef MOTE_ENABLE_BILINEAR
+/* MOTE_FILTER_BILINEAR (mote_draw refuses it). */
 #define MOTE_ENABLE_BILINEAR 1
 #endif
 #ifndef MOTE_ENABLE_SUBSPAN
+/* MOTE_PERSPECTIVE_SUBSPAN (mote_draw refuses it). */
 #define MOTE_ENABLE_SUBSPAN 1
 #endif
 #ifndef MOTE_ENABLE_VERTEX_COLORS
+/* mote_mesh.colors (mote_draw refuses any draw of a mesh that has them). */
 #define MOTE_ENABLE_VERTEX_COLORS 1
 #endif
 #ifndef MOTE_ENABLE_LIGHT_FALLOFF
+/* MOTE_LIGHT_SPOT and mote_light.range. The one exception to the rule
+ * above: left out, a spot light lights nothing and a range is ignored
+ * (the check that would refuse them costs more flash than the smallest
+ * profile has to spare). */
 #define MOTE_ENABLE_LIGHT_FALLOFF 1
 #endif
 #ifndef MOTE_ENABLE_ORTHOGRAPHIC
+/* MOTE_PROJECTION_ORTHOGRAPHIC (mote_begin refuses it). */
 #define MOTE_ENABLE_ORTHOGRAPHIC 1
 #endif
 #ifndef MOTE_ENABLE_EMISSIVE
+/* mote_material.emissive; left out, it is ignored, as the falloff is (a
+ * check that refused it would cost as much as the feature). */
 #define MOTE_ENABLE_EMISSIVE 1
 #endif
 
@@ -289,6 +277,11 @@ typedef enum mote_depth_format {
 int mote_format_bytes(mote_format format);
 /* Bytes per pixel of a depth format (0 for NONE or invalid). */
 int mote_depth_format_bytes(mote_depth_format format);
+/* A colour format's name as the tools take it ("rgba8888", "rgb565",
+ * "rgb565_swapped", "grey8"); NULL for an invalid one. */
+const char *mote_format_name(mote_format format);
+/* Whether a texture may have this format (RGBA8888, RGB565, GREY8). */
+bool mote_format_is_texture(mote_format format);
 
 typedef struct mote_rgba { uint8_t r, g, b, a; } mote_rgba;
 
@@ -373,8 +366,8 @@ typedef struct mote_mesh {
      * r, g, b count: alpha is ignored (mote does not blend). Points and
      * wireframe keep mote_draw_desc.point_color. A build with
      * MOTE_ENABLE_VERTEX_COLORS 0 refuses a draw of a mesh that has them.
-     * Last in the struct, after the fields every draw reads: Thumb-1
-     * (Cortex-M0+) loads reach only small offsets. */
+     * Last, after the fields every draw reads (shorter code on cores with
+     * short load offsets). */
     const mote_rgba *colors;
 } mote_mesh;
 
@@ -435,6 +428,13 @@ typedef struct mote_light {
 
 /* ---- frames and draws -------------------------------------------------- */
 
+/* mote_frame_desc: what mote_begin takes; zero is the default of each field.
+ *   .camera                 see mote_camera (up {0,1,0}, fov 0.8, near 0.1, far 100)
+ *   .lights, .light_count   none: only the ambient colour lights
+ *   .ambient                {0,0,0}
+ *   .keep_color             false: the colour buffer is cleared
+ *   .keep_depth             false: the depth buffer is cleared
+ */
 typedef struct mote_frame_desc {
     mote_camera camera;
     mote_light lights[MOTE_MAX_LIGHTS];
@@ -482,7 +482,19 @@ typedef enum mote_cull {
     MOTE_CULL_COUNT
 } mote_cull;
 
-/* Per-draw options; a zeroed struct (or NULL) gives the defaults. */
+/* mote_draw_desc: what mote_draw takes; a zeroed struct (or NULL) gives
+ * the defaults.
+ *   .mode                   MOTE_MODE_TEXTURED (Gouraud without a texture)
+ *   .cull                   MOTE_CULL_BACK
+ *   .front_face             MOTE_FRONT_CCW
+ *   .perspective            MOTE_PERSPECTIVE_CORRECT
+ *   .subspan_log2           3 (SUBSPAN: exact every 8 pixels; at most 6)
+ *   .filter                 MOTE_FILTER_NEAREST
+ *   .no_depth_test          false
+ *   .no_depth_write         false
+ *   .unlit                  false
+ *   .point_color            the material colour (white without one)
+ */
 typedef struct mote_draw_desc {
     mote_mode mode;
     mote_cull cull;
@@ -528,6 +540,25 @@ typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
                                       const int32_t y[3], const float z[3],
                                       const float w[3]);
 
+/* mote_device_desc: what mote_device_init takes; zero is the default of
+ * each field (mote_device_desc_defaults fills them in).
+ *   .width, .height         required, 1..MOTE_MAX_SIZE
+ *   .color_format           MOTE_FORMAT_RGBA8888
+ *   .color                  required: band_height rows of color_stride bytes
+ *   .color_stride           width x the format's bytes per pixel
+ *   .depth_format           MOTE_DEPTH_FORMAT_32
+ *   .depth                  required but with MOTE_DEPTH_FORMAT_NONE
+ *   .clear_color            {0,0,0,0}
+ *   .clear_depth            1.0 (far)
+ *   .subpixel_bits          8 (4..8)
+ *   .band_height            height: the whole frame at once
+ *   .flush, .flush_user     none; required in band mode
+ *   .arena, .arena_size     none: no binning
+ *   .tile_size              64 (a power of two, 8..256)
+ *   .clear_drawn_tiles_only false
+ *   .parallel_for, .parallel_user          none: tiles in order on this thread
+ *   .triangle_hook, .triangle_hook_user    none
+ */
 typedef struct mote_device_desc {
     int width, height;
     mote_format color_format;

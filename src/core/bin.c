@@ -36,7 +36,7 @@ size_t mote__bin_table_bytes(const mote_device *dev)
     return mote__align((size_t)dev->bin.tiles_x * (size_t)dev->bin.tiles_y * sizeof(mote__tile));
 }
 
-void mote__bin_reset(mote_device *dev)
+static void mote__bin_reset(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
     b->tiles = b->base;
@@ -49,12 +49,9 @@ void mote__bin_reset(mote_device *dev)
 
 /* The tile jobs read the triangles on other cores, which leaves the
  * arena's lines shared between caches; the next frame's setup writes the
- * same bytes and then waited for each line's ownership one store at a
- * time. With 2 threads on a 2-core VM where a line takes 200-650 ns to
- * move between cores, the serial draw phase took 145 against 107 us
- * (Suzanne at 1080p; 10x10 Suzannes: 12-13 against 10 ms). A memset of
- * those bytes, whose stores overlap, takes the lines back for 3 us (0.3
- * ms), and the draw phase is as fast as on one thread again. */
+ * same bytes and would wait for each line's ownership one store at a
+ * time. A memset of those bytes, whose stores overlap, takes the lines
+ * back at once (docs/performance.md). */
 void mote__bin_begin(mote_device *dev)
 {
     mote__bin *b = &dev->bin;
@@ -84,7 +81,7 @@ void mote__bin_mark_all_drawn(mote_device *dev)
         memset(b->drawn_now, 1, (size_t)b->tiles_x * (size_t)b->tiles_y);
 }
 
-void *mote__bin_alloc(mote_device *dev, size_t bytes)
+static void *mote__bin_alloc(mote_device *dev, size_t bytes)
 {
     mote__bin *b = &dev->bin;
     bytes = mote__align(bytes);
@@ -95,7 +92,7 @@ void *mote__bin_alloc(mote_device *dev, size_t bytes)
     return p;
 }
 
-void *mote__bin_top_alloc(mote_device *dev, size_t bytes)
+static void *mote__bin_top_alloc(mote_device *dev, size_t bytes)
 {
     mote__bin *b = &dev->bin;
     bytes = mote__align(bytes);
@@ -106,12 +103,12 @@ void *mote__bin_top_alloc(mote_device *dev, size_t bytes)
     return b->base + b->top;
 }
 
-void mote__bin_top_release(mote_device *dev, size_t bytes)
+static void mote__bin_top_release(mote_device *dev, size_t bytes)
 {
     dev->bin.top += mote__align(bytes);
 }
 
-bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
+static bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
 {
     mote__bin *b = &dev->bin;
     int s = b->tile_shift;
@@ -123,9 +120,9 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
     if (need > b->top - b->used)
         return false;
     mote__tri *copy = (mote__tri *)mote__bin_alloc(dev, bytes);
-    /* nothing to copy when it was set up in place (mote__emit, in speed
-     * builds); else by its size's constant: one memcpy of a variable size
-     * made the dense grid 1.046x slower (9 runs) */
+    /* nothing to copy when it was set up in place (mote__bin_sink_place,
+     * in speed builds); else by its size's constant, which a memcpy of a
+     * variable size cannot unroll */
     if (!MOTE_SHORTCUTS || copy != t) {
         if (bytes == MOTE__TRI_BYTES(0))
             memcpy(copy, t, MOTE__TRI_BYTES(0));
@@ -162,8 +159,7 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
 /* Asks the cache for a busy tile's colour and depth rows, a prefetch per
  * line, before its triangles: the frame's clear has pushed them out, and
  * a tile of small triangles otherwise waits for each line at the triangle
- * that first touches it (grid at 1080p, one thread: about 3% of the frame;
- * Suzanne alone: no change). Only on hosts with data caches and a
+ * that first touches it. Only on hosts with data caches and a
  * prefetch instruction; on a microcontroller it is nothing. */
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) \
                           || (defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'A'))
@@ -175,8 +171,8 @@ bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
 static void mote__warm_tile(const mote__target *tg, mote__rect r)
 {
 #if MOTE__PREFETCH
-    const size_t cbytes = (size_t)mote_format_bytes(tg->format);
-    const size_t dbytes = (size_t)mote_depth_format_bytes(tg->depth_format);
+    const size_t cbytes = (size_t)mote__format_bytes(tg->format);
+    const size_t dbytes = (size_t)mote__depth_format_bytes(tg->depth_format);
     const size_t cw = cbytes * (size_t)(r.x1 - r.x0), dw = dbytes * (size_t)(r.x1 - r.x0);
     for (int y = r.y0; y < r.y1; y++) {
         const uint8_t *c = tg->color + (size_t)(y - tg->y0) * (size_t)tg->stride + cbytes * (size_t)r.x0;
@@ -251,6 +247,128 @@ void mote__bin_flush(mote_device *dev)
     b->top = top;                 /* a draw in progress keeps its scratch */
 }
 
+/* ---- the sink: triangles into the arena ----------------------------------- */
+
+/* The binner's side of a draw: the device it bins for, and the scratch it
+ * took from the top of the arena for the draw's vertex cache. */
+typedef struct mote__bin_sink {
+    mote__sink sink;              /* first: the stage sees only this */
+    mote_device *dev;
+    size_t scratch;
+} mote__bin_sink;
+
+/* A group's slice is full: the whole batch goes serial (mote__bin_run_draws). */
+static void mote__bin_overflow(mote__bin_sink *bs)
+{
+    bs->dev->bin.overflowed = true;
+    bs->sink.full = true;
+}
+
+static bool mote__bin_sink_begin(mote__sink *s, const mote__raster_state *local)
+{
+    mote__bin_sink *bs = (mote__bin_sink *)(void *)s;
+    mote_device *dev = bs->dev;
+    mote__raster_state *rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
+    if (!rs && dev->bin.group) {
+        mote__bin_overflow(bs);
+        return false;
+    }
+    if (!rs) {
+        mote__bin_flush(dev);
+        rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
+    }
+    if (!rs)
+        return false;
+    *rs = *local;
+    s->rs = rs;
+    return true;
+}
+
+/* The draw's vertex cache: a group's own (so that its slice holds
+ * triangles only), or the top of the arena. */
+static void *mote__bin_sink_vertices(mote__sink *s, size_t bytes)
+{
+    mote__bin_sink *bs = (mote__bin_sink *)(void *)s;
+    mote__bin *b = &bs->dev->bin;
+    if (b->group)
+        return bytes <= b->cache_size ? b->cache : NULL;
+    void *p = mote__bin_top_alloc(bs->dev, bytes);
+    bs->scratch = p ? bytes : 0;
+    return p;
+}
+
+#if MOTE_SHORTCUTS
+/* Where mote__bin_triangle will keep the next triangle: the arena's first
+ * free bytes, when a whole record fits between them and the scratch
+ * above; NULL otherwise. Set up there, a binned triangle is not copied;
+ * its record ends where its planes do, and what setup wrote past that is
+ * free space again. */
+static mote__tri *mote__bin_sink_place(mote__sink *s)
+{
+    mote__bin *b = &((mote__bin_sink *)(void *)s)->dev->bin;
+    return b->top - b->used >= sizeof(mote__tri) ? (mote__tri *)(void *)(b->base + b->used) : NULL;
+}
+#endif
+
+static void mote__bin_sink_triangle(mote__sink *s, mote__tri *t)
+{
+    mote__bin_sink *bs = (mote__bin_sink *)(void *)s;
+    mote_device *dev = bs->dev;
+    if (mote__bin_triangle(dev, t))
+        return;
+    if (dev->bin.group) {
+        mote__bin_overflow(bs);
+        return;
+    }
+    /* out of the arena before the flush reuses it */
+    mote__tri local = *t;
+    /* arena full: draw what is binned, then bin this one afresh, with a
+     * fresh copy of the draw's raster state for it and the draw's next
+     * triangles */
+    mote__bin_flush(dev);
+    dev->stats.arena_flushes++;
+    mote__raster_state *rs = (mote__raster_state *)mote__bin_alloc(dev, sizeof *rs);
+    if (rs) {
+        *rs = *s->rs;
+        s->rs = rs;
+        local.rs = rs;
+    }
+    if (!rs || !mote__bin_triangle(dev, &local)) {
+        /* a single triangle does not fit: draw it directly */
+        mote__target tg;
+        mote__counts count = {0, 0};
+        mote__full_target(dev, &tg, &count);
+        mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
+        mote__raster_tri(&local, &tg, all, dev->desc.subpixel_bits);
+        mote__add_counts(dev, &count);
+        mote__bin_mark_all_drawn(dev);   /* not through the tiles */
+    }
+}
+
+/* Bins a draw, or a piece of one, into dev's arena. */
+static mote_result mote__bin_piece(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
+                                   const mote__piece *piece)
+{
+    mote__bin_sink bs;
+    memset(&bs, 0, sizeof bs);
+    bs.sink.begin = mote__bin_sink_begin;
+    bs.sink.vertices = mote__bin_sink_vertices;
+#if MOTE_SHORTCUTS
+    bs.sink.place = mote__bin_sink_place;
+#endif
+    bs.sink.triangle = mote__bin_sink_triangle;
+    bs.dev = dev;
+    mote_result r = mote__process_draw(dev, mesh, desc, &bs.sink, piece);
+    if (bs.scratch)
+        mote__bin_top_release(dev, bs.scratch);
+    return r;
+}
+
+mote_result mote__bin_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc)
+{
+    return mote__bin_piece(dev, mesh, desc, NULL);
+}
+
 /* ---- binning in parallel ------------------------------------------------ */
 
 /* With desc.parallel_for (and no triangle hook), mote_draw records binned
@@ -274,8 +392,7 @@ void mote__bin_flush(mote_device *dev)
  * flushes). */
 #define MOTE__BIN_GROUPS 16
 /* A cut draw's vertices are prepared in tasks of at least this many. Its
- * pieces have at least MOTE_PIECE_MIN triangles (mote.h: 64 and 256 were
- * no faster than 128 for Suzanne at 1080p on 2 threads). */
+ * pieces have at least MOTE_PIECE_MIN triangles (mote.h). */
 #define MOTE__VERTEX_CHUNK 256
 
 typedef struct mote__part {
@@ -317,9 +434,7 @@ static uint32_t mote__draw_triangles(const mote__draw *d)
  * copy, which stops when its slice is full). */
 static mote_result mote__bin_part(mote_device *target, const mote_device *dev, int draw, const mote__piece *piece)
 {
-    mote__rect all = {0, 0, dev->desc.width, dev->desc.height};
-    return mote__process_draw(target, dev->draws[draw].mesh, &dev->draws[draw].desc, MOTE__SINK_BIN, NULL, all,
-                              piece);
+    return mote__bin_piece(target, dev->draws[draw].mesh, &dev->draws[draw].desc, piece);
 }
 
 /* A step's task index past its own tasks: a stripe of the frame's clear. */

@@ -22,30 +22,6 @@ const char *mote_result_string(mote_result result)
     return s;
 }
 
-int mote_format_bytes(mote_format format)
-{
-    return mote__format_bytes(format);
-}
-
-int mote_depth_format_bytes(mote_depth_format format)
-{
-    switch (format) {
-    case MOTE_DEPTH_FORMAT_DEFAULT:
-    case MOTE_DEPTH_FORMAT_32: return 4;
-    case MOTE_DEPTH_FORMAT_16: return 2;
-    default: return 0;
-    }
-}
-
-size_t mote_band_bytes(int width, int band_height, mote_format color, mote_depth_format depth)
-{
-    /* no device is larger: the product then fits a 32-bit size_t */
-    if (width <= 0 || band_height <= 0 || width > MOTE_MAX_SIZE || band_height > MOTE_MAX_SIZE)
-        return 0;
-    return (size_t)width * (size_t)band_height
-         * (size_t)(mote_format_bytes(color) + mote_depth_format_bytes(depth));
-}
-
 /* The bands of a frame: ceil(height / band_height). */
 static int mote__band_count(int height, int band_height)
 {
@@ -168,128 +144,7 @@ const mote_stats *mote_device_stats(const mote_device *dev)
     return dev ? &dev->stats : NULL;
 }
 
-/* ---- targets and clearing ---------------------------------------------- */
-
-void mote__add_counts(mote_device *dev, const mote__counts *counts)
-{
-    dev->stats.pixels_tested += counts->tested;
-    dev->stats.pixels_written += counts->written;
-}
-
-void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *counts)
-{
-    tg->color = (uint8_t *)dev->desc.color;
-    tg->stride = dev->desc.color_stride;
-    tg->depth = dev->desc.depth;
-    tg->width = dev->desc.width;
-    tg->y0 = 0;
-    tg->format = dev->desc.color_format;
-    tg->depth_format = dev->desc.depth_format;
-    tg->counts = counts;
-}
-
-/* Fills rows x row_bytes at p (rows stride bytes apart) with copies of the
- * element of elem_bytes already at p; rows that touch are one block. Each
- * memcpy doubles what is filled, up to MOTE__FILL_BLOCK bytes, and then
- * copies that much from the start, which stays in the L1 cache: a 1080p
- * RGBA + 32-bit depth clear on the bench machine takes 0.16 ms so (memset
- * 0.14), against 0.29-0.34 ms doubling over the whole block, which reads
- * back as much as it writes, and 0.75 ms as a store loop. */
-#define MOTE__FILL_BLOCK 16384u
-
-static void mote__fill_rows(uint8_t *p, size_t elem_bytes, size_t row_bytes, size_t stride, int rows)
-{
-    size_t total = stride == row_bytes ? row_bytes * (size_t)rows : row_bytes;
-    for (size_t done = elem_bytes; done < total;) {
-        size_t n = MOTE__MIN(MOTE__MIN(done, (size_t)MOTE__FILL_BLOCK), total - done);
-        memcpy(p + done, p, n);
-        done += n;
-    }
-    if (stride != row_bytes)
-        for (int y = 1; y < rows; y++)
-            memcpy(p + (size_t)y * stride, p, row_bytes);
-}
-
-void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect r)
-{
-    const mote_device_desc *d = &dev->desc;
-    int w = r.x1 - r.x0, rows = r.y1 - r.y0;
-    if (w <= 0 || rows <= 0)
-        return;
-    if (!dev->frame.keep_color) {
-        size_t bpp = (size_t)mote_format_bytes(d->color_format);
-        uint8_t *row0 = tg->color + (size_t)(r.y0 - tg->y0) * (size_t)tg->stride;
-        mote__write_rgb(row0, r.x0, d->color_format, d->clear_color.r, d->clear_color.g, d->clear_color.b);
-        if (d->color_format == MOTE_FORMAT_RGBA8888)
-            row0[4 * r.x0 + 3] = d->clear_color.a;
-        mote__fill_rows(row0 + (size_t)r.x0 * bpp, bpp, (size_t)w * bpp, (size_t)tg->stride, rows);
-    }
-    if (!dev->frame.keep_depth && d->depth_format != MOTE_DEPTH_FORMAT_NONE) {
-        /* clear_depth is in (0, 1]: fv is at most 2^24, which converts
-         * exactly; the clamp in integers costs a soft-float core no call */
-        float fv = d->clear_depth * (float)MOTE__DEPTH_MAX + 0.5f;
-        uint32_t v = (uint32_t)fv;
-        v = v > MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : v;
-        size_t off = (size_t)(r.y0 - tg->y0) * (size_t)d->width + (size_t)r.x0;
-        size_t bytes = (size_t)mote_depth_format_bytes(d->depth_format);
-        uint8_t *p;
-        if (d->depth_format == MOTE_DEPTH_FORMAT_16) {
-            uint16_t *p16 = (uint16_t *)d->depth + off;
-            *p16 = (uint16_t)(v >> 8);
-            p = (uint8_t *)p16;
-        } else {
-            uint32_t *p32 = (uint32_t *)d->depth + off;
-            *p32 = v;
-            p = (uint8_t *)p32;
-        }
-        mote__fill_rows(p, bytes, (size_t)w * bytes, (size_t)d->width * bytes, rows);
-    }
-}
-
 /* ---- the frame ----------------------------------------------------------- */
-
-static bool mote__band_mode(const mote_device *dev)
-{
-    return dev->desc.band_height < dev->desc.height;
-}
-
-static bool mote__binned(const mote_device *dev)
-{
-    return dev->bin.enabled && !mote__band_mode(dev);
-}
-
-void mote__clear_stripe(const mote_device *dev, int index)
-{
-    int h = dev->desc.height;
-    mote__target tg;
-    mote__counts count = {0, 0};
-    mote__full_target(dev, &tg, &count);
-    mote__rect r = {0, h * index / MOTE__CLEAR_STRIPES, dev->desc.width, h * (index + 1) / MOTE__CLEAR_STRIPES};
-    const unsigned char *drawn = dev->bin.drawn_before;
-    if (!MOTE_ENABLE_BINNING || !drawn || !mote__binned(dev)) {
-        mote__clear_rect(dev, &tg, r);
-        return;
-    }
-    /* only the tiles drawn into since the last clear: runs of them per
-     * row of tiles (the stripe's rows need not start a tile row) */
-    const int s = dev->bin.tile_shift, tiles_x = dev->bin.tiles_x;
-    for (int y = r.y0; y < r.y1;) {
-        const int ty = y >> s, y1 = MOTE__MIN(r.y1, (ty + 1) << s);
-        const unsigned char *row = drawn + (size_t)ty * (size_t)tiles_x;
-        for (int tx = 0; tx < tiles_x;) {
-            if (!row[tx]) {
-                tx++;
-                continue;
-            }
-            int t0 = tx;
-            while (tx < tiles_x && row[tx])
-                tx++;
-            mote__rect run = {t0 << s, y, MOTE__MIN(r.x1, tx << s), y1};
-            mote__clear_rect(dev, &tg, run);
-        }
-        y = y1;
-    }
-}
 
 mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
 {
@@ -339,14 +194,11 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     memset(&dev->stats, 0, sizeof dev->stats);
     dev->draw_count = 0;
     dev->in_frame = true;
-    /* The clear runs before binning, in stripes of whole rows. Clearing tile
-     * by tile inside the tile jobs was tried and measured slower (mote-render
-     * --frames, Suzanne at 1080p, 1 / 2 threads: 2.42 / 3.07 ms, against
-     * 2.31 / 1.3-1.7 ms in stripes): short scattered rows stream badly.
-     * Tried again with the tiles' rows as 8-byte stores: 1.5-1.6 against
-     * 1.22 ms at one thread, the stores waiting on their lines. When draws
-     * are recorded for parallel setup, the stripes wait for that setup and
-     * run beside it (mote__bin_run_draws), which touches no pixel. */
+    /* The clear runs before binning, in stripes of whole rows: tile by
+     * tile inside the tile jobs, short scattered rows streamed badly
+     * (docs/performance.md). When draws are recorded for parallel setup,
+     * the stripes wait for that setup and run beside it
+     * (mote__bin_run_draws), which touches no pixel. */
     if (MOTE_ENABLE_BINNING && mote__binned(dev))
         mote__bin_begin(dev);
     dev->clear_pending = MOTE_ENABLE_BINNING && mote__binned(dev) && mote__bin_defers(dev);
@@ -355,19 +207,15 @@ mote_result mote_begin(mote_device *dev, const mote_frame_desc *frame)
     return MOTE_OK;
 }
 
-static void mote__clear_task(void *arg, int index)
+/* A draw drawn at once into region r of target tg. */
+static mote_result mote__draw_direct(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *d,
+                                     const mote__target *tg, mote__rect r)
 {
-    mote__clear_stripe((const mote_device *)arg, index);
-}
-
-void mote__clear_frame(mote_device *dev)
-{
-    dev->clear_pending = false;
-    if (dev->desc.parallel_for)
-        dev->desc.parallel_for(dev->desc.parallel_user, MOTE__CLEAR_STRIPES, mote__clear_task, dev);
-    else
-        for (int i = 0; i < MOTE__CLEAR_STRIPES; i++)
-            mote__clear_stripe(dev, i);
+    mote__sink sink;
+    memset(&sink, 0, sizeof sink);
+    sink.tg = tg;
+    sink.region = r;
+    return mote__process_draw(dev, mesh, d, &sink, NULL);
 }
 
 /* Keeps a draw for mote_end (band mode) or for binning in parallel. */
@@ -411,7 +259,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
             mote__record(dev, mesh, &d);
             return r;
         }
-        r = mote__process_draw(dev, mesh, &d, MOTE__SINK_BIN, NULL, all, NULL);
+        r = mote__bin_draw(dev, mesh, &d);
     } else {
         /* points and lines are drawn at once; earlier binned triangles first */
         if (MOTE_ENABLE_BINNING && mote__binned(dev)) {
@@ -419,7 +267,7 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
             mote__bin_flush(dev);
             mote__bin_mark_all_drawn(dev);   /* not through the tiles */
         }
-        mote_result drawn = mote__process_draw(dev, mesh, &d, MOTE__SINK_RASTER, &tg, all, NULL);
+        mote_result drawn = mote__draw_direct(dev, mesh, &d, &tg, all);
         r = r != MOTE_OK ? r : drawn;
     }
     mote__add_counts(dev, &count);
@@ -487,7 +335,7 @@ static mote_result mote__draw_bands(mote_device *dev)
             if (!mote__draw_in_band(rec, k))
                 continue;
             bb->draw = rec;
-            mote_result r = mote__process_draw(dev, rec->mesh, &rec->desc, MOTE__SINK_RASTER, &tg, band, NULL);
+            mote_result r = mote__draw_direct(dev, rec->mesh, &rec->desc, &tg, band);
             if (r != MOTE_OK)
                 result = r;
         }
@@ -503,60 +351,4 @@ static mote_result mote__draw_bands(mote_device *dev)
         d->flush(d->flush_user, y0, y1 - y0, tg.color, d->color_stride);
     }
     return result;
-}
-
-/* ---- pixels -------------------------------------------------------------- */
-
-static void mote__read_rgb(const uint8_t *row, int x, mote_format f, uint8_t out[4])
-{
-    switch (f) {
-    case MOTE_FORMAT_RGB565:
-    case MOTE_FORMAT_RGB565_SWAPPED: {
-        uint32_t v = ((const uint16_t *)(const void *)row)[x];
-        if (f == MOTE_FORMAT_RGB565_SWAPPED)
-            v = ((v & 0xff) << 8) | (v >> 8);
-        out[0] = (uint8_t)(((v >> 11) * 527 + 23) >> 6);
-        out[1] = (uint8_t)((((v >> 5) & 63) * 259 + 33) >> 6);
-        out[2] = (uint8_t)(((v & 31) * 527 + 23) >> 6);
-        out[3] = 255;
-        break;
-    }
-    case MOTE_FORMAT_GREY8:
-        out[0] = out[1] = out[2] = row[x];
-        out[3] = 255;
-        break;
-    default:
-        memcpy(out, row + 4 * x, 4);
-        break;
-    }
-}
-
-mote_rgba mote_read_pixel(const mote_device *dev, int x, int y)
-{
-    mote_rgba c = {0, 0, 0, 0};
-    if (!dev || !dev->ready || x < 0 || y < 0 || x >= dev->desc.width || y >= dev->desc.band_height)
-        return c;
-    const uint8_t *row = (const uint8_t *)dev->bands.color + (size_t)y * (size_t)dev->desc.color_stride;
-    uint8_t v[4];
-    mote__read_rgb(row, x, dev->desc.color_format, v);
-    memcpy(&c, v, sizeof c);      /* r, g, b, a */
-    return c;
-}
-
-void mote_convert_row(const void *src, mote_format src_format, void *dst, mote_format dst_format, int count)
-{
-    if (src_format == MOTE_FORMAT_DEFAULT)
-        src_format = MOTE_FORMAT_RGBA8888;
-    if (dst_format == MOTE_FORMAT_DEFAULT)
-        dst_format = MOTE_FORMAT_RGBA8888;
-    /* an unknown format: no pixel has a size to convert */
-    if ((unsigned)src_format >= MOTE_FORMAT_COUNT || (unsigned)dst_format >= MOTE_FORMAT_COUNT)
-        return;
-    for (int x = 0; x < count; x++) {
-        uint8_t v[4];
-        mote__read_rgb((const uint8_t *)src, x, src_format, v);
-        mote__write_rgb((uint8_t *)dst, x, dst_format, v[0], v[1], v[2]);
-        if (dst_format == MOTE_FORMAT_RGBA8888)
-            ((uint8_t *)dst)[4 * x + 3] = v[3];
-    }
 }

@@ -1,16 +1,28 @@
 /*
  * internal.h - shared declarations of the mote core's stages.
  *
- * The pipeline, by file:
- *   vmath.c     matrices, deterministic trig (vertex stage, float)
- *   geometry.c  per draw: transform, light, clip, snap, cull -> triangles
+ * A frame, by file. Each file calls functions only of the files below it
+ * (tests/core/layers.sh holds this), so the order is also the way to read
+ * the pipeline from the API down to a pixel:
+ *   device.c    the public device API: frames, draws, the direct and the
+ *               band paths, which rasterise through a sink at once
+ *   bin.c       binned mode: the sink that keeps triangles in the arena,
+ *               tiles, parallel setup in groups
+ *   target.c    render targets, pixel counts, the clear
+ *   draw.c      per draw: its description, context and vertex cache
+ *   assemble.c  per triangle: rejection, clipping into a fan, culling,
+ *               flat shading, face queues -> setup -> the sink
+ *   vertex.c    per vertex: transform, lighting (light.h), setup's units;
+ *               four at a time on SSE2 hosts (vertex.h: the stage's types)
+ *   clip.c      outcodes, homogeneous clipping, snapping to sub-pixels
+ *   vmath.c     matrices, deterministic trig (float)
  *   setup.c     per triangle: edge functions and attribute planes (integer)
- *   raster.c    exact scanline edge walking over a region
+ *   line.c      points and wireframe (Bresenham, exact under clipping)
  *   span.c      fill functions: rows of the walk x pixel loops, specialised
  *               from one inline body
- *   bin.c       arena, tile binning, tile execution
- *   line.c      points and wireframe (Bresenham, exact under clipping)
- *   device.c    the public device API, formats, results
+ *   raster.c    exact scanline edge walking over a region
+ *   format.c    colour and depth formats (format.h): conversion, reading
+ *               pixels back
  */
 #ifndef MOTE_CORE_INTERNAL_H
 #define MOTE_CORE_INTERNAL_H
@@ -32,19 +44,7 @@
 #define MOTE__MIN(a, b) ((a) < (b) ? (a) : (b))
 #define MOTE__MAX(a, b) ((a) > (b) ? (a) : (b))
 
-/* mote_format_bytes, inline: the pixel loops address rows with it, where
- * the format is a constant. */
-static inline int mote__format_bytes(mote_format format)
-{
-    switch (format) {
-    case MOTE_FORMAT_DEFAULT:
-    case MOTE_FORMAT_RGBA8888: return 4;
-    case MOTE_FORMAT_RGB565:
-    case MOTE_FORMAT_RGB565_SWAPPED: return 2;
-    case MOTE_FORMAT_GREY8: return 1;
-    default: return 0;
-    }
-}
+#include "format.h"
 
 /* Shade and weights fixed-point units (see CONVENTIONS in mote.h). */
 #define MOTE__SHADE_ONE (1 << 24)
@@ -132,9 +132,8 @@ static inline bool mote__positive_finite(float x)
 }
 
 /* The helpers every vertex calls, inline for speed: as calls into
- * vmath.c they cost the dense grid 3-5% of its frame (the vertex stage
- * spilled registers around each). Where flash counts, one shared copy,
- * which vmath.c defines (MOTE__VMATH_DEFINE). */
+ * vmath.c the vertex stage spilled registers around each. Where flash
+ * counts, one shared copy, which vmath.c defines (MOTE__VMATH_DEFINE). */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__) && !defined(MOTE__VMATH_DEFINE)
 float mote__dot3(const float a[3], const float b[3]);
 float mote__rsqrtf(float x);
@@ -402,17 +401,41 @@ static inline void mote__raster_tri(const mote__tri *t, const mote__target *tg, 
  * how texels are addressed (rs->pow2_repeat). */
 void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format);
 void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r, int subpixel_bits);
-void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b);
 
 /* line.c: points and lines in screen pixels, clipped to the region. */
 void mote__draw_line(const mote__target *tg, mote__rect r, int x0, int y0, int x1, int y1,
                      mote_rgba color);
 void mote__draw_pixel(const mote__target *tg, mote__rect r, int x, int y, mote_rgba color);
 
-/* geometry.c: runs a draw (its desc resolved by mote__resolve_draw_desc)
- * through the vertex stage into a sink. */
-typedef enum mote__sink_kind { MOTE__SINK_RASTER, MOTE__SINK_BIN } mote__sink_kind;
-/* Part of a binned draw, set up apart from the rest (bin.c): its triangles
+/* The sink of a draw: where the vertex stage hands its triangles, set
+ * up. Without callbacks (the direct path, device.c) each is rasterised at
+ * once into region of tg; the binner (bin.c) gives callbacks that keep
+ * them in its arena for the tiles. The vertex stage knows nothing of
+ * either. */
+typedef struct mote__sink mote__sink;
+struct mote__sink {
+    const mote__target *tg;       /* the direct path's target: triangles, points */
+    mote__rect region;            /* and lines are drawn into this part of it */
+    /* Takes the draw's raster state for its triangles to point at, for as
+     * long as they live, and sets rs; false when it has no room (the draw
+     * ends: MOTE_ERR_OUT_OF_MEMORY, or MOTE_OK when full is set). NULL:
+     * the triangles point at the draw's own, which lives as long as it. */
+    bool (*begin)(mote__sink *s, const mote__raster_state *rs);
+    /* Memory for a full vertex cache of bytes, or NULL (the draw then uses
+     * a small one on the stack). NULL: never. */
+    void *(*vertices)(mote__sink *s, size_t bytes);
+    /* Where setup may write the next triangle, or NULL for anywhere. NULL:
+     * anywhere. */
+    mote__tri *(*place)(mote__sink *s);
+    /* Takes a set-up triangle. NULL: rasterised into region of tg. */
+    void (*triangle)(mote__sink *s, mote__tri *t);
+    const mote__raster_state *rs; /* what the draw's triangles point at (begin) */
+    bool full;                    /* takes no more: the draw stops */
+};
+
+/* draw.c: a draw (its desc resolved by mote__resolve_draw_desc) through
+ * the vertex stage into a sink.
+ * Part of a binned draw, set up apart from the rest (bin.c): its triangles
  * [tri0, tri1), and the draw's vertex cache, which mote__prepare_vertices
  * filled and which the draw's pieces share (NULL: the piece fills its own). */
 typedef struct mote__piece {
@@ -420,10 +443,8 @@ typedef struct mote__piece {
     const void *vertices;
 } mote__piece;
 /* piece NULL: the whole draw. */
-mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh,
-                               const mote_draw_desc *desc, mote__sink_kind sink,
-                               const mote__target *tg, mote__rect region,
-                               const mote__piece *piece);
+mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc,
+                               mote__sink *sink, const mote__piece *piece);
 /* Arena bytes of a binned draw's vertex cache. */
 size_t mote__vertex_cache_bytes(const mote_mesh *mesh);
 /* Transforms and lights vertices [first, end) of a draw into its vertex
@@ -439,34 +460,37 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
 /* bin.c */
 /* Bytes of the tile table at the arena's start (tiles_x, tiles_y set). */
 size_t mote__bin_table_bytes(const mote_device *dev);
-void mote__bin_reset(mote_device *dev);
 /* mote_begin's reset (see bin.c). */
 void mote__bin_begin(mote_device *dev);
-/* Reserves arena bytes for binned data; NULL when the arena is full. */
-void *mote__bin_alloc(mote_device *dev, size_t bytes);
-bool mote__bin_triangle(mote_device *dev, const mote__tri *t);
 void mote__bin_flush(mote_device *dev);
 /* clear_drawn_tiles_only: pixels were drawn outside the tiles (points,
  * wireframe): the next clear is a full one. */
 void mote__bin_mark_all_drawn(mote_device *dev);
-void *mote__bin_top_alloc(mote_device *dev, size_t bytes);
-void mote__bin_top_release(mote_device *dev, size_t bytes);
 /* Whether mote_draw records binned draws for mote__bin_run_draws, which
  * bins them in parallel groups (see bin.c). */
 bool mote__bin_defers(const mote_device *dev);
 mote_result mote__bin_run_draws(mote_device *dev);
+/* Bins one draw now. */
+mote_result mote__bin_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *desc);
 
-/* device.c */
+/* target.c */
+static inline bool mote__band_mode(const mote_device *dev)
+{
+    return dev->desc.band_height < dev->desc.height;
+}
+
+static inline bool mote__binned(const mote_device *dev)
+{
+    return dev->bin.enabled && !mote__band_mode(dev);
+}
+
 void mote__full_target(const mote_device *dev, mote__target *tg, mote__counts *counts);
 void mote__add_counts(mote_device *dev, const mote__counts *counts);
 void mote__clear_rect(const mote_device *dev, const mote__target *tg, mote__rect r);
 /* The full-frame clear of mote_begin: stripe index of MOTE__CLEAR_STRIPES
  * of whole rows, or all of them now. 32, not 8: when only the tiles drawn
- * into are cleared, the work lies where the scene is, and with 8 stripes
- * one of them held half of it, which one thread cleared while the other
- * waited (Suzanne at 1080p on two threads: 0.365 against 0.387 ms a frame,
- * 8 alternating runs each; 640x480 0.145 against 0.144; 16 stripes 0.367
- * and 0.146). */
+ * into are cleared, the work lies where the scene is, and with few
+ * stripes one of them may hold most of it (docs/performance.md). */
 #define MOTE__CLEAR_STRIPES 32
 void mote__clear_stripe(const mote_device *dev, int index);
 void mote__clear_frame(mote_device *dev);

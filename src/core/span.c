@@ -21,12 +21,20 @@
  * vector registers (MOTE__VECTOR_COLOR): the same sums, on units the
  * integer pixel loop leaves idle. The generic loop stays scalar.
  *
- * Define MOTE_SPECIALISE_SPANS 0 to keep only the generic loop (small flash).
+ * MOTE_SPECIALISE_SPANS 0 keeps only the generic loop (small flash): the
+ * default of size builds (-Os) and of x86 without SSE2.
  */
 #include "internal.h"
 
 #ifndef MOTE_SPECIALISE_SPANS
+/* Specialised variants are hundreds of KB of code: worth it where speed
+ * is asked for on a host that can run them well, not in a size build
+ * (-Os) or on an x86 without SSE2. Define it to 1 to have them anyway. */
+#if defined(__OPTIMIZE_SIZE__) || ((defined(__i386__) || defined(__x86_64__)) && !defined(__SSE2__))
+#define MOTE_SPECIALISE_SPANS 0
+#else
 #define MOTE_SPECIALISE_SPANS 1
+#endif
 #endif
 
 /* Specialised variants need the body inlined with constant features; the
@@ -43,15 +51,10 @@
 #define MOTE__SMALL MOTE__SPEED_INLINE
 #endif
 
-/* What the host is, for faster forms with the same results: a texel read as
- * one word on little-endian machines, two channels in one multiplication
+/* What the host is, for faster forms with the same results (and
+ * format.h's MOTE__LITTLE_ENDIAN): two channels in one multiplication
  * where registers are 64 bits wide (not on 32-bit microcontrollers, where a
  * 64-bit product is a library call). */
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-#define MOTE__LITTLE_ENDIAN 1
-#else
-#define MOTE__LITTLE_ENDIAN 0
-#endif
 #if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ >= 8
 #define MOTE__WIDE_REGISTERS 1
 #else
@@ -91,37 +94,6 @@ typedef struct mote__tex_view {
     mote_wrap wrap_u, wrap_v;
     bool pow2_repeat;
 } mote__tex_view;
-
-/* Texel x of a texture row, as three channels. */
-MOTE__INLINE void mote__texel_in_row(mote_format format, const uint8_t *row, size_t x, uint32_t c[3])
-{
-    switch (format) {
-    case MOTE_FORMAT_RGB565: {
-        uint32_t v = ((const uint16_t *)(const void *)row)[x];
-        c[0] = ((v >> 11) * 527 + 23) >> 6;
-        c[1] = (((v >> 5) & 63) * 259 + 33) >> 6;
-        c[2] = ((v & 31) * 527 + 23) >> 6;
-        break;
-    }
-    case MOTE_FORMAT_GREY8:
-        c[0] = c[1] = c[2] = row[x];
-        break;
-    default: {
-#if MOTE__LITTLE_ENDIAN
-        uint32_t v;                   /* one load instead of three */
-        memcpy(&v, row + 4 * x, 4);
-        c[0] = v & 0xff;
-        c[1] = (v >> 8) & 0xff;
-        c[2] = (v >> 16) & 0xff;
-#else
-        c[0] = row[4 * x];
-        c[1] = row[4 * x + 1];
-        c[2] = row[4 * x + 2];
-#endif
-        break;
-    }
-    }
-}
 
 /* Row y of a texture. */
 MOTE__INLINE const uint8_t *mote__texel_row(const mote__tex_view *tx, bool pow2_repeat, size_t y)
@@ -189,10 +161,10 @@ MOTE__INLINE mote__taps mote__bilinear_taps(const mote__tex_view *tx, bool pow2_
 MOTE__INLINE void mote__blend(mote_format format, const mote__taps *t, uint32_t c[3])
 {
     uint32_t a[3], b[3], d[3], e[3];
-    mote__texel_in_row(format, t->row0, t->u0, a);
-    mote__texel_in_row(format, t->row0, t->u1, b);
-    mote__texel_in_row(format, t->row1, t->u0, d);
-    mote__texel_in_row(format, t->row1, t->u1, e);
+    mote__texel(format, t->row0, t->u0, a);
+    mote__texel(format, t->row0, t->u1, b);
+    mote__texel(format, t->row1, t->u0, d);
+    mote__texel(format, t->row1, t->u1, e);
     const uint32_t fu = t->fu, fv = t->fv;
     for (int k = 0; k < 3; k++)
         c[k] = (a[k] * (256 - fu) * (256 - fv) + b[k] * fu * (256 - fv) + d[k] * (256 - fu) * fv
@@ -250,35 +222,6 @@ MOTE__INLINE const uint8_t *mote__texel_pow2(const mote__tex_view *tx, const uin
     *col = (size_t)(su >> (k - 4)) & (size_t)(tx->w - 1);
     /* the row's offset (v's texel << stride_log2) is those bits of sv moved down less far */
     return tx->pixels + ((size_t)(sv >> tx->row_shift) & ((size_t)(tx->h - 1) << tx->stride_log2));
-}
-
-/* Packs a colour for a format: one store per pixel in the loop. */
-MOTE__INLINE uint32_t mote__pack(mote_format fmt, uint32_t r, uint32_t g, uint32_t b)
-{
-    if (fmt == MOTE_FORMAT_RGBA8888) {
-#if MOTE__LITTLE_ENDIAN
-        return r | g << 8 | b << 16 | 0xff000000u;
-#else
-        uint8_t px[4] = {(uint8_t)r, (uint8_t)g, (uint8_t)b, 255};
-        uint32_t v;
-        memcpy(&v, px, 4);
-        return v;
-#endif
-    }
-    if (fmt == MOTE_FORMAT_GREY8)
-        return (77 * r + 150 * g + 29 * b + 128) >> 8;
-    uint32_t v = ((r * 31 + 127) / 255) << 11 | ((g * 63 + 127) / 255) << 5 | ((b * 31 + 127) / 255);
-    return fmt == MOTE_FORMAT_RGB565_SWAPPED ? ((v & 0xff) << 8) | (v >> 8) : v;
-}
-
-MOTE__INLINE void mote__store(uint8_t *row, ptrdiff_t x, mote_format fmt, uint32_t v)
-{
-    if (fmt == MOTE_FORMAT_RGBA8888)
-        memcpy(row + 4 * x, &v, 4);
-    else if (fmt == MOTE_FORMAT_GREY8)
-        row[x] = (uint8_t)v;
-    else
-        ((uint16_t *)(void *)row)[x] = (uint16_t)v;
 }
 
 /* (c * s + 2^23) >> 24 for a channel c <= 255 and a shade s in [0, 2^24]
@@ -538,7 +481,7 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
                     if (bilinear)
                         mote__blend(c->tx.format, &p, t);
                     else
-                        mote__texel_in_row(c->tx.format, p.row0, p.u0, t);
+                        mote__texel(c->tx.format, p.row0, p.u0, t);
                     /* a flat shade takes three products: testing for grey
                      * at every pixel costs what the shared product saves */
                     if (MOTE__WIDE_REGISTERS && shade == MOTE__SHADE_MONO) {
@@ -708,11 +651,6 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     }
 #endif
     mote__rows(&c, &w, t, tg, tex, tfmt, c.tx.pow2_repeat, shade, persp, dsel, dmode, fmt, k);
-}
-
-void mote__write_rgb(uint8_t *row, int x, mote_format format, uint32_t r, uint32_t g, uint32_t b)
-{
-    mote__store(row, x, format, mote__pack(format, r, g, b));
 }
 
 static int mote__dsel(mote_depth_format f)

@@ -9,7 +9,6 @@
 #define MOTE__VMATH_DEFINE     /* size builds: the one copy of internal.h's vertex helpers */
 #include "internal.h"
 
-#include <cglm/types.h>
 
 float mote__sqrtf(float x)
 {
@@ -233,18 +232,18 @@ void mote__cross3(const float a[3], const float b[3], float out[3])
 void mote__view_rotation(const mote_camera *camera, float view[16])
 {
     /* Left-handed look-at (Babylon's LookAtLH): z toward the target. */
-    vec3 up = {camera->up[0], camera->up[1], camera->up[2]};
+    float up[3] = {camera->up[0], camera->up[1], camera->up[2]};
     if (mote__zero3(up))
         up[1] = 1.0f;
-    vec3 z;
+    float z[3];
     memcpy(z, camera->target, sizeof z);
     mote__sub3(z, camera->position);
     mote__normalize3(z);
-    vec3 x, y;
+    float x[3], y[3];
     mote__cross3(up, z, x);
     if (mote__zero3(x)) {
         /* up parallel to the view direction: pick another up */
-        vec3 alt = {0.0f, 0.0f, 1.0f};
+        float alt[3] = {0.0f, 0.0f, 1.0f};
         if (z[2] > 0.9f || z[2] < -0.9f) {
             alt[1] = 1.0f;
             alt[2] = 0.0f;

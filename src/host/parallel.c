@@ -7,15 +7,9 @@
  * The schedule: the jobs are cut into one contiguous run per thread, each
  * thread works through its own run from the front, and a thread that has
  * finished takes jobs from the back of the others' runs, so neighbouring
- * tiles, and the clear's stripes and the tiles on them, stay on one core.
- * With schedule(dynamic, 1) the threads took alternate tiles and stripes
- * at random. On a shared 2-core VM, whose cores pass a cache line to each
- * other in 200-650 ns (measured), a tile then cost ~1.5x its one-thread
- * time (Suzanne at 1080p: the tile jobs' time summed over both threads
- * 1.5-1.6 ms against 1.0-1.1 ms on one; two threads drawing a frame each,
- * or each half of the tiles, cost about one thread's time). Run by run it
- * is ~1.2x, and the tile phase went from 1.3x to 1.6x the one-thread
- * speed. In that VM's quiet spells both schedules reached ~1.9x.
+ * tiles, and the clear's stripes and the tiles on them, stay on one core
+ * and their cache lines need not move between cores, which schedule
+ * (dynamic, 1) made them do (docs/performance.md has the figures).
  */
 #include <mote/mote_io.h>
 

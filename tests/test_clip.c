@@ -1,7 +1,8 @@
 /*
- * test_clipping.c - triangles crossing the near plane, the far plane and
- * the camera's own plane, huge coordinates handled by the guard band, and
- * the largest framebuffer and coordinate range at their edges.
+ * test_clip.c - clipping (src/core/clip.c): triangles crossing the near
+ * plane, the far plane and the camera's own plane, huge coordinates
+ * handled by the guard band, and the largest framebuffer and coordinate
+ * range at their edges.
  *
  * Whole scenes are compared with the double-precision reference pipeline
  * (tests/ref), which clips in homogeneous space on its own. mote's float
