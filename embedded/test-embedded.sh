@@ -13,7 +13,7 @@
 #       counts the self-test's known stretch (embedded/tests/selftest.c)
 #   unaligned_access_should_fault_only_on_m0plus  the M0+ build faults on
 #       an unaligned load, as an M0+ does; the M4F reads it
-#   firmware_profile_core_should_fit_16k_on_m0plus
+#   firmware_profile_core_should_fit_17k_on_m0plus
 # A fault prints "fault at pc ..." and fails the run. Ends with a
 # Unity-style summary; a target whose compiler or emulator cannot be
 # installed (third_party/setup.sh, as root with apt-get) is ignored, not
@@ -43,7 +43,7 @@ target_tests() {
         echo "${name}_on_$1"
     done
     case $1 in
-        cortex-m0plus) echo unaligned_access_should_fault_only_on_m0plus firmware_profile_core_should_fit_16k_on_m0plus ;;
+        cortex-m0plus) echo unaligned_access_should_fault_only_on_m0plus firmware_profile_core_should_fit_17k_on_m0plus ;;
         cortex-m4f) echo unaligned_access_should_fault_only_on_m0plus_not_m4f ;;
     esac
 }
@@ -126,13 +126,13 @@ for t in $ready; do
     esac
 
     # The flash budget: the core the firmware example links (the firmware
-    # profile, after --gc-sections) stays under 16 KB on Cortex-M0+;
+    # profile, after --gc-sections) stays under 17 KB on Cortex-M0+;
     # `make cross` prints the figure.
     if [ "$t" = cortex-m0plus ]; then
-        budget=16384
+        budget=17408
         size=$(sh embedded/map-sizes.sh "$dir/cortex-m0plus/cube-30/mote-firmware.map" | awk '$1 == "core" { print $2 }')
         if [ -n "$size" ] && [ "$size" -le "$budget" ]; then r=ok; else r="'$size' bytes, budget $budget"; fi
-        check firmware_profile_core_should_fit_16k_on_m0plus "$r" "$size bytes"
+        check firmware_profile_core_should_fit_17k_on_m0plus "$r" "$size bytes"
     fi
 done
 finish
