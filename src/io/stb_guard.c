@@ -100,7 +100,7 @@ bool mote__huffman_canonical(const uint16_t *count, int max, uint32_t *first, in
 
 /* stb_image's BMP loader keeps the palette in an uninitialised stack array
  * too: it fills the entries between the header and the pixel offset and
- * looks every index up (upstream issue #1929, open), and it takes an offset
+ * looks every index up (nothings/stb#1929, open), and it takes an offset
  * inside the header for a palette of a negative number of entries, so that
  * none is filled. The first is padded with black entries in a copy, the
  * second refused. */

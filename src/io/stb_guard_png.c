@@ -271,8 +271,8 @@ static uint32_t mote__crc32(const unsigned char *p, size_t n, uint32_t crc)
  * zlib stream (mote__zcheck). Padded: the palette of a colour type 3 image
  * to all 2^depth entries, black, in a copy (*fixed): stb_image keeps the
  * palette in an uninitialised stack array and looks every index up there,
- * so an index past the PLTE chunk's entries shows stack memory (upstream
- * issue #1861, open). Out-of-range indices draw black, as browsers draw
+ * so an index past the PLTE chunk's entries shows stack memory (reported upstream
+ * as nothings/stb#1861, open). Out-of-range indices draw black, as browsers draw
  * them. */
 mote_result mote__stb_guard_png(const unsigned char *d, size_t n, unsigned char **fixed,
                                 size_t *fixed_size, char *message, size_t message_size)
