@@ -10,6 +10,7 @@ AR       ?= ar
 PREFIX   ?= /usr/local
 OPENMP   ?= 1
 SAN      ?= 0
+SIMD     ?= 1
 BUILD    ?= build
 OUT      ?= out
 
@@ -32,7 +33,15 @@ BUILD    := build-san
 DEPS_OK  := $(BUILD)/.deps-ok
 endif
 
-CFLAGS   += $(BASEFLAGS) $(PKG_CFLAGS) $(OMPFLAGS) $(SANFLAGS)
+# SIMD=0: the scalar pixel loops alone (the vector ones draw the same
+# bytes; `make test SIMD=0` tests the scalar build), in its own folder
+ifeq ($(SIMD),0)
+SIMDFLAGS := -DMOTE_SIMD=0
+BUILD    := $(BUILD)-scalar
+DEPS_OK  := $(BUILD)/.deps-ok
+endif
+
+CFLAGS   += $(BASEFLAGS) $(PKG_CFLAGS) $(OMPFLAGS) $(SANFLAGS) $(SIMDFLAGS)
 # The core is the hot code, built at -O3: GCC then unrolls setup's loops
 # over attributes and plane components and the vertex stage's small loops
 # (dense grid: 10% fewer instructions). Same pixels: the pixel stage is
@@ -94,6 +103,7 @@ help:
 	@echo "make accuracy   error of every mode against the reference renderer"
 	@echo "make render-matrix  a hash per configuration (RENDER_MATRIX_REF=file compares)"
 	@echo "make cross      build the core for Cortex-M0+, Cortex-M4F and RV32IMAC, sizes and stack"
+	@echo "make switch-sizes  flash each MOTE_ENABLE_* switch saves on Cortex-M0+ (markdown)"
 	@echo "make test-embedded  render on emulated M0+, M4F and RV32 boards (qemu) and compare"
 	@echo "make bench-embedded  instructions per frame on the emulated boards, RAM, flash"
 	@echo "make fuzz       run each libFuzzer target (FUZZ_SECONDS=60)"

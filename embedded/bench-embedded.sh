@@ -11,7 +11,8 @@
 #             fw_color, fw_depth, fw_device, fw_bins), and the worst-case
 #             stack (embedded/stack-usage.sh); ram_bytes is their sum
 #   flash     the core, libgcc and the whole firmware, from the link map
-#   hash      the frame's, which must equal the host build's
+#   hash      the frame's, which must equal the host build's (of the
+#             target's vertex stage: embedded/boards.sh's board_host)
 # Writes the rows to $MOTE_BUILD/bench-embedded.csv. A target whose tools
 # cannot be installed is skipped, saying so; Suzanne without
 # ../shared/assets too. Exit status 1 when a hash differs or a run fails.
@@ -38,8 +39,7 @@ done
 # references, the counter).
 files="$MOTE_BUILD/qemu/libinsn_count.so"
 for v in "$@"; do
-    files="$files $dir/host/$v/mote-firmware"
-    for t in $ready; do files="$files $dir/$t/$v/mote-firmware.elf"; done
+    for t in $ready; do files="$files $dir/$t/$v/mote-firmware.elf $dir/$(board_host "$t")/$v/mote-firmware"; done
 done
 env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -j2 -s --no-print-directory BUILD="$MOTE_BUILD" $files || {
     echo "bench-embedded: the build failed"
@@ -63,7 +63,7 @@ for t in $ready; do
         scene=$(echo "$v" | cut -d- -f1); rows=$(echo "$v" | cut -d- -f2)
         tags=$(echo "$v" | cut -s -d- -f3-); [ -z "$tags" ] || scene="$scene-$tags"
         elf=$dir/$t/$v/mote-firmware.elf
-        want=$("$dir/host/$v/mote-firmware" | sed -n 's/.*frame fnv1a //p')
+        want=$("$dir/$(board_host "$t")/$v/mote-firmware" | sed -n 's/.*frame fnv1a //p')
         out=$(board_run "$t" "$elf" count)
         rc=$?
         count=$(echo "$out" | sed -n 's/^insn_count: counted \([0-9]*\) .*/\1/p')

@@ -24,6 +24,20 @@ board_qemu() {
         rv32imac) echo "qemu-system-riscv32 -M virt -cpu sifive-e31 -bios none" ;;
     esac
 }
+# The host build a target's frames must equal: the integer vertex stage's
+# where the core has no FPU (MOTE_FIXED_VERTEX's default there), else the
+# float one's (embedded/cross.mk builds both); MOTE_CROSS_FIXED=0 or 1
+# builds every target with that stage (embedded/cross.mk).
+board_host() {
+    case ${MOTE_CROSS_FIXED:-} in
+        0) echo host; return ;;
+        1) echo host-fixed; return ;;
+    esac
+    case $1 in
+        cortex-m4f) echo host ;;
+        *) echo host-fixed ;;
+    esac
+}
 board_packages() {
     case $1 in
         rv32imac) echo "gcc-riscv64-unknown-elf:riscv64-unknown-elf-gcc qemu-system-misc:qemu-system-riscv32" ;;
@@ -56,7 +70,8 @@ board_missing() {
 
 # Runs ELF on the target's board; prints what the firmware printed, and
 # with "count", the instruction counter's line (embedded/qemu/insn_count.c,
-# between fw_count_start and fw_count_stop). Exit status: the firmware's.
+# between fw_count_start and fw_count_stop; BOARD_PROFILE=FILE: and each
+# block's count, for embedded/profile.sh). Exit status: the firmware's.
 # (the board_ variables are this file's: sh has no locals)
 board_run() {
     board_target=$1; board_elf=$2; board_count=${3:-}
@@ -66,7 +81,8 @@ board_run() {
         board_log=$(mktemp)
         board_marks=$("$(board_tools "$board_target")nm" "$board_elf" |
             awk '$3 == "fw_count_start" { s = $1 } $3 == "fw_count_stop" { e = $1 } END { print "0x" s ",stop=0x" e }')
-        timeout 300 "$@" -plugin "$MOTE_BUILD/qemu/libinsn_count.so,start=$board_marks" -d plugin -D "$board_log" 2>&1
+        timeout 300 "$@" -plugin "$MOTE_BUILD/qemu/libinsn_count.so,start=$board_marks${BOARD_PROFILE:+,profile=$BOARD_PROFILE}" \
+            -d plugin -D "$board_log" 2>&1
         board_rc=$?
         cat "$board_log"
         rm -f "$board_log"

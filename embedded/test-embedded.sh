@@ -3,7 +3,8 @@
 # self-test on the emulated boards of embedded/boards.sh (Cortex-M0+ and
 # M4F, RV32IMAC), each checked against the host:
 #   firmware_hash_should_match_host           the example (cube, 30-row
-#       bands, RGB565) renders the host's frame
+#       bands, RGB565) renders the host's frame, the host built with the
+#       target's vertex stage (board_host: integer on M0+ and RV32IMAC)
 #   lcd_image_should_match_frame_and_host     the same through the LCD
 #       driver (16-row bands, RGB565_SWAPPED) into the fake panel, which
 #       must find the driver's commands by the rules and receive the frame
@@ -13,7 +14,7 @@
 #       counts the self-test's known stretch (embedded/tests/selftest.c)
 #   unaligned_access_should_fault_only_on_m0plus  the M0+ build faults on
 #       an unaligned load, as an M0+ does; the M4F reads it
-#   firmware_profile_core_should_fit_17k_on_m0plus
+#   firmware_core_and_libgcc_should_fit_31k_on_m0plus  the flash budget
 # A fault prints "fault at pc ..." and fails the run. Ends with a
 # Unity-style summary; a target whose compiler or emulator cannot be
 # installed (third_party/setup.sh, as root with apt-get) is ignored, not
@@ -43,7 +44,7 @@ target_tests() {
         echo "${name}_on_$1"
     done
     case $1 in
-        cortex-m0plus) echo unaligned_access_should_fault_only_on_m0plus firmware_profile_core_should_fit_17k_on_m0plus ;;
+        cortex-m0plus) echo unaligned_access_should_fault_only_on_m0plus firmware_core_and_libgcc_should_fit_31k_on_m0plus ;;
         cortex-m4f) echo unaligned_access_should_fault_only_on_m0plus_not_m4f ;;
     esac
 }
@@ -67,12 +68,14 @@ env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s --no-print-directory BUILD="$MOT
     finish
 }
 
-host_hash() { "$dir/host/$1/mote-firmware" | sed -n 's/.*frame fnv1a //p'; }
-want=$(host_hash cube-30)
-want_lcd=$(host_hash cube-16-lcd)
-echo "host: fnv1a $want (RGB565), $want_lcd (RGB565_SWAPPED)"
+host_hash() { "$dir/$1/$2/mote-firmware" | sed -n 's/.*frame fnv1a //p'; }
+for h in host host-fixed; do
+    echo "$h: fnv1a $(host_hash $h cube-30) (RGB565), $(host_hash $h cube-16-lcd) (RGB565_SWAPPED)"
+done
 
 for t in $ready; do
+    want=$(host_hash "$(board_host "$t")" cube-30)
+    want_lcd=$(host_hash "$(board_host "$t")" cube-16-lcd)
     tools=$(board_tools "$t")
     stack_result=ok; stack_note=""
     for v in cube-30 cube-16-lcd; do
@@ -126,13 +129,15 @@ for t in $ready; do
     esac
 
     # The flash budget: the core the firmware example links (the firmware
-    # profile, after --gc-sections) stays under 17 KB on Cortex-M0+;
-    # `make cross` prints the figure.
+    # profile, after --gc-sections) and the libgcc routines it pulls in
+    # stay within 31 KB on Cortex-M0+ (docs/embedded.md says what fills
+    # them); `make cross` prints the figures.
     if [ "$t" = cortex-m0plus ]; then
-        budget=17408
-        size=$(sh embedded/map-sizes.sh "$dir/cortex-m0plus/cube-30/mote-firmware.map" | awk '$1 == "core" { print $2 }')
+        budget=31744
+        size=$(sh embedded/map-sizes.sh "$dir/cortex-m0plus/cube-30/mote-firmware.map" |
+               awk '$1 == "core" || $1 == "libgcc" { n += $2 } END { print n }')
         if [ -n "$size" ] && [ "$size" -le "$budget" ]; then r=ok; else r="'$size' bytes, budget $budget"; fi
-        check firmware_profile_core_should_fit_17k_on_m0plus "$r" "$size bytes"
+        check firmware_core_and_libgcc_should_fit_31k_on_m0plus "$r" "$size bytes"
     fi
 done
 finish

@@ -50,9 +50,14 @@ demo: examples
 	@mkdir -p $(OUT)/gltf
 	$(GEN_GLTF) $(OUT)/gltf
 	$(MOTE_RENDER) $(OUT)/gltf/demo.glb -o $(OUT)/gltf.png --size 800x600
+	$(MOTE_RENDER) tests/data/transparency.babylon -o $(OUT)/transparency.png --size 640x480
+	$(MOTE_RENDER) tests/data/fog.babylon -o $(OUT)/fog.png --size 640x480 --mip pixel
+	$(MOTE_RENDER) tests/data/shiny.babylon -o $(OUT)/specular.png --size 640x360
+	$(MOTE_RENDER) tests/data/floor.babylon -o $(OUT)/floor_nomip.png --size 640x360 --mip none
+	$(MOTE_RENDER) tests/data/floor.babylon -o $(OUT)/floor_trilinear.png --size 640x360 --mip trilinear
 	@echo "demo: images are in $(OUT)/"
 
 # Only pictures of mote's own assets go into the repository.
 demo-images: demo
 	@mkdir -p $(DOC_IMAGES)
-	cp $(OUT)/demo.png $(OUT)/demo_wireframe.png $(OUT)/gltf.png $(addprefix $(OUT)/,$(addsuffix .png,$(EX_NAMES))) $(DOC_IMAGES)/
+	cp $(OUT)/demo.png $(OUT)/demo_wireframe.png $(OUT)/gltf.png $(OUT)/transparency.png $(OUT)/fog.png $(OUT)/specular.png $(OUT)/floor_nomip.png $(OUT)/floor_trilinear.png $(addprefix $(OUT)/,$(addsuffix .png,$(EX_NAMES))) $(DOC_IMAGES)/

@@ -325,11 +325,59 @@ void a_texture_with_stride_0_should_read_rows_width_times_pixel_size_apart(void)
     TEST_ASSERT_EQUAL_MEMORY(explicit_stride, zero_stride, sizeof zero_stride);
 }
 
+/* Blinn-Phong highlights (mote_material.specular), per vertex, lit
+ * Gouraud and textured, each against the reference's double-precision
+ * formula; then with the first light switched off for the draws
+ * (lights_off). */
+void specular_highlights_should_be_within_1_lsb_of_the_reference(void)
+{
+    for (int k = 0; k < 3; k++) {
+        tu_scene s;
+        tu_scene_build(k == 1 ? TU_SCENE_TEXTURED : TU_SCENE_GOURAUD, MOTE_WRAP_REPEAT, &s);
+        for (int i = 0; i < s.mesh_count; i++) {
+            s.meshes[i].material.specular = (mote_rgba){230, 200, 150, 255};
+            s.meshes[i].material.specular_power = i ? 12.0f : 40.0f;
+        }
+        s.frame.lights[0].specular[1] = 0.5f;   /* a tinted light */
+        s.frame.lights[0].specular[0] = s.frame.lights[0].specular[2] = 1.0f;
+        mote_draw_desc d = draw_desc(k == 1 ? MOTE_MODE_TEXTURED : MOTE_MODE_GOURAUD, MOTE_FILTER_NEAREST,
+                                     MOTE_PERSPECTIVE_CORRECT);
+        if (k == 2)
+            d.lights_off = 1;
+        const char *what = k == 0 ? "specular, Gouraud" : k == 1 ? "specular, textured" : "specular, light 0 off";
+        tu_vs_result r = run(what, &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+        assert_close(what, &r);
+    }
+}
+
+/* Fog, linear, exponential and squared exponential, per vertex, over
+ * lit Gouraud and textured scenes, with highlights. */
+void fog_should_be_within_1_lsb_of_the_reference(void)
+{
+    static const mote_fog_mode modes[3] = {MOTE_FOG_LINEAR, MOTE_FOG_EXP, MOTE_FOG_EXP2};
+    for (int m = 0; m < 3; m++)
+        for (int k = 0; k < 2; k++) {
+            tu_scene s;
+            tu_scene_build(k ? TU_SCENE_TEXTURED : TU_SCENE_GOURAUD, MOTE_WRAP_REPEAT, &s);
+            s.frame.fog = (mote_fog){modes[m], {0.6f, 0.7f, 0.8f}, 0.12f, 2.0f, 12.0f};
+            s.meshes[0].material.specular = (mote_rgba){255, 255, 255, 255};
+            mote_draw_desc d = draw_desc(k ? MOTE_MODE_TEXTURED : MOTE_MODE_GOURAUD, MOTE_FILTER_NEAREST,
+                                         MOTE_PERSPECTIVE_CORRECT);
+            char what[64];
+            snprintf(what, sizeof what, "fog %s, %s", m == 0 ? "linear" : m == 1 ? "exp" : "exp2",
+                     k ? "textured" : "Gouraud");
+            tu_vs_result r = run(what, &s, &d, 8, MOTE_DEPTH_FORMAT_32);
+            assert_close(what, &r);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(perspective_correct_textures_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(unlit_textures_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(specular_highlights_should_be_within_1_lsb_of_the_reference);
+    RUN_TEST(fog_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(gouraud_shading_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(spot_lights_and_ranges_should_be_within_1_lsb_of_the_reference);
     RUN_TEST(orthographic_cameras_should_be_within_1_lsb_of_the_reference);

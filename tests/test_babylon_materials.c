@@ -24,6 +24,14 @@ void tearDown(void) {}
 #define TRI_TWO_SLOTS TRI ",\"subMeshes\":[{\"materialIndex\":0,\"indexStart\":0,\"indexCount\":3}," \
                       "{\"materialIndex\":1,\"indexStart\":0,\"indexCount\":3}]"
 
+/* Loads a scene file of tests/data, which must load without a warning. */
+static void load_quiet_scene(const char *path, mote_scene *s)
+{
+    char message[256] = "";
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(path, NULL, s, message, sizeof message), message);
+    TEST_ASSERT_EQUAL_STRING_MESSAGE("", s->warning, path);
+}
+
 /* mesh k's material colour is rgb */
 static void assert_material_rgb(const mote_scene *s, int k, const uint8_t rgb[3])
 {
@@ -437,6 +445,55 @@ void loader_should_load_a_texture_once_for_two_materials(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+void loader_should_read_emissive_opacity_and_specular_textures_as_layers(void)
+{
+    uint8_t px[2 * 2 * 4] = {255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 255, 9, 9, 9, 0};
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(io_tmp_path("glow.png"), px, 2, 2, 0, msg, sizeof msg));
+    const char *j = "{\"materials\":["
+                    "{\"id\":\"m\",\"diffuseTexture\":{\"name\":\"glow.png\"},"
+                    "\"emissiveTexture\":{\"name\":\"glow.png\",\"uScale\":2,\"level\":0.5},"
+                    "\"opacityTexture\":{\"name\":\"glow.png\",\"getAlphaFromRGB\":true,\"wrapU\":0},"
+                    "\"specularTexture\":{\"name\":\"glow.png\",\"coordinatesIndex\":1}}],"
+                    "\"meshes\":[{\"id\":\"a\",\"materialId\":\"m\",\"positions\":[0,0,0],\"indices\":[]}]}";
+    mote_scene s;
+    io_load_json_in(j, "t", io_tmp_dir(), &s);
+    const mote_material *m = &s.meshes[0].material;
+    TEST_ASSERT_EQUAL(3, m->layer_count);
+    TEST_ASSERT_EQUAL(MOTE_LAYER_EMISSIVE, m->layers[0].role);
+    TEST_ASSERT_EQUAL_FLOAT(2.0f, m->layers[0].u_scale);
+    TEST_ASSERT_EQUAL_FLOAT(0.5f, m->layers[0].factor[1]);
+    TEST_ASSERT_EQUAL(MOTE_LAYER_OPACITY, m->layers[1].role);
+    TEST_ASSERT_TRUE(m->layers[1].from_rgb);
+    TEST_ASSERT_EQUAL(MOTE_WRAP_CLAMP, m->layers[1].wrap_u);
+    TEST_ASSERT_EQUAL(MOTE_LAYER_SPECULAR, m->layers[2].role);
+    TEST_ASSERT_EQUAL_PTR(m->texture, m->layers[2].texture);
+    /* an opacity map blends; the specular map's colour is the map's */
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_BLEND, m->alpha_mode);
+    TEST_ASSERT_EQUAL_UINT8(255, m->specular.g);
+    /* only the specular map's other uv set is warned */
+    TEST_ASSERT_EQUAL(1, mote_scene_warning_count(&s, NULL));
+    TEST_ASSERT_NOT_NULL(strstr(mote_scene_warning(&s, 0, NULL), "specularTexture.coordinatesIndex"));
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
+void a_floor_scene_should_load_its_emissive_maps_without_a_warning(void)
+{
+    mote_scene s;
+    load_quiet_scene(DATA("floor.babylon"), &s);
+    TEST_ASSERT_EQUAL(MOTE_FOG_NONE, s.fog.mode);
+    TEST_ASSERT_EQUAL(0, s.meshes[0].material.layer_count);   /* the floor */
+    TEST_ASSERT_EQUAL(1, s.meshes[1].material.layer_count);   /* a glowing box */
+    TEST_ASSERT_EQUAL(MOTE_LAYER_EMISSIVE, s.meshes[1].material.layers[0].role);
+    TEST_ASSERT_EQUAL_FLOAT(0.6f, s.meshes[1].material.layers[0].factor[0]);
+    /* drawn through every layer path without fault (sanitizer builds) */
+    enum { SW = 96, SH = 64 };
+    static uint8_t img[SW * SH * 4];
+    io_render_scene(&s, img, SW, SH);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 /* A texture name written as a URL: when no file has the name as written,
  * the file named by it decoded, without its "?query", is loaded (once).
  * Invalid escapes and %00 are not decoded, and a decoded name is held to
@@ -481,6 +538,285 @@ void loader_should_read_a_url_encoded_texture_name_as_the_decoded_file(void)
     TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
 }
 
+/* Transparency as Babylon.js's StandardMaterial decides it: alpha < 1
+ * blends, else a texture with hasAlpha is cut at alphaCutOff (0.4
+ * unsaid), and transparencyMode, when written, says which of the two (or
+ * both). */
+void loader_should_read_transparency_as_babylon_decides_it(void)
+{
+    const uint8_t px[4 * 4] = {255, 0, 0, 0, 0, 255, 0, 100, 0, 0, 255, 200, 255, 255, 255, 255};
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_write_rgba(io_tmp_path("alpha.png"), px, 2, 2, 0, msg, sizeof msg));
+    const char *j =
+        "{\"materials\":["
+        "{\"id\":\"glass\",\"alpha\":0.25,\"disableDepthWrite\":true},"
+        "{\"id\":\"leaf\",\"diffuseTexture\":{\"name\":\"alpha.png\",\"hasAlpha\":true},\"alphaCutOff\":0.6},"
+        "{\"id\":\"both\",\"alpha\":0.5,\"diffuseTexture\":{\"name\":\"alpha.png\",\"hasAlpha\":true},"
+        "\"useAlphaFromDiffuseTexture\":true},"
+        "{\"id\":\"opaque\",\"alpha\":0.5,\"transparencyMode\":0},"
+        "{\"id\":\"blend\",\"diffuseTexture\":{\"name\":\"alpha.png\",\"hasAlpha\":true},"
+        "\"transparencyMode\":2,\"alphaMode\":1},"
+        "{\"id\":\"plain\",\"transparencyMode\":null},"
+        "{\"id\":\"three\",\"diffuseTexture\":{\"name\":\"alpha.png\",\"hasAlpha\":true},\"transparencyMode\":3}],"
+        "\"meshes\":["
+        "{\"id\":\"a\",\"materialId\":\"glass\"," TRI "},"
+        "{\"id\":\"b\",\"materialId\":\"leaf\"," TRI "},"
+        "{\"id\":\"c\",\"materialId\":\"both\"," TRI "},"
+        "{\"id\":\"d\",\"materialId\":\"opaque\"," TRI "},"
+        "{\"id\":\"e\",\"materialId\":\"blend\"," TRI "},"
+        "{\"id\":\"f\",\"materialId\":\"plain\"," TRI "},"
+        "{\"id\":\"g\",\"materialId\":\"three\"," TRI "}]}";
+    mote_scene s;
+    io_load_json_in(j, "alpha", io_tmp_dir(), &s);
+    TEST_ASSERT_EQUAL(7, s.mesh_count);
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_TEST_AND_BLEND, s.meshes[6].material.alpha_mode);
+    const mote_material *m = &s.meshes[0].material;
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_BLEND, m->alpha_mode);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.25f, m->alpha);
+    TEST_ASSERT_TRUE(m->alpha_set);
+    mote_draw_desc d;
+    mote_scene_draw_desc(&s, 0, NULL, &d);
+    TEST_ASSERT_TRUE(d.no_depth_write);
+    mote_scene_draw_desc(&s, 1, NULL, &d);
+    TEST_ASSERT_FALSE(d.no_depth_write);
+    m = &s.meshes[1].material;
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_TEST, m->alpha_mode);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.6f, m->alpha_cutoff);
+    TEST_ASSERT_FALSE(m->use_texture_alpha);
+    m = &s.meshes[2].material;
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_BLEND, m->alpha_mode);   /* no test while blending */
+    TEST_ASSERT_TRUE(m->use_texture_alpha);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.4f, m->alpha_cutoff);
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_OPAQUE, s.meshes[3].material.alpha_mode);
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_BLEND, s.meshes[4].material.alpha_mode);
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_OPAQUE, s.meshes[5].material.alpha_mode);
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "materials[4].alphaMode: 1 is drawn as 2"), s.warning);
+    mote_scene_free(&s);
+}
+
+/* The draw order of a scene of six meshes for a camera at z on the z axis. */
+static void assert_draw_order(const mote_scene *s, float z, const int want[6])
+{
+    mote_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.position[2] = z;
+    int order[6];
+    TEST_ASSERT_EQUAL_INT(6, mote_scene_draw_order(s, s->meshes, &cam, order));
+    TEST_ASSERT_EQUAL_INT_ARRAY(want, order, 6);
+}
+
+/* Opaque meshes first, then alpha-tested ones, in the file's order; then
+ * the blended ones from the farthest to the nearest (bounding-sphere
+ * centres, in world space), ties in the file's order. */
+void draw_order_should_put_blended_meshes_last_from_back_to_front(void)
+{
+    const char *j =
+        "{\"materials\":[{\"id\":\"glass\",\"alpha\":0.5},"
+        "{\"id\":\"cut\",\"transparencyMode\":1}],"
+        "\"meshes\":["
+        "{\"id\":\"near\",\"materialId\":\"glass\",\"position\":[0,0,1]," TRI "},"
+        "{\"id\":\"solid\"," TRI "},"
+        "{\"id\":\"far\",\"materialId\":\"glass\",\"position\":[0,0,9]," TRI "},"
+        "{\"id\":\"cutout\",\"materialId\":\"cut\"," TRI "},"
+        "{\"id\":\"mid\",\"materialId\":\"glass\",\"position\":[0,0,5]," TRI "},"
+        "{\"id\":\"mid2\",\"materialId\":\"glass\",\"position\":[0,0,5]," TRI "}]}";
+    mote_scene s;
+    io_load_json(j, "order", &s);
+    const int want[6] = {1, 3, 2, 4, 5, 0};
+    assert_draw_order(&s, -10.0f, want);
+    /* the camera behind the far end turns the blended ones round */
+    const int back[6] = {1, 3, 0, 4, 5, 2};
+    assert_draw_order(&s, 20.0f, back);
+    int order[6];
+    TEST_ASSERT_EQUAL_INT(0, mote_scene_draw_order(&s, s.meshes, NULL, order));
+    mote_scene_free(&s);
+}
+
+/* tests/data/transparency.babylon (tests/data/make_transparency.py): a
+ * fence cut out of an embedded PNG's alpha and two glass boxes; it loads
+ * without warnings, its glass is drawn last, and the cut-outs and glass
+ * show what lies behind them. */
+void a_scene_with_cut_outs_and_glass_should_show_what_lies_behind(void)
+{
+    mote_scene s;
+    load_quiet_scene(DATA("transparency.babylon"), &s);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_TEST, s.meshes[1].material.alpha_mode);
+    TEST_ASSERT_EQUAL(MOTE_ALPHA_BLEND, s.meshes[2].material.alpha_mode);
+    enum { SW = 160, SH = 120 };
+    static uint8_t see_through[SW * SH * 4], solid[SW * SH * 4];
+    io_render_scene(&s, see_through, SW, SH);
+    for (int i = 0; i < s.mesh_count; i++)
+        s.meshes[i].material.alpha_mode = MOTE_ALPHA_OPAQUE;
+    io_render_scene(&s, solid, SW, SH);
+    long sky_through = 0, sky_solid = 0, differ = 0;
+    const mote_rgba sky = s.clear_color;
+    for (int i = 0; i < SW * SH; i++) {
+        sky_through += see_through[4 * i] == sky.r && see_through[4 * i + 1] == sky.g && see_through[4 * i + 2] == sky.b;
+        sky_solid += solid[4 * i] == sky.r && solid[4 * i + 1] == sky.g && solid[4 * i + 2] == sky.b;
+        differ += memcmp(&see_through[4 * i], &solid[4 * i], 3) != 0;
+    }
+    snprintf(msg, sizeof msg, "sky %ld through the fence, %ld without; %ld pixels differ", sky_through, sky_solid,
+             differ);
+    TEST_ASSERT_TRUE_MESSAGE(sky_through > sky_solid + 50 && differ > SW * SH / 20, msg);
+    mote_scene_free(&s);
+}
+
+/* tests/data/fog.babylon (make_transparency.py --fog): linear fog, shiny
+ * boxes, a light only for the floor and one the floor excludes; loads
+ * without warnings, and its far floor fades into the fog colour. */
+void a_fogged_scene_should_read_fog_highlights_and_light_lists(void)
+{
+    mote_scene s;
+    load_quiet_scene(DATA("fog.babylon"), &s);
+    TEST_ASSERT_EQUAL(MOTE_FOG_LINEAR, s.fog.mode);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 40.0f, s.fog.end);
+    TEST_ASSERT_EQUAL(3, s.light_count);
+    TEST_ASSERT_NOT_NULL(s.lights_off);
+    TEST_ASSERT_EQUAL_UINT32(1, s.lights_off[0]);   /* the floor: not the sky */
+    TEST_ASSERT_EQUAL_UINT32(4, s.lights_off[1]);   /* a box: not the floor lamp */
+    TEST_ASSERT_EQUAL_UINT8(255, s.meshes[1].material.specular.r);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 24.0f, s.meshes[1].material.specular_power);
+    TEST_ASSERT_EQUAL(0, s.meshes[0].material.specular.r | s.meshes[0].material.specular.g);
+    TEST_ASSERT_NOT_NULL(s.meshes[0].material.mipmaps);   /* built at load */
+    mote_frame_desc f;
+    mote_scene_frame(&s, 1.0f, &f);
+    TEST_ASSERT_EQUAL(MOTE_FOG_LINEAR, f.fog.mode);
+    enum { SW = 96, SH = 96 };
+    static uint8_t img[SW * SH * 4];
+    io_render_scene(&s, img, SW, SH);
+    /* the far floor is all fog: with a red fog, pure red (the file's fog
+     * is the clear colour, so it would melt into the sky) */
+    s.fog.color[0] = 1.0f;
+    s.fog.color[1] = s.fog.color[2] = 0.0f;
+    io_render_scene(&s, img, SW, SH);
+    int red = 0;
+    for (int y = 0; y < SH; y++) {
+        const uint8_t *p = &img[(y * SW + SW / 2) * 4];
+        red += p[0] == 255 && p[1] == 0 && p[2] == 0;
+    }
+    snprintf(msg, sizeof msg, "%d rows of pure fog in the middle column", red);
+    TEST_ASSERT_TRUE_MESSAGE(red >= 2, msg);
+    mote_scene_free(&s);
+}
+
+/* A mesh's alphaIndex orders the blended meshes before their distance,
+ * the smaller first; unsaid, or Number.MAX_VALUE as the serialiser
+ * writes it, they come after every one that says it. */
+void draw_order_should_sort_blended_meshes_by_alpha_index_first(void)
+{
+    const char *j =
+        "{\"materials\":[{\"id\":\"glass\",\"alpha\":0.5}],"
+        "\"meshes\":["
+        "{\"id\":\"near\",\"materialId\":\"glass\",\"alphaIndex\":0,\"position\":[0,0,1]," TRI "},"
+        "{\"id\":\"far\",\"materialId\":\"glass\",\"position\":[0,0,9]," TRI "},"
+        "{\"id\":\"mid\",\"materialId\":\"glass\",\"alphaIndex\":0,\"position\":[0,0,5]," TRI "},"
+        "{\"id\":\"max\",\"materialId\":\"glass\",\"alphaIndex\":1.7976931348623157e308,\"position\":[0,0,7]," TRI "},"
+        "{\"id\":\"first\",\"materialId\":\"glass\",\"alphaIndex\":-1.5,\"position\":[0,0,0]," TRI "},"
+        "{\"id\":\"solid\"," TRI "}]}";
+    mote_scene s;
+    io_load_json(j, "alpha-index", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    const int want[6] = {5, 4, 2, 0, 1, 3};
+    assert_draw_order(&s, -10.0f, want);
+    mote_scene_free(&s);
+    /* a string is refused, with where */
+    const char *bad = "{\"meshes\":[{\"id\":\"a\",\"alphaIndex\":\"front\"," TRI "}]}";
+    TEST_ASSERT_NOT_EQUAL(MOTE_OK, mote_scene_load_memory(bad, strlen(bad), "bad", NULL, NULL, &s, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "meshes[0].alphaIndex"), msg);
+}
+
+/* A mesh's applyFog false, or its material's fogEnabled false: the fog
+ * leaves it alone (mote_draw_desc.no_fog); instances follow their mesh. */
+void fog_should_leave_meshes_alone_that_turn_it_off(void)
+{
+    const char *j =
+        "{\"fogMode\":3,\"fogStart\":1,\"fogEnd\":20,"
+        "\"materials\":[{\"id\":\"clear\",\"fogEnabled\":false},{\"id\":\"plain\"}],"
+        "\"meshes\":["
+        "{\"id\":\"a\",\"materialId\":\"plain\"," TRI "},"
+        "{\"id\":\"b\",\"materialId\":\"plain\",\"applyFog\":false," TRI ",\"instances\":[{\"name\":\"b1\"}]},"
+        "{\"id\":\"c\",\"materialId\":\"clear\"," TRI "},"
+        "{\"id\":\"d\",\"materialId\":\"plain\",\"applyFog\":true," TRI "}]}";
+    mote_scene s;
+    io_load_json(j, "no-fog", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_EQUAL(5, s.mesh_count);
+    const bool want[5] = {false, true, true, false, true};   /* the instance last */
+    for (int k = 0; k < 5; k++) {
+        mote_draw_desc d;
+        mote_scene_draw_desc(&s, k, NULL, &d);
+        snprintf(msg, sizeof msg, "mesh %d", k);
+        TEST_ASSERT_EQUAL_MESSAGE(want[k], d.no_fog, msg);
+    }
+    mote_scene_free(&s);
+}
+
+/* needDepthPrePass on a blended material: its mesh's depth first, then
+ * its colour where it is nearest, so that of two overlapping layers in
+ * one mesh only the nearer is blended: as the same mesh drawn nearer
+ * layer first without the pre-pass. */
+#define LAYERS(first, second) \
+    "\"positions\":[-1,-1,1, 1,-1,1, 1,1,1, -1,1,1, -0.5,-0.8,0, 1.5,-0.8,0, 1.5,1.2,0, -0.5,1.2,0]," \
+    "\"normals\":[0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1, 0,0,-1]," \
+    "\"indices\":[" first "," second "]"
+#define FAR_QUAD "0,1,2, 0,2,3"
+#define NEAR_QUAD "4,5,6, 4,6,7"
+void a_depth_pre_pass_should_blend_only_the_nearest_layer_of_a_mesh(void)
+{
+    const char *fmt =
+        "{\"clearColor\":[0.2,0.3,0.4],"
+        "\"materials\":[{\"id\":\"glass\",\"alpha\":0.6,\"backFaceCulling\":false,\"disableLighting\":true,"
+        "\"emissive\":[0.9,0.5,0.1],\"needDepthPrePass\":%s}],"
+        "\"meshes\":[{\"id\":\"layers\",\"materialId\":\"glass\",%s}]}";
+    const char *far_first = LAYERS(FAR_QUAD, NEAR_QUAD), *near_first = LAYERS(NEAR_QUAD, FAR_QUAD);
+    enum { SW = 80, SH = 60 };
+    static uint8_t pre_pass[SW * SH * 4], sorted[SW * SH * 4], plain[SW * SH * 4];
+    char j[1024];
+    mote_scene s;
+    snprintf(j, sizeof j, fmt, "true", far_first);
+    io_load_json(j, "pre-pass", &s);
+    TEST_ASSERT_EQUAL_STRING("", s.warning);
+    TEST_ASSERT_TRUE(s.depth_pre_pass && s.depth_pre_pass[0]);
+    io_render_scene(&s, pre_pass, SW, SH);
+    mote_scene_free(&s);
+    snprintf(j, sizeof j, fmt, "false", near_first);
+    io_load_json(j, "near-first", &s);
+    io_render_scene(&s, sorted, SW, SH);
+    mote_scene_free(&s);
+    snprintf(j, sizeof j, fmt, "false", far_first);
+    io_load_json(j, "far-first", &s);
+    io_render_scene(&s, plain, SW, SH);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL_MEMORY(sorted, pre_pass, sizeof sorted);
+    long twice = 0;               /* the overlap, blended twice without it */
+    for (int i = 0; i < SW * SH; i++)
+        twice += memcmp(&plain[4 * i], &pre_pass[4 * i], 4) != 0;
+    snprintf(msg, sizeof msg, "%ld pixels differ without the pre-pass", twice);
+    TEST_ASSERT_TRUE_MESSAGE(twice > SW * SH / 20, msg);
+}
+
+/* tests/data/shiny.babylon (make_transparency.py --shiny): three red
+ * spheres sharing one geometry under a white point light, specularPower
+ * 8, 32 and 128; it loads without warnings, and the smaller the power,
+ * the larger the white highlight (pixels whose green, which the red
+ * diffuse barely has, passes 200). */
+void a_shiny_scene_should_draw_highlights_by_their_power(void)
+{
+    mote_scene s;
+    load_quiet_scene(DATA("shiny.babylon"), &s);
+    TEST_ASSERT_EQUAL(3, s.mesh_count);
+    enum { SW = 192, SH = 108 };
+    static uint8_t img[SW * SH * 4];
+    io_render_scene(&s, img, SW, SH);
+    int white[3] = {0, 0, 0};
+    for (int y = 0; y < SH; y++)
+        for (int x = 0; x < SW; x++)
+            white[x * 3 / SW] += img[(y * SW + x) * 4 + 1] > 200;
+    snprintf(msg, sizeof msg, "highlight pixels %d, %d, %d", white[0], white[1], white[2]);
+    TEST_ASSERT_TRUE_MESSAGE(white[0] > white[1] && white[1] > white[2] && white[2] > 0, msg);
+    mote_scene_free(&s);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -497,5 +833,15 @@ int main(void)
     RUN_TEST(loader_should_add_emissive_and_ambient_colours_as_babylon_does);
     RUN_TEST(loader_should_sample_uvs2_for_a_texture_with_coordinates_index_1);
     RUN_TEST(loader_should_read_a_url_encoded_texture_name_as_the_decoded_file);
+    RUN_TEST(loader_should_read_transparency_as_babylon_decides_it);
+    RUN_TEST(draw_order_should_put_blended_meshes_last_from_back_to_front);
+    RUN_TEST(draw_order_should_sort_blended_meshes_by_alpha_index_first);
+    RUN_TEST(fog_should_leave_meshes_alone_that_turn_it_off);
+    RUN_TEST(a_depth_pre_pass_should_blend_only_the_nearest_layer_of_a_mesh);
+    RUN_TEST(a_scene_with_cut_outs_and_glass_should_show_what_lies_behind);
+    RUN_TEST(a_fogged_scene_should_read_fog_highlights_and_light_lists);
+    RUN_TEST(a_shiny_scene_should_draw_highlights_by_their_power);
+    RUN_TEST(loader_should_read_emissive_opacity_and_specular_textures_as_layers);
+    RUN_TEST(a_floor_scene_should_load_its_emissive_maps_without_a_warning);
     return UNITY_END();
 }

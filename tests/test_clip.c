@@ -245,9 +245,21 @@ void huge_coordinates_should_be_handled_by_the_guard_band(void)
         d.no_depth_test = true;
         char what[64];
         snprintf(what, sizeof what, "huge triangle %zu", k);
+#if MOTE_FIXED_VERTEX
+        /* the integer stage holds a mesh's vertices to 24 bits across it:
+         * a triangle 1e30 wide keeps no detail near the viewport
+         * (docs/accuracy.md); drawn all the same (the sanitizers watch) */
+        tu_vs_opts o = {W, H, 8, MOTE_DEPTH_FORMAT_DEFAULT};
+        tu_vs_result r;
+        TEST_ASSERT_TRUE_MESSAGE(tu_vs_ref(&o, &f, &m, 1, &d, true, &r, NULL, NULL), what);
+#else
         tu_vs_result r = check_scene(what, &f, &m, 1, &d);
         TEST_ASSERT_TRUE_MESSAGE(r.m.covered_b > 0, what);
+#endif
     }
+#if MOTE_FIXED_VERTEX
+    TEST_IGNORE_MESSAGE("drawn, not compared: beyond the integer vertex stage's range");
+#endif
 }
 
 /* One triangle around the whole viewport, its vertices 1e4 to 1e20 pixels
@@ -272,6 +284,8 @@ void a_triangle_around_the_viewport_should_cover_it_at_any_size(void)
                 w[i] = k % 2 ? tu_rand_range(&g, 0.1, 4.0) : 1.0;
             }
             TEST_ASSERT_EQUAL_INT(MOTE_OK, tu_screen_draw(&s, sx, sy, w, 1));
+            if (MOTE_FIXED_VERTEX)    /* drawn, not compared, as above */
+                continue;
             tu_screen_coverage(&s, cov);
             int drawn = 0;
             for (int i = 0; i < SW * SH; i++)
@@ -281,6 +295,9 @@ void a_triangle_around_the_viewport_should_cover_it_at_any_size(void)
             TEST_ASSERT_EQUAL_INT_MESSAGE(SW * SH, drawn, msg);
         }
     tu_screen_free(&s);
+#if MOTE_FIXED_VERTEX
+    TEST_IGNORE_MESSAGE("drawn, not compared: beyond the integer vertex stage's range");
+#endif
 }
 
 /* ---- the largest framebuffer and coordinate range ---------------------------- */

@@ -11,19 +11,7 @@
 
 #define CORPUS "/usr/share/assimp/models"
 
-static long live_before;
-static char msg[512];
-
-void setUp(void)
-{
-    live_before = io_test_begin();
-    msg[0] = '\0';
-}
-
-void tearDown(void)
-{
-    mote__io_set_alloc_failure_after(-1);
-}
+IO_TEST_FIXTURE
 
 static bool scene_is_zeroed(const mote_scene *s)
 {
@@ -84,6 +72,16 @@ static void expect_json(const char *json, mote_result code, const char *says)
 /* 3 positions (36 bytes of zeros, base64) in buffer 0 */
 #define BUF "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64," \
             "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA\"}],"
+/* BUF's 3 positions (accessor 0), and the indices 0 5 (accessor 1, bytes)
+ * in buffer 1 */
+#define BUF_AND_INDICES                                                                      \
+    "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"        \
+    "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA\"},{\"byteLength\":2,"                 \
+    "\"uri\":\"data:application/octet-stream;base64,AAU=\"}],"                               \
+    "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36},{\"buffer\":1,\"byteLength\":2}],"    \
+    "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,"                   \
+    "\"type\":\"VEC3\"},{\"bufferView\":1,\"componentType\":5121,\"count\":2,"               \
+    "\"type\":\"SCALAR\"}],"
 #define TRI_MESH "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}]," \
                  "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]"
 
@@ -148,6 +146,31 @@ void accessors_past_their_views_should_be_refused_before_reading(void)
                 TRI_MESH "}", MOTE_OK, "-");
 }
 
+/* Integer attributes only with KHR_mesh_quantization, and then only the
+ * types it lists: positions any, normals normalized signed ones. */
+void quantized_attributes_should_need_the_extension_and_its_types(void)
+{
+    static const char mesh[] =
+        ASSET "%s" BUF "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+        "\"accessors\":[{\"bufferView\":0,\"componentType\":%d,\"count\":3,"
+        "\"type\":\"VEC3\"%s}],\"meshes\":[{\"primitives\":[{\"attributes\":"
+        "{\"POSITION\":%d%s}}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]}";
+    static const char ext[] = "\"extensionsUsed\":[\"KHR_mesh_quantization\"],";
+    char json[1024];
+    snprintf(json, sizeof json, mesh, "", 5123, "", 0, "");
+    expect_json(json, MOTE_ERR_PARSE, "attributes.POSITION: accessors[0] holds 3 components of "
+                "type 5123, expected VEC3 of floats (5126)");
+    snprintf(json, sizeof json, mesh, ext, 5123, "", 0, "");
+    expect_json(json, MOTE_OK, "-");
+    snprintf(json, sizeof json, mesh, ext, 5122, ",\"normalized\":true", 0,
+             ",\"NORMAL\":0");
+    expect_json(json, MOTE_OK, "-");
+    snprintf(json, sizeof json, mesh, ext, 5121, "", 0, ",\"NORMAL\":0");
+    expect_json(json, MOTE_ERR_PARSE, "meshes[0].primitives[0].attributes.NORMAL: accessors[0] "
+                "holds 3 components of type 5121, expected VEC3 of floats or normalized bytes "
+                "or shorts (KHR_mesh_quantization)");
+}
+
 void sparse_indices_should_rise_inside_the_accessor(void)
 {
     /* buffer: indices 2, 1 (unsigned bytes), then values */
@@ -204,6 +227,23 @@ void primitives_should_name_what_is_wrong_with_them(void)
                 "{\"POSITION\":0},\"mode\":7}]}],\"nodes\":[{\"mesh\":0}],"
                 "\"scenes\":[{\"nodes\":[0]}]}",
                 MOTE_ERR_RANGE, "meshes[0].primitives[0].mode: 7 is out of range [0, 6]");
+    /* lines: a pair short of its second end; an index past the vertices */
+    expect_json(ASSET BUF "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+                "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,"
+                "\"type\":\"VEC3\"}],\"meshes\":[{\"primitives\":[{\"attributes\":"
+                "{\"POSITION\":0},\"mode\":1}]}],\"nodes\":[{\"mesh\":0}],"
+                "\"scenes\":[{\"nodes\":[0]}]}",
+                MOTE_OK, "meshes[0].primitives[0]: 3 vertices, not a multiple of 2; the last 1 "
+                "are not drawn");
+    expect_json(ASSET BUF_AND_INDICES "\"meshes\":[{\"primitives\":[{\"attributes\":"
+                "{\"POSITION\":0},\"indices\":1,\"mode\":2}]}],\"nodes\":[{\"mesh\":0}],"
+                "\"scenes\":[{\"nodes\":[0]}]}",
+                MOTE_ERR_RANGE, "meshes[0].primitives[0].indices[1]: 5 is out of range "
+                "(3 vertices)");
+    expect_json(ASSET BUF_AND_INDICES "\"meshes\":[{\"primitives\":[{\"attributes\":"
+                "{\"POSITION\":0},\"indices\":1,\"mode\":0}]}],\"nodes\":[{\"mesh\":0}],"
+                "\"scenes\":[{\"nodes\":[0]}]}",
+                MOTE_ERR_RANGE, "meshes[0].primitives[0].indices[1]: 5 is out of range");
     expect_json(ASSET "\"meshes\":[{\"primitives\":[{\"attributes\":{}}]}],"
                 "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]}",
                 MOTE_OK, "meshes[0].primitives[0]: no POSITION; not drawn");
@@ -304,7 +344,7 @@ static const struct {
     {"glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", MOTE_ERR_RANGE,
      "meshes[0].primitives[0].attributes.POSITION[0]: -inf is not a finite number"},
     {"glTF2/ClearCoat-glTF/ClearCoatTest.gltf", MOTE_OK,
-     "extensionsUsed: \"KHR_materials_clearcoat\" is not read; alphaMode BLEND: drawn opaque"},
+     "extensionsUsed: \"KHR_materials_clearcoat\" is not read"},
     {"glTF2/IncorrectVertexArrays/Cube.gltf", MOTE_OK,
      "meshes[1].primitives[0]: 35 vertices, not a multiple of 3; the last 2 are not drawn"},
     {"glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf", MOTE_ERR_RANGE,
@@ -352,18 +392,28 @@ void every_assimp_gltf_file_should_load_or_fail_as_named(void)
         snprintf(path, sizeof path, "%s/%s", CORPUS, corpus[i].file);
         expect(path, NULL, 0, corpus[i].code, corpus[i].says);
     }
-    /* the asset generator's primitive modes: triangles of every mode
-     * draw; points and lines are said not to be */
-    static const char *const modes[16] = {
-        "POINTS", "LINES", "LINE_LOOP", "LINE_STRIP", "-", "-", "-", "POINTS",
-        "LINES", "LINE_LOOP", "LINE_STRIP", "-", "-", "-", "-", "-"};
+    /* the asset generator's primitive modes: every one draws, points and
+     * lines in the points and wireframe modes */
+    static const mote_mode modes[16] = {
+        MOTE_MODE_POINTS, MOTE_MODE_WIREFRAME, MOTE_MODE_WIREFRAME, MOTE_MODE_WIREFRAME,
+        MOTE_MODE_DEFAULT, MOTE_MODE_DEFAULT, MOTE_MODE_DEFAULT, MOTE_MODE_POINTS,
+        MOTE_MODE_WIREFRAME, MOTE_MODE_WIREFRAME, MOTE_MODE_WIREFRAME, MOTE_MODE_DEFAULT,
+        MOTE_MODE_DEFAULT, MOTE_MODE_DEFAULT, MOTE_MODE_DEFAULT, MOTE_MODE_DEFAULT};
     for (int k = 0; k < 16; k++) {
         snprintf(path, sizeof path, "%s/glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode/"
                  "Mesh_PrimitiveMode_%02d.gltf", CORPUS, k);
-        char says[96];
-        snprintf(says, sizeof says, strcmp(modes[k], "-") ? "primitives of mode %s are not drawn"
-                                                          : "%s", modes[k]);
-        expect(path, NULL, 0, MOTE_OK, says);
+        expect(path, NULL, 0, MOTE_OK, "-");
+        mote_scene s;
+        TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(path, NULL, &s, msg, sizeof msg), msg);
+        TEST_ASSERT_FALSE_MESSAGE(s.meshes[0].hidden, path);
+        TEST_ASSERT_EQUAL_MESSAGE(modes[k], s.modes[0], path);
+        static uint8_t rgba[48 * 32 * 4];
+        io_render_scene(&s, rgba, 48, 32);
+        int lit = 0;
+        for (int i = 0; i < 48 * 32; i++)
+            lit += rgba[4 * i] || rgba[4 * i + 1] || rgba[4 * i + 2];
+        TEST_ASSERT_GREATER_THAN_MESSAGE(20, lit, path);
+        mote_scene_free(&s);
     }
 }
 
@@ -372,6 +422,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(required_extensions_mote_cannot_draw_should_be_named);
     RUN_TEST(accessors_past_their_views_should_be_refused_before_reading);
+    RUN_TEST(quantized_attributes_should_need_the_extension_and_its_types);
     RUN_TEST(sparse_indices_should_rise_inside_the_accessor);
     RUN_TEST(node_trees_should_have_no_cycles_shared_children_or_bad_references);
     RUN_TEST(primitives_should_name_what_is_wrong_with_them);

@@ -237,8 +237,8 @@ void light_model_in_four_lanes_should_match_the_scalar_model(void)
         }
         mote__lights one;
         mote__v4_lights four;
-        mote__lights_prepare(&one, &dev, color, emissive);
-        mote__v4_lights_prepare(&four, &dev, color, emissive);
+        mote__lights_prepare(&one, &dev, color, emissive, 0);
+        mote__v4_lights_prepare(&four, &dev, color, emissive, 0);
         float p[4][3], n[4][3];
         for (int v = 0; v < 4; v++) {
             for (int c = 0; c < 3; c++) {

@@ -36,6 +36,8 @@ $(BUILD)/tests/test_%: $(BUILD)/tests/obj/test_%.o $(TEST_SUP_OBJ) $(BUILD)/test
 
 # test_setup_portable compiles src/core/setup.c a second time (without __int128)
 $(BUILD)/tests/obj/test_setup_portable.o: src/core/setup.c
+# test_edge32 compiles src/core/raster.c a second time (its 32-bit first row)
+$(BUILD)/tests/obj/test_edge32.o: src/core/raster.c
 # test_vertex compiles src/core/vertex.c a second time (its static conversions and lighting)
 $(BUILD)/tests/obj/test_vertex.o: src/core/vertex.c
 

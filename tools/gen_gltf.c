@@ -12,13 +12,17 @@
  *                        buffer view
  *   strip.gltf, fan.gltf, strip_indexed.gltf, fan_indexed.gltf
  *                        the same quad as TRIANGLE_STRIP and TRIANGLE_FAN
+ *   lines.gltf           the quad's outline as LINES, LINE_LOOP, LINE_STRIP
+ *                        (closed, and open: three sides) and its corners as
+ *                        POINTS, indexed and not, one primitive each
  *   quantized.gltf       KHR_mesh_quantization: unsigned short positions
  *                        scaled by the node, byte normals, byte uvs
  *   sparse.gltf          a sparse accessor over a view, and one over zeros
  *   flat.gltf            no normals: flat ones are made
  *   alpha.gltf           OPAQUE, MASK and BLEND materials, one primitive each
  *   materials.gltf       unlit, emissive strength, doubleSided, texture
- *                        transform, vertex colours, wrap modes
+ *                        transforms (one choosing its uv set), vertex
+ *                        colours, wrap modes
  *   camera_light.gltf    a node tree (TRS and matrix), a perspective and an
  *                        orthographic camera, directional, point and spot lights
  *   demo.glb             the picture of docs/images/gltf.png
@@ -95,6 +99,13 @@ static int accessor(gltf *g, int v, int offset, int ctype, int count, const char
     add(&g->accessors, "\"componentType\":%d,\"count\":%d,\"type\":\"%s\"%s%s}", ctype, count,
         type, normalized ? ",\"normalized\":true" : "", extra);
     return g->accessor_count++;
+}
+
+/* An index accessor: count unsigned bytes (5121) or shorts (5123). */
+static int indices(gltf *g, const void *idx, int count, int ctype)
+{
+    size_t size = (size_t)count * (ctype == 5121 ? 1 : 2);
+    return accessor(g, view(g, idx, size, 0), 0, ctype, count, "SCALAR", false, "");
 }
 
 static int floats(gltf *g, const float *f, int count, int comps, const char *type)
@@ -181,8 +192,17 @@ static void write_gltf(const gltf *g, const char *name, enum container c, const 
 
 /* ---- the scenes -------------------------------------------------------- */
 
-/* A scene of one node drawing one mesh, up to its primitives' list. */
-#define ONE_MESH "\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}],\"meshes\":[{\"primitives\":["
+/* Writes name: a scene of one node drawing one mesh of prims (its
+ * primitives' objects, comma-separated), then rest (more members, or ""). */
+static void write_one_mesh(const gltf *g, const char *name, enum container c, const char *prims,
+                           const char *rest)
+{
+    static text body;
+    body.n = 0;
+    add(&body, "\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}],"
+        "\"meshes\":[{\"primitives\":[%s]}]%s%s", prims, *rest ? "," : "", rest);
+    write_gltf(g, name, c, body.s);
+}
 
 /* The file being built, emptied. */
 static gltf *new_gltf(void)
@@ -205,7 +225,7 @@ static void quad_accessors(gltf *g)
     floats(g, quad_pos, 4, 3, "VEC3");
     floats(g, quad_nrm, 4, 3, "VEC3");
     floats(g, quad_uv, 4, 2, "VEC2");
-    accessor(g, view(g, quad_idx, sizeof quad_idx, 0), 0, 5123, 6, "SCALAR", false, "");
+    indices(g, quad_idx, 6, 5123);
 }
 
 static const char quad_body[] =
@@ -228,20 +248,20 @@ static void write_quads(void)
 
 typedef struct png_out {
     unsigned char data[4096];
-    int size;
+    size_t size;
 } png_out;
 
 static void png_write(void *context, void *data, int size)
 {
     png_out *o = context;
-    if (size < 0 || o->size + size > (int)sizeof o->data)
+    if (size < 0 || o->size + (size_t)size > sizeof o->data)
         die("PNG too long");
     memcpy(o->data + o->size, data, (size_t)size);
-    o->size += size;
+    o->size += (size_t)size;
 }
 
 /* A 2x2 PNG: red, green / blue, white from the top left. */
-static void checker_png(unsigned char **png, int *size)
+static const png_out *checker_png(void)
 {
     static const unsigned char px[16] = {255, 0, 0, 255, 0, 255, 0, 255,
                                          0, 0, 255, 255, 255, 255, 255, 255};
@@ -249,17 +269,14 @@ static void checker_png(unsigned char **png, int *size)
     o.size = 0;
     if (!stbi_write_png_to_func(png_write, &o, 2, 2, 4, px, 8))
         die("cannot encode a PNG");
-    *png = o.data;
-    *size = o.size;
+    return &o;
 }
 
 static void write_textured(void)
 {
-    unsigned char *png;
-    int png_size;
-    checker_png(&png, &png_size);
+    const png_out *png = checker_png();
     FILE *f = open_out("checker2.png");
-    fwrite(png, 1, (size_t)png_size, f);
+    fwrite(png->data, 1, png->size, f);
     fclose(f);
     static const char *const names[3] = {"textured", "textured_embedded", "textured"};
     const char *tex = ",\"baseColorTexture\":{\"index\":0}";
@@ -272,11 +289,11 @@ static void write_textured(void)
             add(&images, "{\"uri\":\"checker2.png\"}");
         } else if (c == DATA_URI) {
             add(&images, "{\"uri\":\"data:image/png;base64,");
-            base64(&images, png, (size_t)png_size);
+            base64(&images, png->data, png->size);
             add(&images, "\"}");
         } else {
             add(&images, "{\"bufferView\":%d,\"mimeType\":\"image/png\"}",
-                view(g, png, (size_t)png_size, 0));
+                view(g, png->data, png->size, 0));
         }
         static text rest;
         rest.n = 0;
@@ -311,14 +328,39 @@ static void write_strips_and_fans(void)
             floats(g, p, 4, 3, "VEC3");
             floats(g, n, 4, 3, "VEC3");
             if (indexed)
-                accessor(g, view(g, idx, 4, 0), 0, 5121, 4, "SCALAR", false, "");
-            char body[512];
-            snprintf(body, sizeof body,
-                     ONE_MESH
-                     "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1}%s,"
-                     "\"mode\":%d}]}]", indexed ? ",\"indices\":2" : "", mode ? 6 : 5);
-            write_gltf(g, names[mode][indexed], EXTERNAL, body);
+                indices(g, idx, 4, 5121);
+            char prim[128];
+            snprintf(prim, sizeof prim, "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1}%s,"
+                     "\"mode\":%d}", indexed ? ",\"indices\":2" : "", mode ? 6 : 5);
+            write_one_mesh(g, names[mode][indexed], EXTERNAL, prim, "");
         }
+}
+
+/* The quad's outline, green, as segments (unindexed), a loop (indexed),
+ * a strip back to the first corner (unindexed) and an open strip
+ * (indexed: three sides); its corners as points, indexed and not. */
+static void write_lines(void)
+{
+    gltf *g = new_gltf();
+    static const uint8_t segments[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+    static const uint8_t ring[5] = {0, 1, 2, 3, 0};
+    float seg_p[8 * 3], ring_p[5 * 3];
+    for (int k = 0; k < 8; k++)
+        memcpy(seg_p + 3 * k, quad_pos + 3 * segments[k], 12);
+    for (int k = 0; k < 5; k++)
+        memcpy(ring_p + 3 * k, quad_pos + 3 * ring[k], 12);
+    floats(g, seg_p, 8, 3, "VEC3");                                      /* 0 */
+    floats(g, quad_pos, 4, 3, "VEC3");                                   /* 1 */
+    floats(g, ring_p, 5, 3, "VEC3");                                     /* 2 */
+    indices(g, ring, 4, 5121);   /* 3: 0 1 2 3 */
+    write_one_mesh(g, "lines", EXTERNAL,
+                   "{\"attributes\":{\"POSITION\":0},\"mode\":1,\"material\":0},"
+                   "{\"attributes\":{\"POSITION\":1},\"indices\":3,\"mode\":2,\"material\":0},"
+                   "{\"attributes\":{\"POSITION\":2},\"mode\":3,\"material\":0},"
+                   "{\"attributes\":{\"POSITION\":1},\"indices\":3,\"mode\":3,\"material\":0},"
+                   "{\"attributes\":{\"POSITION\":1},\"indices\":3,\"mode\":0,\"material\":0},"
+                   "{\"attributes\":{\"POSITION\":1},\"mode\":0,\"material\":0}",
+                   "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0,1,0,1]}}]");
 }
 
 /* Positions as unsigned shorts 0..2 (scaled by 0.5 and moved by the
@@ -341,7 +383,7 @@ static void write_quantized(void)
     accessor(g, vv, 0, 5123, 4, "VEC3", false, "");
     accessor(g, vv, 8, 5120, 4, "VEC3", true, "");
     accessor(g, vv, 12, 5121, 4, "VEC2", true, "");
-    accessor(g, view(g, quad_idx, sizeof quad_idx, 0), 0, 5123, 6, "SCALAR", false, "");
+    indices(g, quad_idx, 6, 5123);
     write_gltf(g, "quantized", EXTERNAL,
                "\"extensionsUsed\":[\"KHR_mesh_quantization\"],"
                "\"extensionsRequired\":[\"KHR_mesh_quantization\"],"
@@ -369,10 +411,9 @@ static void write_sparse(void)
     snprintf(sparse, sizeof sparse, ",\"sparse\":{\"count\":4,\"indices\":{\"bufferView\":%d,"
              "\"componentType\":5123},\"values\":{\"bufferView\":%d}}", niv, nvv);
     accessor(g, -1, 0, 5126, 4, "VEC3", false, sparse);
-    accessor(g, view(g, quad_idx, sizeof quad_idx, 0), 0, 5123, 6, "SCALAR", false, "");
-    write_gltf(g, "sparse", DATA_URI,
-               ONE_MESH
-               "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":2}]}]");
+    indices(g, quad_idx, 6, 5123);
+    write_one_mesh(g, "sparse", DATA_URI,
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":2}", "");
 }
 
 static void write_flat(void)
@@ -382,30 +423,27 @@ static void write_flat(void)
     static const float p[12] = {-1, 0, 0, 0, 0, 1, 0, 1, 0, 1, 0, 0};
     static const uint16_t idx[6] = {0, 1, 2, 1, 3, 2};
     floats(g, p, 4, 3, "VEC3");
-    accessor(g, view(g, idx, sizeof idx, 0), 0, 5123, 6, "SCALAR", false, "");
-    write_gltf(g, "flat", DATA_URI,
-               ONE_MESH
-               "{\"attributes\":{\"POSITION\":0},\"indices\":1}]}]");
+    indices(g, idx, 6, 5123);
+    write_one_mesh(g, "flat", DATA_URI, "{\"attributes\":{\"POSITION\":0},\"indices\":1}", "");
 }
 
 static void write_alpha(void)
 {
     gltf *g = new_gltf();
     quad_accessors(g);
-    write_gltf(g, "alpha", DATA_URI,
-               ONE_MESH
-               "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":3,\"material\":0},"
-               "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":3,\"material\":1},"
-               "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":3,\"material\":2}]}],"
-               "\"materials\":[{\"alphaMode\":\"OPAQUE\"},"
-               "{\"alphaMode\":\"MASK\",\"alphaCutoff\":0.25},"
-               "{\"alphaMode\":\"BLEND\",\"pbrMetallicRoughness\":{\"baseColorFactor\":"
-               "[0,0,1,0.5]}}]");
+    write_one_mesh(g, "alpha", DATA_URI,
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":3,\"material\":0},"
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":3,\"material\":1},"
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":3,\"material\":2}",
+                   "\"materials\":[{\"alphaMode\":\"OPAQUE\"},"
+                   "{\"alphaMode\":\"MASK\",\"alphaCutoff\":0.25},"
+                   "{\"alphaMode\":\"BLEND\",\"pbrMetallicRoughness\":{\"baseColorFactor\":"
+                   "[0,0,1,0.5]}}]");
 }
 
 /* Vertex colours (floats and normalized unsigned bytes), an unlit
  * material, emissive strength, a double-sided one with a texture
- * transform. */
+ * transform, and one whose transform samples TEXCOORD_1. */
 static void write_materials(void)
 {
     gltf *g = new_gltf();
@@ -414,31 +452,36 @@ static void write_materials(void)
     floats(g, col, 4, 4, "VEC4");
     static const uint8_t col8[12] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 128, 128, 128};
     accessor(g, view(g, col8, sizeof col8, 0), 0, 5121, 4, "VEC3", true, "");
-    unsigned char *png;
-    int png_size;
-    checker_png(&png, &png_size);
-    static text body;
-    body.n = 0;
-    add(&body,
+    static const float uv1[8] = {0.25f, 0.5f, 0.5f, 0.5f, 0.5f, 0.25f, 0.25f, 0.25f};
+    floats(g, uv1, 4, 2, "VEC2");                                                  /* 6 */
+    const png_out *png = checker_png();
+    static text rest;
+    rest.n = 0;
+    add(&rest,
         "\"extensionsUsed\":[\"KHR_materials_unlit\",\"KHR_materials_emissive_strength\","
         "\"KHR_texture_transform\",\"EXT_mote_unknown\"],"
-        ONE_MESH
-        "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"COLOR_0\":4},\"indices\":3,\"material\":0},"
-        "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"COLOR_0\":5},\"indices\":3,\"material\":1},"
-        "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"TEXCOORD_0\":2},\"indices\":3,"
-        "\"material\":2}]}],"
         "\"materials\":[{\"extensions\":{\"KHR_materials_unlit\":{}},\"pbrMetallicRoughness\":"
         "{\"baseColorFactor\":[0.5,0.5,0.5,1]}},"
         "{\"emissiveFactor\":[1,0.5,0],\"extensions\":{\"KHR_materials_emissive_strength\":"
         "{\"emissiveStrength\":0.5}}},"
         "{\"doubleSided\":true,\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0,"
         "\"extensions\":{\"KHR_texture_transform\":{\"offset\":[0.5,0],\"scale\":[2,1],"
-        "\"rotation\":1.5707963}}}}}],"
+        "\"rotation\":1.5707963}}}}},"
+        "{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0,\"texCoord\":0,"
+        "\"extensions\":{\"KHR_texture_transform\":{\"texCoord\":1,\"scale\":[2,2]}}}}}],"
         "\"textures\":[{\"source\":0,\"sampler\":0}],\"samplers\":[{\"wrapS\":33648,"
         "\"wrapT\":33071}],\"images\":[{\"uri\":\"data:image/png;base64,");
-    base64(&body, png, (size_t)png_size);
-    add(&body, "\"}]");
-    write_gltf(g, "materials", EXTERNAL, body.s);
+    base64(&rest, png->data, png->size);
+    add(&rest, "\"}]");
+    write_one_mesh(g, "materials", EXTERNAL,
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"COLOR_0\":4},\"indices\":3,"
+                   "\"material\":0},"
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"COLOR_0\":5},\"indices\":3,"
+                   "\"material\":1},"
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"TEXCOORD_0\":2},\"indices\":3,"
+                   "\"material\":2},"
+                   "{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"TEXCOORD_0\":2,"
+                   "\"TEXCOORD_1\":6},\"indices\":3,\"material\":3}", rest.s);
 }
 
 /* A parent turned 90 degrees about y and moved, a child by matrix; a
@@ -499,7 +542,7 @@ static void write_demo(void)
     static const float pcol[15] = {1, 1, 0.2f, 1, 0.1f, 0.1f, 0.1f, 1, 0.1f, 0.1f, 0.2f, 1,
                                    1, 0.1f, 1};
     floats(g, pyr, 5, 3, "VEC3");           /* 3: no normals: flat ones */
-    accessor(g, view(g, fan, sizeof fan, 0), 0, 5121, 6, "SCALAR", false, "");   /* 4 */
+    indices(g, fan, 6, 5121);   /* 4 */
     floats(g, pcol, 5, 3, "VEC3");          /* 5 */
     static const float floor_p[12] = {-3, 0, 3, 3, 0, 3, 3, 0, -3, -3, 0, -3};
     static const float floor_n[12] = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
@@ -507,10 +550,8 @@ static void write_demo(void)
     floats(g, floor_p, 4, 3, "VEC3");       /* 6 */
     floats(g, floor_n, 4, 3, "VEC3");       /* 7 */
     floats(g, floor_uv, 4, 2, "VEC2");      /* 8 */
-    accessor(g, view(g, quad_idx, sizeof quad_idx, 0), 0, 5123, 6, "SCALAR", false, "");
-    unsigned char *png;
-    int png_size;
-    checker_png(&png, &png_size);
+    indices(g, quad_idx, 6, 5123);
+    const png_out *png = checker_png();
     static text body;
     body.n = 0;
     add(&body,
@@ -538,7 +579,7 @@ static void write_demo(void)
         "\"baseColorTexture\":{\"index\":0}}}],"
         "\"textures\":[{\"source\":0,\"sampler\":0}],\"samplers\":[{\"magFilter\":9728}],"
         "\"images\":[{\"bufferView\":%d,\"mimeType\":\"image/png\"}]",
-        view(g, png, (size_t)png_size, 0));
+        view(g, png->data, png->size, 0));
     write_gltf(g, "demo", GLB, body.s);
 }
 
@@ -552,6 +593,7 @@ int main(int argc, char **argv)
     write_quads();
     write_textured();
     write_strips_and_fans();
+    write_lines();
     write_quantized();
     write_sparse();
     write_flat();

@@ -8,6 +8,7 @@
  *
  *   mote-bake SCENE -o scene.h [--format rgb565|rgba8888|grey8]
  *             [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]
+ *             [--compact] [--normal-bits 8|16]
  *
  * Floats are written as C99 hexadecimal literals, so the baked scene is the
  * loaded one bit for bit. --size is the frame the camera's aspect is made
@@ -16,6 +17,13 @@
  * camera (the others hidden), with a warning: the header has no camera
  * of its own to choose by. --texture-size resamples every texture to WxH
  * with a box filter, so that a large image fits a small chip's flash.
+ * --compact writes each mesh's vertices as integers (mote_compact): int16
+ * positions and uvs with a per-mesh scale and offset per axis (the box of
+ * the mesh's values in 65535 steps), normals as int8 (--normal-bits 16:
+ * int16) and 16-bit indices; the header's comment above each mesh gives
+ * the largest error of its positions, uvs and normals. A mesh with a
+ * non-finite coordinate stays in floats, and one of more than 65536
+ * vertices keeps 32-bit indices.
  *
  * The header always compiles as C99: each texture is an array of its
  * texel type as long as its texels, in a union with a uint32_t so that it
@@ -54,6 +62,8 @@ typedef struct baker {
     int *vertex_array;            /* per mesh: which vertices array it uses, or -1 */
     int *index_array;             /* per mesh: which indices array it uses, or -1 */
     int *color_array;             /* per mesh: which colors array it uses, or -1 */
+    bool compact;                 /* --compact */
+    int normal_bits;              /* --normal-bits: 8 or 16 */
 } baker;
 
 static void usage(FILE *out)
@@ -61,11 +71,13 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: mote-bake SCENE -o OUT.h [--format rgb565|rgba8888|grey8]\n"
             "                 [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]\n"
+            "                 [--compact] [--normal-bits 8|16]\n"
             "Writes a C header with the scene's meshes, textures (in FORMAT, default\n"
             "rgb565), camera and lights as const mote structs (identifiers NAME_*,\n"
             "default scene) for a frame of WxH pixels (default 320x240), of at most\n"
             "N bytes (default %zu). --texture-size resamples every texture to WxH\n"
-            "(a box filter).\n", (size_t)DEFAULT_MAX_BYTES);
+            "(a box filter). --compact writes int16 positions and uvs, int8 normals\n"
+            "(--normal-bits 16: int16) and 16-bit indices.\n", (size_t)DEFAULT_MAX_BYTES);
 }
 
 /* Appends printf output to the header, up to b->max_bytes. */
@@ -284,6 +296,125 @@ static void write_vertices(baker *b, const mote_mesh *m, int array)
     put(b, "};\n\n");
 }
 
+/* Whether mesh m's vertices bake as integers: --compact, and every
+ * coordinate finite. */
+static bool compactable(const baker *b, const mote_mesh *m)
+{
+    if (!b->compact || !m->vertices)
+        return false;
+    for (uint32_t i = 0; i < m->vertex_count; i++) {
+        const mote_vertex *v = &m->vertices[i];
+        for (int k = 0; k < 8; k++)
+            if (!isfinite((&v->position[0])[k]))
+                return false;
+    }
+    return true;
+}
+
+/* The scale and offset that put the values v[i * stride] (i < n) on
+ * -32767..32767 steps: the box's centre and half its size in 32767ths. */
+static void quantiser(const float *v, uint32_t n, int stride, float *scale, float *offset)
+{
+    double lo = 0, hi = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        double x = v[(size_t)i * (size_t)stride];
+        if (i == 0 || x < lo) lo = x;
+        if (i == 0 || x > hi) hi = x;
+    }
+    *offset = (float)(0.5 * (lo + hi));
+    /* a hair more than half the box, so that rounding the offset keeps
+     * every value within 32767 steps */
+    double half = hi - lo > 0 ? 0.5 * (hi - lo) * (1.0 + 1e-6) + fabs((double)*offset - 0.5 * (lo + hi)) : 0;
+    *scale = (float)(half / 32767.0);
+}
+
+/* round((x - offset) / scale) within int16's symmetric range */
+static long quantise(float x, float scale, float offset)
+{
+    if (scale == 0.0f)
+        return 0;
+    double q = floor(((double)x - offset) / scale + 0.5);
+    return q > 32767 ? 32767 : q < -32767 ? -32767 : (long)q;
+}
+
+/* A compactable mesh's vertices as mote_compact's arrays (positions,
+ * normals, uvs), with the largest errors they make in the comment. */
+static void write_compact_vertices(baker *b, const mote_mesh *m, int array)
+{
+    const uint32_t n = m->vertex_count;
+    float scale[3], offset[3], uv_scale[2], uv_offset[2];
+    for (int k = 0; k < 3; k++)
+        quantiser(&m->vertices[0].position[k], n, 8, &scale[k], &offset[k]);
+    for (int k = 0; k < 2; k++)
+        quantiser(&m->vertices[0].uv[k], n, 8, &uv_scale[k], &uv_offset[k]);
+    const double nmax = b->normal_bits == 16 ? 32767.0 : 127.0;
+    double perr = 0, uverr = 0, nerr = 0;
+    put(b, "static const int16_t %s_positions%d[%u] = {\n", b->name, array, (unsigned)(3 * n));
+    for (uint32_t i = 0; i < n; i++) {
+        for (int k = 0; k < 3; k++) {
+            long q = quantise(m->vertices[i].position[k], scale[k], offset[k]);
+            double back = (double)q * scale[k] + offset[k], e = fabs(back - m->vertices[i].position[k]);
+            perr = e > perr ? e : perr;
+            put(b, "%ld,", q);
+        }
+        put(b, "%s", i % 8 == 7 ? "\n" : " ");
+    }
+    put(b, "\n};\n\nstatic const int%d_t %s_normals%d[%u] = {\n", b->normal_bits, b->name, array,
+        (unsigned)(3 * n));
+    for (uint32_t i = 0; i < n; i++) {
+        const float *nv = m->vertices[i].normal;
+        double len = sqrt((double)nv[0] * nv[0] + (double)nv[1] * nv[1] + (double)nv[2] * nv[2]);
+        long q[3] = {0, 0, 0};
+        if (len > 0) {
+            double dot = 0, qlen = 0;
+            for (int k = 0; k < 3; k++) {
+                q[k] = (long)floor(nv[k] / len * nmax + 0.5);
+                dot += (double)q[k] * nv[k] / len;
+                qlen += (double)q[k] * q[k];
+            }
+            double c = qlen > 0 ? dot / sqrt(qlen) : -1;
+            double angle = acos(c > 1 ? 1 : c < -1 ? -1 : c);
+            nerr = angle > nerr ? angle : nerr;
+        }
+        put(b, "%ld,%ld,%ld,%s", q[0], q[1], q[2], i % 8 == 7 ? "\n" : " ");
+    }
+    put(b, "\n};\n\nstatic const int16_t %s_uvs%d[%u] = {\n", b->name, array, (unsigned)(2 * n));
+    for (uint32_t i = 0; i < n; i++) {
+        for (int k = 0; k < 2; k++) {
+            long q = quantise(m->vertices[i].uv[k], uv_scale[k], uv_offset[k]);
+            double e = fabs((double)q * uv_scale[k] + uv_offset[k] - m->vertices[i].uv[k]);
+            uverr = e > uverr ? e : uverr;
+            put(b, "%ld,", q);
+        }
+        put(b, "%s", i % 8 == 7 ? "\n" : " ");
+    }
+    put(b, "\n};\n\n/* compact vertices %d: positions within %.3g units of the loaded ones, uvs "
+           "within %.3g, normals within %.3g degrees */\n", array, perr, uverr, nerr * 57.29577951308232);
+    put(b, "#define %s_COMPACT%d_SCALES \\\n    .scale = ", b->name, array);
+    put_floats(b, scale, 3);
+    put(b, ", .offset = ");
+    put_floats(b, offset, 3);
+    put(b, ", \\\n    .uv_scale = ");
+    put_floats(b, uv_scale, 2);
+    put(b, ", .uv_offset = ");
+    put_floats(b, uv_offset, 2);
+    put(b, "\n\n");
+}
+
+/* The mote_compact of mesh i: its vertex array's integers and, where they
+ * fit, its indices in 16 bits. */
+static void write_compact(baker *b, int i)
+{
+    const mote_mesh *m = &b->scene->meshes[i];
+    int va = b->vertex_array[i], ia = b->index_array[i];
+    put(b, "static const mote_compact %s_compact%d = {\n    .positions = %s_positions%d,\n"
+           "    .normals%d = %s_normals%d,\n    .uvs = %s_uvs%d,\n", b->name, i, b->name, va,
+        b->normal_bits, b->name, va, b->name, va);
+    if (ia >= 0 && m->vertex_count <= 65536)
+        put(b, "    .indices = %s_indices%d,\n", b->name, ia);
+    put(b, "    %s_COMPACT%d_SCALES,\n};\n\n", b->name, va);
+}
+
 static void write_colors(baker *b, const mote_mesh *m, int array)
 {
     put(b, "static const mote_rgba %s_colors%d[%u] = {\n", b->name, array,
@@ -299,7 +430,10 @@ static void write_colors(baker *b, const mote_mesh *m, int array)
 
 static void write_indices(baker *b, const mote_mesh *m, int array)
 {
-    put(b, "static const uint32_t %s_indices%d[%u] = {\n", b->name, array, (unsigned)m->index_count);
+    /* compact meshes sharing the array all have its vertex count */
+    const bool short_indices = compactable(b, m) && m->vertex_count <= 65536;
+    put(b, "static const uint%d_t %s_indices%d[%u] = {\n", short_indices ? 16 : 32, b->name, array,
+        (unsigned)m->index_count);
     for (uint32_t i = 0; i < m->index_count; i++)
         put(b, "%u,%s", (unsigned)m->indices[i], i % 16 == 15 ? "\n" : "");
     put(b, "\n};\n\n");
@@ -311,11 +445,14 @@ static void write_mesh(baker *b, int i)
     const mote_mesh *m = &s->meshes[i];
     const mote_material *mat = &m->material;
     char buf[40];
+    const bool compact = b->vertex_array[i] >= 0 && compactable(b, m);
     put(b, "    { /* %d */\n", i);
-    if (b->vertex_array[i] >= 0)
+    if (compact)
+        put(b, "        .compact = &%s_compact%d,\n", b->name, i);
+    else if (b->vertex_array[i] >= 0)
         put(b, "        .vertices = %s_vertices%d,\n", b->name, b->vertex_array[i]);
     put(b, "        .vertex_count = %u,\n", (unsigned)m->vertex_count);
-    if (b->index_array[i] >= 0)
+    if (b->index_array[i] >= 0 && !(compact && m->vertex_count <= 65536))
         put(b, "        .indices = %s_indices%d,\n", b->name, b->index_array[i]);
     put(b, "        .index_count = %u,\n", (unsigned)m->index_count);
     put(b, "        .position = ");
@@ -353,6 +490,19 @@ static void write_mesh(baker *b, int i)
     if (glows(mat))
         put(b, "            .emissive = {%u, %u, %u, %u},\n", mat->emissive.r, mat->emissive.g,
                 mat->emissive.b, mat->emissive.a);
+    /* highlights and alpha, written only when set (the firmware profile
+     * leaves them out: it draws without and counts them) */
+    if (mat->specular.r | mat->specular.g | mat->specular.b)
+        put(b, "            .specular = {%u, %u, %u, %u},\n            .specular_power = %s,\n",
+            mat->specular.r, mat->specular.g, mat->specular.b, mat->specular.a, flt(buf, mat->specular_power));
+    if (mat->alpha_mode > MOTE_ALPHA_OPAQUE && mat->alpha_mode < MOTE_ALPHA_COUNT) {
+        static const char *const modes[MOTE_ALPHA_COUNT] = {"", "", "MOTE_ALPHA_TEST", "MOTE_ALPHA_BLEND",
+                                                            "MOTE_ALPHA_TEST_AND_BLEND"};
+        put(b, "            .alpha_mode = %s,\n            .alpha = %s,\n            .alpha_set = %s,\n",
+            modes[mat->alpha_mode], flt(buf, mat->alpha), tf(mat->alpha_set));
+        put(b, "            .use_texture_alpha = %s,\n            .alpha_cutoff = %s,\n",
+            tf(mat->use_texture_alpha), flt(buf, mat->alpha_cutoff));
+    }
     put(b, "        },\n");
     put(b, "        .bounds_center = ");
     put_floats(b, m->bounds_center, 3);
@@ -371,6 +521,24 @@ static void write_mesh_flags(baker *b, const char *what, const char *comment, co
     put(b, "static const bool %s_%s[%d] = {", b->name, what, n);
     for (int i = 0; i < n; i++)
         put(b, "%s%d", i ? ", " : "", flags && flags[i] ? 1 : 0);
+    put(b, "};\n\n");
+}
+
+/* The scene's per-mesh draw modes as NAME_modes (all MOTE_MODE_DEFAULT,
+ * triangles, when the scene has none) */
+static void write_mesh_modes(baker *b, const mote_mode *modes)
+{
+    static const char *const names[MOTE_MODE_COUNT] = {
+        "MOTE_MODE_DEFAULT", "MOTE_MODE_POINTS", "MOTE_MODE_WIREFRAME", "MOTE_MODE_FLAT",
+        "MOTE_MODE_GOURAUD", "MOTE_MODE_TEXTURED"};
+    const int n = b->scene->mesh_count;
+    put(b, "/* per mesh: triangles (MOTE_MODE_DEFAULT: any mode), or points or lines, drawn "
+           "in this mode (lines with cull = MOTE_CULL_NONE) */\n");
+    put(b, "static const mote_mode %s_modes[%d] = {", b->name, n);
+    for (int i = 0; i < n; i++) {
+        mote_mode m = modes ? modes[i] : MOTE_MODE_DEFAULT;
+        put(b, "%s%s", i ? ", " : "", names[m >= 0 && m < MOTE_MODE_COUNT ? m : 0]);
+    }
     put(b, "};\n\n");
 }
 
@@ -405,10 +573,21 @@ static void write_frame(baker *b, const mote_frame_desc *fr)
         put(b, ",\n            .intensity = %s,\n", flt(buf, l->intensity));
         put(b, "            .range = %s,\n", flt(buf, l->range));
         put(b, "            .spot_angle = %s,\n", flt(buf, l->spot_angle));
-        put(b, "            .spot_exponent = %s,\n        },\n", flt(buf, l->spot_exponent));
+        put(b, "            .spot_exponent = %s,\n", flt(buf, l->spot_exponent));
+        put(b, "            .specular = ");
+        put_floats(b, l->specular, 3);
+        put(b, ",\n        },\n");
     }
     put(b, "    },\n    .light_count = %d,\n    .ambient = ", fr->light_count);
     put_floats(b, fr->ambient, 3);
+    if (fr->fog.mode > MOTE_FOG_NONE && fr->fog.mode < MOTE_FOG_COUNT) {
+        static const char *const fogs[MOTE_FOG_COUNT] = {"", "MOTE_FOG_LINEAR", "MOTE_FOG_EXP", "MOTE_FOG_EXP2"};
+        put(b, ",\n    .fog = {%s, ", fogs[fr->fog.mode]);
+        put_floats(b, fr->fog.color, 3);
+        put(b, ", %s", flt(buf, fr->fog.density));
+        put(b, ", %s", flt(buf, fr->fog.start));
+        put(b, ", %s}", flt(buf, fr->fog.end));
+    }
     put(b, ",\n    .keep_color = %s,\n    .keep_depth = %s,\n};\n\n", tf(fr->keep_color),
             tf(fr->keep_depth));
 }
@@ -527,7 +706,10 @@ static void bake(baker *b, int width, int height, const char *source)
     for (int a = 0; a < nv; a++)
         for (int i = 0; i < s->mesh_count; i++)
             if (b->vertex_array[i] == a) {
-                write_vertices(b, &s->meshes[i], a);
+                if (compactable(b, &s->meshes[i]))
+                    write_compact_vertices(b, &s->meshes[i], a);
+                else
+                    write_vertices(b, &s->meshes[i], a);
                 break;
             }
     for (int a = 0; a < nc; a++)
@@ -542,16 +724,20 @@ static void bake(baker *b, int width, int height, const char *source)
                 write_indices(b, &s->meshes[i], a);
                 break;
             }
+    for (int i = 0; i < s->mesh_count; i++)
+        if (b->vertex_array[i] >= 0 && compactable(b, &s->meshes[i]))
+            write_compact(b, i);
     if (s->mesh_count > 0) {
         put(b, "static const mote_mesh %s_meshes[%d] = {\n", b->name, s->mesh_count);
         for (int i = 0; i < s->mesh_count; i++)
             write_mesh(b, i);
         put(b, "};\n\n");
-        /* culling and lighting are draw options, not mesh fields: the
+        /* culling, lighting and modes are draw options, not mesh fields: the
          * firmware reads these to draw a mesh as mote_scene_draw_desc would */
         write_mesh_flags(b, "two_sided", "draw with cull = MOTE_CULL_NONE (backFaceCulling false)",
                          s->two_sided);
         write_mesh_flags(b, "unlit", "draw with unlit = true (disableLighting)", s->unlit);
+        write_mesh_modes(b, s->modes);
     }
 
     mote_frame_desc frame;
@@ -646,6 +832,8 @@ int main(int argc, char **argv)
     mote_format format = MOTE_FORMAT_RGB565;
     int width = 320, height = 240, texture_width = 0, texture_height = 0;
     size_t max_bytes = DEFAULT_MAX_BYTES;
+    bool compact = false;
+    int normal_bits = 8;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         bool has_value = i + 1 < argc;
@@ -675,6 +863,15 @@ int main(int argc, char **argv)
                         MOTE_MAX_SIZE, argv[i]);
                 return 2;
             }
+        } else if (!strcmp(a, "--compact")) {
+            compact = true;
+        } else if (!strcmp(a, "--normal-bits") && has_value) {
+            const char *v = argv[++i];
+            if (strcmp(v, "8") && strcmp(v, "16")) {
+                fprintf(stderr, "mote-bake: --normal-bits wants 8 or 16, got '%s'\n", v);
+                return 2;
+            }
+            normal_bits = atoi(v);
         } else if (!strcmp(a, "--max-bytes") && has_value) {
             const char *v = argv[++i];
             char *end;
@@ -690,7 +887,8 @@ int main(int argc, char **argv)
         } else {
             if (a[0] == '-' && !has_value && (!strcmp(a, "-o") || !strcmp(a, "--name")
                                               || !strcmp(a, "--format") || !strcmp(a, "--size")
-                                              || !strcmp(a, "--texture-size") || !strcmp(a, "--max-bytes")))
+                                              || !strcmp(a, "--texture-size") || !strcmp(a, "--max-bytes")
+                                              || !strcmp(a, "--normal-bits")))
                 fprintf(stderr, "mote-bake: %s needs a value\n", a);
             else if (a[0] == '-')
                 fprintf(stderr, "mote-bake: unknown option %s\n", a);
@@ -769,7 +967,7 @@ int main(int argc, char **argv)
     size_t nt = (size_t)(scene.texture_count > 0 ? scene.texture_count : 1);
     baker b = {NULL, 0, 0, max_bytes, false, false, name, format, texture_width, texture_height, &scene,
                calloc(nt, sizeof(int)),
-               calloc(n, sizeof(int)), calloc(n, sizeof(int)), calloc(n, sizeof(int))};
+               calloc(n, sizeof(int)), calloc(n, sizeof(int)), calloc(n, sizeof(int)), compact, normal_bits};
     if (b.texture_slot && b.vertex_array && b.index_array && b.color_array)
         bake(&b, width, height, in);
     else

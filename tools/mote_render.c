@@ -6,12 +6,13 @@
  *               [--rotate rx,ry,rz]
  *               [--frames N] [--threads T] [--spin DEGREES]
  *               [--perspective correct|affine|subspan] [--filter nearest|bilinear]
+ *               [--mip none|triangle|pixel|trilinear]
  *               [--subpixel-bits N] [--full-clear] [--allow-missing-textures]
  *               [--near N] [--far F] [--max-triangles N] [--warnings|-v]
  *
- * The device bins triangles into an arena and rasterises the tiles on OpenMP
- * threads (mote_parallel_openmp; with --threads 1 on the calling thread, the
- * serial path). With --frames N it renders one warm-up
+ * The device bins triangles into an arena and rasterises the tiles on a
+ * pool of threads (mote_parallel_pool, the calling thread among them; with
+ * --threads 1 on the calling thread alone, the serial path). With --frames N it renders one warm-up
  * frame and then N timed frames (begin, draws, end: no loading, no writing),
  * turning the scene --spin degrees about the world y axis each frame, and
  * prints "ms/frame: median X (min Y, max Z)". The image written is always
@@ -84,6 +85,10 @@ static void usage(FILE *out)
             "  --threads T             rasteriser threads (default: all)\n"
             "  --perspective P         correct|affine|subspan (default correct)\n"
             "  --filter F              nearest|bilinear (default nearest)\n"
+            "  --mip M                 none|triangle|pixel|trilinear: texels from the mip level\n"
+            "                          nearest each triangle's or pixel's scale,\n"
+            "                          or the two around it blended\n"
+            "                          (default none)\n"
             "  --subpixel-bits N       snapping grid, 4..8 (default 8)\n"
             "  --full-clear            clear the whole frame each time (default: only the tiles\n"
             "                          drawn into since their last clear)\n"
@@ -179,9 +184,11 @@ static int parse_args(int argc, char **argv, options *o)
                                                     MOTE_PERSPECTIVE_SUBSPAN};
     static const char *const filters[] = {"nearest", "bilinear", NULL};
     static const mote_filter filter_values[] = {MOTE_FILTER_NEAREST, MOTE_FILTER_BILINEAR};
+    static const char *const mips[] = {"none", "triangle", "pixel", "trilinear", NULL};
+    static const mote_mip mip_values[] = {MOTE_MIP_NONE, MOTE_MIP_TRIANGLE, MOTE_MIP_PIXEL, MOTE_MIP_TRILINEAR};
     static const char *const valued[] = {"-o", "--size", "--mode", "--camera", "--fov", "--ortho",
                                          "--rotate", "--frames", "--threads", "--spin",
-                                         "--perspective", "--filter", "--max-triangles",
+                                         "--perspective", "--filter", "--mip", "--max-triangles",
                                          "--subpixel-bits", "--near", "--far", NULL};
 
     memset(o, 0, sizeof *o);
@@ -266,6 +273,10 @@ static int parse_args(int argc, char **argv, options *o)
             if ((k = pick(v, persp)) < 0)
                 return fail("--perspective \"%s\": expected correct, affine or subspan", v);
             o->draw.perspective = persp_values[k];
+        } else if (strcmp(a, "--mip") == 0) {
+            if ((k = pick(v, mips)) < 0)
+                return fail("--mip \"%s\": expected none, triangle, pixel or trilinear", v);
+            o->draw.mip = mip_values[k];
         } else if (strcmp(a, "--filter") == 0) {
             if ((k = pick(v, filters)) < 0)
                 return fail("--filter \"%s\": expected nearest or bilinear", v);
@@ -388,17 +399,21 @@ static void pose_meshes(const mote_scene *scene, mote_mesh *out, const float rot
 }
 
 /* meshes: the scene's, posed (same order, so the scene's per-mesh draw
- * options still apply) */
+ * options still apply); drawn in Babylon.js's order (opaque, alpha
+ * tested, then blended from back to front), or the scene's when that
+ * cannot be had */
 static mote_result render_frame(mote_device *dev, const mote_frame_desc *frame,
                                 const mote_scene *scene, const mote_mesh *meshes,
                                 const mote_draw_desc *draw)
 {
     mote_result r = mote_begin(dev, frame);
-    for (int i = 0; i < scene->mesh_count && r == MOTE_OK; i++) {
-        mote_draw_desc d;
-        mote_scene_draw_desc(scene, i, draw, &d);
-        r = mote_draw(dev, &meshes[i], &d);
+    int *order = malloc((size_t)(scene->mesh_count > 0 ? scene->mesh_count : 1) * sizeof *order);
+    int n = order ? mote_scene_draw_order(scene, meshes, &frame->camera, order) : 0;
+    for (int k = 0; k < scene->mesh_count && r == MOTE_OK; k++) {
+        int i = n == scene->mesh_count ? order[k] : k;
+        r = mote_scene_draw(dev, scene, meshes, i, draw);
     }
+    free(order);
     mote_result e = mote_end(dev);
     return r != MOTE_OK ? r : e;
 }
@@ -472,6 +487,7 @@ int main(int argc, char **argv)
     void *arena = malloc(arena_size);
     mote_mesh *posed = calloc((size_t)scene.mesh_count + 1, sizeof *posed);
     double *times = calloc((size_t)o.frames + 1, sizeof *times);
+    mote_pool *pool = NULL;
     if (!color || !depth || !arena || !posed || !times) {
         fprintf(stderr, "mote-render: out of memory for a %dx%d image and %zu triangles\n",
                 o.width, o.height, triangles);
@@ -492,8 +508,17 @@ int main(int argc, char **argv)
     desc.clear_drawn_tiles_only = !o.full_clear;
     /* one thread: the serial path, which cuts no draw into pieces for
      * threads that are not there */
-    desc.parallel_for = o.threads == 1 ? NULL : mote_parallel_openmp;
-    desc.parallel_user = &o.threads;
+    if (o.threads != 1) {
+        char msg[256];
+        mote_pool_desc pd = {o.threads, NULL, NULL};
+        r = mote_pool_create(&pd, &pool, msg, sizeof msg);
+        if (r != MOTE_OK) {
+            fprintf(stderr, "mote-render: %s\n", msg);
+            goto done;
+        }
+        desc.parallel_for = mote_parallel_pool;
+        desc.parallel_user = pool;
+    }
     r = mote_device_init(&dev, &desc);
     if (r != MOTE_OK) {
         fprintf(stderr, "mote-render: cannot set up the device: %s\n", mote_result_string(r));
@@ -580,6 +605,7 @@ int main(int argc, char **argv)
     exit_code = 0;
 
 done:
+    mote_pool_destroy(pool);
     free(times);
     free(posed);
     free(arena);

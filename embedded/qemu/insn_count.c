@@ -31,6 +31,10 @@
  * middle of one overcounts by the rest of that block; one vCPU only (the
  * firmware runs on one).
  *
+ * With profile=FILE it also counts each translated block's instructions
+ * over the whole run (markers or not) and writes "ADDRESS COUNT" lines to
+ * FILE at exit, which embedded/profile.sh sums by function.
+ *
  * Debian ships no qemu-plugin.h: the few declarations used are below, as
  * QEMU's plugin API version 1 (qemu 7.2) defines them.
  */
@@ -105,11 +109,36 @@ static void on_stop(unsigned int vcpu_index, void *userdata)
     }
 }
 
+/* profile=FILE: instructions executed by blocks starting at each address,
+ * in an open-addressed table (a block translated again keeps its entry) */
+#define PROFILE_SLOTS (1u << 16)
+typedef struct profile_slot { uint64_t pc, insns; } profile_slot;
+static profile_slot *profile;
+static const char *profile_path;
+static bool profile_full;
+
+static uint64_t *profile_counter(uint64_t pc)
+{
+    uint32_t h = (uint32_t)((pc * 0x9e3779b97f4a7c15u) >> 48) & (PROFILE_SLOTS - 1);
+    for (uint32_t i = 0; i < PROFILE_SLOTS; i++, h = (h + 1) & (PROFILE_SLOTS - 1)) {
+        profile_slot *s = &profile[h];
+        if (s->pc == pc + 1 || s->pc == 0) {
+            s->pc = pc + 1;       /* 0 marks a free slot: address 0 is stored as 1 */
+            return &s->insns;
+        }
+    }
+    profile_full = true;
+    return NULL;
+}
+
 static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
 {
     (void)id;
     uint64_t pc = qemu_plugin_tb_vaddr(tb);
     size_t n = qemu_plugin_tb_n_insns(tb);
+    uint64_t *slot = profile ? profile_counter(pc) : NULL;
+    if (slot)
+        qemu_plugin_register_vcpu_tb_exec_inline(tb, QEMU_PLUGIN_INLINE_ADD_U64, slot, n);
     if (pc == start_addr)
         qemu_plugin_register_vcpu_tb_exec_cb(tb, on_start, QEMU_PLUGIN_CB_NO_REGS, (void *)(uintptr_t)n);
     else if (pc == stop_addr)
@@ -129,6 +158,19 @@ static void on_exit(qemu_plugin_id_t id, void *userdata)
         snprintf(line, sizeof line, "insn_count: counted %" PRIu64 " instructions in %" PRIu64
                                     " intervals, %" PRIu64 " in all\n", counted, intervals, total);
     qemu_plugin_outs(line);
+    if (!profile)
+        return;
+    FILE *f = fopen(profile_path, "w");
+    if (!f || profile_full) {
+        qemu_plugin_outs(f ? "insn_count: the profile table overflowed\n" : "insn_count: cannot write the profile\n");
+        if (f)
+            fclose(f);
+        return;
+    }
+    for (uint32_t i = 0; i < PROFILE_SLOTS; i++)
+        if (profile[i].pc)
+            fprintf(f, "%" PRIx64 " %" PRIu64 "\n", profile[i].pc - 1, profile[i].insns);
+    fclose(f);
 }
 
 /* "name=0x..." to an address; false when the argument is not that one. */
@@ -155,13 +197,19 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_
             have_start = true;
         else if (parse_addr(argv[i], "stop", &stop_addr))
             have_stop = true;
+        else if (strncmp(argv[i], "profile=", 8) == 0 && argv[i][8])
+            profile_path = argv[i] + 8;
         else {
-            fprintf(stderr, "insn_count: unknown argument '%s' (start=ADDR,stop=ADDR)\n", argv[i]);
+            fprintf(stderr, "insn_count: unknown argument '%s' (start=ADDR,stop=ADDR[,profile=FILE])\n", argv[i]);
             return -1;
         }
     }
     if (!have_start || !have_stop || start_addr == stop_addr) {
         fprintf(stderr, "insn_count: needs start=ADDR,stop=ADDR, two different addresses\n");
+        return -1;
+    }
+    if (profile_path && !(profile = calloc(PROFILE_SLOTS, sizeof *profile))) {
+        fprintf(stderr, "insn_count: no memory for the profile\n");
         return -1;
     }
     qemu_plugin_register_vcpu_tb_trans_cb(id, on_translate);

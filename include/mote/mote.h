@@ -52,6 +52,15 @@
  *     With desc.band_bins (2 bytes a triangle) a band sets up only the
  *     triangles that touch it; with desc.color_back and desc.flush_wait the
  *     flush may send one buffer by DMA while the next band is drawn.
+ *   What a frame in bands takes of RAM (docs/embedded.md has the figures of
+ *   the firmware example, which `make bench-embedded` prints):
+ *     band buffers  mote_band_bytes(width, band_height, format, depth_format)
+ *                   (twice the colour part with desc.color_back)
+ *     band bins     mote_band_bins_bytes(height, band_height, triangles)
+ *     device        sizeof(mote_device): mostly MOTE_MAX_DRAWS recorded draws
+ *     stack         about 8.5 KB at worst on 32-bit cores, 5.4 KB of it the
+ *                   vertex cache of MOTE_VERTEX_CACHE entries (`make cross`
+ *                   prints the bound, embedded/stack-usage.sh)
  *
  * ERRORS
  *   Every function that can fail returns a mote_result; mote_result_string()
@@ -123,18 +132,19 @@
  *   bound (the reasoning is at the top of src/core/setup.c).
  *
  * WHERE FLOAT IS USED
- *   The vertex stage (transform, lighting, clipping, perspective divide) and
- *   triangle setup (a few divisions per triangle) use single-precision
- *   float; there is no double anywhere in the core. Vertices and lights
+ *   The vertex stage (transform, lighting, clipping, perspective divide)
+ *   uses single-precision float; triangle setup is integer (1/w reaches it
+ *   as mantissa and exponent); there is no double anywhere in the core. Vertices and lights
  *   are taken relative to the camera's position (one subtraction of it
  *   from each mesh's translation and light position, exact when the two
  *   are close), so a scene far from the origin loses nothing beyond what
  *   its own float coordinates hold. Everything per pixel
  *   (edge walking, interpolation, texturing, depth, pixel formats) is
- *   integer. On a core without an FPU (Cortex-M0+) the float work is done
- *   by libgcc's soft-float routines, per vertex and per triangle, never per
- *   pixel: `make cross` prints the flash they and 64-bit division take
- *   (docs/embedded.md).
+ *   integer. On a core without an FPU (Cortex-M0+, RV32IMAC) the vertex
+ *   stage is integer too by default (MOTE_FIXED_VERTEX): float is left to
+ *   a few dozen operations per draw (the matrices), done by libgcc's
+ *   soft-float routines, never per vertex, triangle or pixel; they and 64-bit division add about 6 KB of flash there
+ *   (`make cross` prints it), against 1 KB on a Cortex-M4F.
  */
 #ifndef MOTE_H
 #define MOTE_H
@@ -158,6 +168,15 @@ extern "C" {
 /* Draws that band mode (or a full-frame device without arena) can record
  * per frame. Each costs about 200 bytes inside mote_device. */
 #define MOTE_MAX_DRAWS 64
+#endif
+
+#ifndef MOTE_VERTEX_CACHE
+/* Entries of the vertex cache a draw keeps on the stack when it has no
+ * arena (full frame without one, and band mode): a power of two, 2 or
+ * more. Each entry is about 120 bytes with the float vertex stage and 170
+ * with the integer one, so 32 take 3.8 or 5.4 KB of stack; 16 halve that
+ * for some vertices transformed twice (docs/embedded.md measures both). */
+#define MOTE_VERTEX_CACHE 32
 #endif
 
 #ifndef MOTE_GUARD_BITS
@@ -189,9 +208,11 @@ extern "C" {
 
 /* Features a small build may leave out (stb-style: define to 0 before this
  * header is seen, for the library and its users alike; all default to 1).
- * Left out, a feature costs no flash, and asking for it at run time gets
- * MOTE_ERR_UNSUPPORTED and draws nothing; everything else draws the same
- * bytes. docs/embedded.md gives the flash each saves on a Cortex-M0+. */
+ * Left out, a feature costs no flash, and asking for it at run time is
+ * refused (MOTE_ERR_UNSUPPORTED, nothing drawn), or drawn without it and
+ * counted in mote_stats.draws_simplified, or ignored, as each says below;
+ * everything else draws the same bytes. docs/embedded.md gives the flash
+ * each saves on a Cortex-M0+ (make switch-sizes). */
 #ifndef MOTE_ENABLE_LINES
 /* MOTE_MODE_WIREFRAME and MOTE_MODE_POINTS (mote_draw refuses them). */
 #define MOTE_ENABLE_LINES 1
@@ -224,10 +245,70 @@ extern "C" {
 /* MOTE_PROJECTION_ORTHOGRAPHIC (mote_begin refuses it). */
 #define MOTE_ENABLE_ORTHOGRAPHIC 1
 #endif
+#ifndef MOTE_ENABLE_ALPHA_TEST
+/* MOTE_ALPHA_TEST: cut-outs from a texture's alpha. Left out, a material
+ * asking for it draws opaque and mote_stats.draws_simplified counts it. */
+#define MOTE_ENABLE_ALPHA_TEST 1
+#endif
+#ifndef MOTE_ENABLE_BLEND
+/* MOTE_ALPHA_BLEND: colour = src a + dst (1 - a). Left out, a material
+ * asking for it draws opaque and mote_stats.draws_simplified counts it. */
+#define MOTE_ENABLE_BLEND 1
+#endif
+#ifndef MOTE_ENABLE_SPECULAR
+/* mote_material.specular: Blinn-Phong highlights, per vertex. Left out, a
+ * draw asking for them is drawn without and counted in
+ * mote_stats.draws_simplified. */
+#define MOTE_ENABLE_SPECULAR 1
+#endif
+#ifndef MOTE_ENABLE_FOG
+/* mote_frame_desc.fog, per vertex. Left out, a fogged draw is drawn
+ * without and counted in mote_stats.draws_simplified. */
+#define MOTE_ENABLE_FOG 1
+#endif
+#ifndef MOTE_ENABLE_MIPMAPS
+/* mote_material.mipmaps and mote_draw_desc.mip. Left out, a draw asking
+ * for them samples level 0 and is counted in mote_stats.draws_simplified. */
+#define MOTE_ENABLE_MIPMAPS 1
+#endif
 #ifndef MOTE_ENABLE_EMISSIVE
 /* mote_material.emissive; left out, it is ignored, as the falloff is (a
  * check that refused it would cost as much as the feature). */
 #define MOTE_ENABLE_EMISSIVE 1
+#endif
+
+#ifndef MOTE_ENABLE_EMISSIVE_MAP
+/* MOTE_LAYER_EMISSIVE (mote_material.layers). Left out, such a layer is
+ * skipped and the draw counted in mote_stats.draws_simplified; so are the
+ * two below. */
+#define MOTE_ENABLE_EMISSIVE_MAP 1
+#endif
+#ifndef MOTE_ENABLE_OPACITY_MAP
+/* MOTE_LAYER_OPACITY. */
+#define MOTE_ENABLE_OPACITY_MAP 1
+#endif
+#ifndef MOTE_ENABLE_SPECULAR_MAP
+/* MOTE_LAYER_SPECULAR (with MOTE_ENABLE_SPECULAR). */
+#define MOTE_ENABLE_SPECULAR_MAP 1
+#endif
+
+/* The vertex stage in integer arithmetic (src/core/vertex_fixed.c):
+ * transform, normals and lighting, clipping, the divide and snapping with
+ * no float operation per vertex, for cores without an FPU, where soft
+ * float made most of a frame's instructions. 1 by default where the
+ * compiler says there is no FPU (ARM without __ARM_FP, RISC-V without
+ * __riscv_flen), else 0; define it either way, for the library and its
+ * users alike. Pixels differ slightly from the float stage's (positions
+ * are taken to 16 bits of the mesh's bounding sphere; docs/accuracy.md
+ * gives the error), but one configuration gives the same bytes on every
+ * target. Points, wireframe, vertex colours and frames with spot lights
+ * or light ranges take the float stage, draw by draw. */
+#ifndef MOTE_FIXED_VERTEX
+#if (defined(__arm__) && !defined(__ARM_FP)) || (defined(__riscv) && !defined(__riscv_flen))
+#define MOTE_FIXED_VERTEX 1
+#else
+#define MOTE_FIXED_VERTEX 0
+#endif
 #endif
 
 /* ---- results ----------------------------------------------------------- */
@@ -304,6 +385,43 @@ typedef enum mote_wrap {
     MOTE_WRAP_COUNT
 } mote_wrap;
 
+/* A texture's mip chain: level 0 the texture, each next one half its
+ * size (a 2x2 box filter), down to 1x1. Only power-of-two textures have
+ * levels past 0. mote_mipmaps_build makes one in memory you give. */
+#define MOTE_MAX_MIPS 17
+typedef struct mote_mipmaps {
+    int count;                    /* levels; 1: the texture alone */
+    mote_texture level[MOTE_MAX_MIPS];
+} mote_mipmaps;
+
+/* Bytes mote_mipmaps_build needs for texture's levels past 0 (packed,
+ * in its format); 0 for one that has none (not a power of two, 1x1, or
+ * invalid). */
+size_t mote_mipmaps_bytes(const mote_texture *texture);
+/* Builds texture's chain into memory (size bytes, aligned to the texel
+ * size) and *out; texture's pixels must stay valid while *out is used.
+ * MOTE_ERR_INVALID_ARGUMENT for a bad texture or NULL out,
+ * MOTE_ERR_OUT_OF_MEMORY when size is below mote_mipmaps_bytes. */
+mote_result mote_mipmaps_build(const mote_texture *texture, void *memory, size_t size, mote_mipmaps *out);
+
+typedef enum mote_mip {
+    MOTE_MIP_DEFAULT = 0,         /* none */
+    MOTE_MIP_NONE,                /* level 0 only */
+    MOTE_MIP_TRIANGLE,            /* per triangle, the level nearest its texel-to-pixel
+                                     scale: round(log2 sqrt(texel area / pixel area));
+                                     every pixel loop */
+    MOTE_MIP_PIXEL,               /* per pixel, the level nearest log2 of the largest
+                                     texel step to the next pixel right or down (the
+                                     screen-space derivative); the generic loop */
+    MOTE_MIP_TRILINEAR,           /* per pixel, the two levels around that log2 L,
+                                     blended (each sampled with the draw's filter):
+                                     level floor(L) x (1 - f) + the next x f, f the
+                                     step's mantissa below its leading bit, in 1/256
+                                     (log2's linear approximation, as GPUs take it);
+                                     Babylon.js's default; the generic loop */
+    MOTE_MIP_COUNT
+} mote_mip;
+
 typedef enum mote_filter {
     MOTE_FILTER_DEFAULT = 0,      /* nearest */
     MOTE_FILTER_NEAREST,
@@ -319,9 +437,91 @@ typedef struct mote_vertex {
     float uv[2];
 } mote_vertex;
 
+/* How a material's alpha draws (Babylon.js's transparencyMode; glTF's
+ * alphaMode). The test compares the texel's alpha (the texture's alpha
+ * channel; 255 for formats without one, and nothing is cut without a
+ * texture) with the cut-off, as Babylon.js's StandardMaterial does; the
+ * blend weighs by the material's alpha, times the texel's when
+ * use_texture_alpha is set (useAlphaFromDiffuseTexture); each 0..255. */
+typedef enum mote_alpha_mode {
+    MOTE_ALPHA_DEFAULT = 0,       /* opaque */
+    MOTE_ALPHA_OPAQUE,            /* alpha ignored */
+    MOTE_ALPHA_TEST,              /* a pixel whose texel alpha is below the
+                                     cut-off is not drawn (no colour, no depth) */
+    MOTE_ALPHA_BLEND,             /* colour = src a + dst (1 - a), on 8-bit
+                                     channels (MOTE_ENABLE_BLEND) */
+    MOTE_ALPHA_TEST_AND_BLEND,    /* both */
+    MOTE_ALPHA_COUNT
+} mote_alpha_mode;
+
+/* Extra texture layers of a material (mote_material.layers), each with a
+ * role, drawn by the generic pixel loop in Babylon.js StandardMaterial's
+ * order. A layer reads the draw's texture coordinates (the mesh's uv)
+ * through its own scale and offset; its texel is sampled at level 0 with
+ * the draw's filter, as the draw's texture is.
+ *   EMISSIVE  the texel's colour x factor is added to the lit colour
+ *             before the draw's texture multiplies it: shade
+ *             min(1, s + texel x factor), s the interpolated shade (with
+ *             vertex colours this adds after they tint, unlike Babylon.js)
+ *   OPACITY   alpha x= the texel's alpha (with from_rgb its luminance,
+ *             (54 r + 183 g + 19 b + 128) >> 8) x factor[0]: both the
+ *             alpha test's value and the blend's weight
+ *   SPECULAR  the highlights (mote_material.specular, per vertex) x the
+ *             texel's colour x factor per pixel; a fogged draw skips it
+ *             (counted in mote_stats.draws_simplified)
+ * A draw with no texture of its own takes layer 0's size and wrap for its
+ * texture coordinates and draws as if its texture were white. */
+typedef enum mote_layer_role {
+    MOTE_LAYER_NONE = 0,          /* ignored */
+    MOTE_LAYER_EMISSIVE,          /* MOTE_ENABLE_EMISSIVE_MAP */
+    MOTE_LAYER_OPACITY,           /* MOTE_ENABLE_OPACITY_MAP */
+    MOTE_LAYER_SPECULAR,          /* MOTE_ENABLE_SPECULAR_MAP */
+    MOTE_LAYER_ROLE_COUNT
+} mote_layer_role;
+
+/* Layers one material may have; more are ignored. */
+#define MOTE_MAX_LAYERS 3
+
+/* mote_layer: one texture layer; zero is the default of each field.
+ *   .role                   MOTE_LAYER_NONE (ignored)
+ *   .texture                required (a layer without a valid one is ignored)
+ *   .wrap_u, .wrap_v        MOTE_WRAP_REPEAT
+ *   .u_scale, .v_scale      1; .u_offset, .v_offset 0 (over the mesh's uv,
+ *                           as the material's own; v_origin_bottom is the
+ *                           material's)
+ *   .factor                 {1, 1, 1} when all three are 0; each 0..64
+ *   .from_rgb               false: opacity from the texel's alpha */
+typedef struct mote_layer {
+    mote_layer_role role;
+    const mote_texture *texture;
+    mote_wrap wrap_u, wrap_v;
+    float u_scale, v_scale;
+    float u_offset, v_offset;
+    float factor[3];
+    bool from_rgb;
+} mote_layer;
+
+/* mote_material: a zeroed one is white, opaque, untextured.
+ *   .color, .color_set      white
+ *   .texture                none
+ *   .wrap_u, .wrap_v        MOTE_WRAP_REPEAT
+ *   .u_scale, .v_scale      1; .u_offset, .v_offset 0
+ *   .v_origin_bottom        false: v = 0 is the top row
+ *   .emissive               none
+ *   .alpha_mode             MOTE_ALPHA_OPAQUE
+ *   .alpha, .alpha_set      1 (opaque): alpha is read only with alpha_set
+ *   .alpha_cutoff           0.4 (Babylon.js's alphaCutOff)
+ *   .specular               none ({0}); .specular_power 64
+ *   .use_texture_alpha      false: blending ignores the texel alpha
+ *   .layers, .layer_count   none (see mote_layer)
+ * Alpha needs MOTE_ENABLE_ALPHA_TEST / MOTE_ENABLE_BLEND; a build without
+ * them draws such a material opaque and counts it (mote_stats.draws_simplified).
+ * Blending is order-dependent: draw opaque meshes first, then alpha-tested
+ * ones, then blended ones from the farthest to the nearest (Babylon.js's
+ * order; mote_scene_draw_order in <mote/mote_io.h> sorts a scene so). */
 typedef struct mote_material {
-    mote_rgba color;              /* diffuse colour; alpha unused; {0} = white when
-                                     color_set is false */
+    mote_rgba color;              /* diffuse colour; alpha unused (see .alpha); {0} =
+                                     white when color_set is false */
     bool color_set;               /* false: white (so a zeroed material is white) */
     const mote_texture *texture;  /* NULL: untextured; so is one of bad size, format, stride or alignment */
     mote_wrap wrap_u, wrap_v;
@@ -330,7 +530,53 @@ typedef struct mote_material {
     bool v_origin_bottom;         /* true: v = 0 addresses the bottom row */
     mote_rgba emissive;           /* added to the lit colour (see Lighting in
                                      CONVENTIONS); alpha unused; {0}: none */
+    mote_alpha_mode alpha_mode;
+    float alpha;                  /* the material's alpha, 0..1 (taken to 0..255,
+                                     rounded); read only when alpha_set */
+    bool alpha_set;
+    bool use_texture_alpha;       /* blending: the alpha is x the texel's
+                                     (Babylon.js's useAlphaFromDiffuseTexture,
+                                     glTF's BLEND with a baseColor texture) */
+    float alpha_cutoff;           /* TEST: texel alpha below it (0..1) is cut;
+                                     0 = 0.4 */
+    /* Blinn-Phong highlights (MOTE_ENABLE_SPECULAR), per vertex, added
+     * after the lit colour x texture as Babylon.js's StandardMaterial
+     * adds them: per light pow(max(0, n.h), specular_power) x the light's
+     * specular colour x intensity x falloff, h halfway between the
+     * directions to the light and to the eye; the sum x this colour.
+     * Gouraud and textured draws only (flat draws have none). */
+    mote_rgba specular;           /* {0}: none; alpha unused */
+    float specular_power;         /* 0 = 64 (Babylon.js's specularPower) */
+    /* texture's mip chain (mote_mipmaps_build), read when the draw's mip
+     * asks for it; NULL: none */
+    const mote_mipmaps *mipmaps;
+    /* extra texture layers (mote_layer), layer_count of them, at most
+     * MOTE_MAX_LAYERS read; NULL: none */
+    const mote_layer *layers;
+    int layer_count;
 } mote_material;
+
+/* A mesh's vertices and indices in little flash, as `mote-bake --compact`
+ * writes them: integers that a draw dequantises by folding the scale and
+ * offset into its matrices (and texture mapping), so that both vertex
+ * stages draw them directly. Per vertex 14 bytes with 8-bit normals (16
+ * with 16-bit ones) instead of mote_vertex's 32, and 2 bytes an index.
+ *   positions  3 per vertex: position = positions x scale + offset, per axis
+ *   normals    3 per vertex, int8 (normals8) or int16 (normals16), their
+ *              direction only (each is normalised); both NULL: zero normals
+ *   uvs        2 per vertex: uv = uvs x uv_scale + uv_offset; NULL: uv 0
+ *   indices    3 per triangle, read when mote_mesh.indices is NULL
+ * mote_mesh.vertex_count and index_count count them as for float meshes;
+ * mote_mesh.vertices is ignored. */
+typedef struct mote_compact {
+    const int16_t *positions;
+    const int8_t *normals8;
+    const int16_t *normals16;
+    const int16_t *uvs;
+    const uint16_t *indices;
+    float scale[3], offset[3];
+    float uv_scale[2], uv_offset[2];
+} mote_compact;
 
 /* A mesh: vertices, triangles (3 indices each) and a transform.
  * world = parent's world * translate(position) * rotate * scale(scaling),
@@ -369,6 +615,9 @@ typedef struct mote_mesh {
      * Last, after the fields every draw reads (shorter code on cores with
      * short load offsets). */
     const mote_rgba *colors;
+    /* The vertices and indices as integers (see mote_compact), or NULL:
+     * vertices and indices above. */
+    const mote_compact *compact;
 } mote_mesh;
 
 /* Computes bounds_center/bounds_radius from the vertices (skips NaN/Inf;
@@ -424,7 +673,27 @@ typedef struct mote_light {
     float spot_angle;             /* spot: the cone's full angle, radians */
     float spot_exponent;          /* spot: inside the cone, the light is scaled
                                      by cos(angle to the axis)^spot_exponent */
+    float specular[3];            /* highlights' colour; {0,0,0} = white */
 } mote_light;
+
+typedef enum mote_fog_mode {
+    MOTE_FOG_NONE = 0,
+    MOTE_FOG_LINEAR,              /* f = (end - d) / (end - start) */
+    MOTE_FOG_EXP,                 /* f = e^-(d density) */
+    MOTE_FOG_EXP2,                /* f = e^-((d density)^2) */
+    MOTE_FOG_COUNT
+} mote_fog_mode;
+
+/* Babylon.js's fog (MOTE_ENABLE_FOG): a pixel becomes colour x f +
+ * fog colour x (1 - f), f clamped to [0, 1], d the distance from the
+ * camera, worked out per vertex and interpolated. Gouraud and textured
+ * draws only (flat draws are not fogged). */
+typedef struct mote_fog {
+    mote_fog_mode mode;
+    float color[3];
+    float density;                /* EXP, EXP2 */
+    float start, end;             /* LINEAR */
+} mote_fog;
 
 /* ---- frames and draws -------------------------------------------------- */
 
@@ -432,6 +701,7 @@ typedef struct mote_light {
  *   .camera                 see mote_camera (up {0,1,0}, fov 0.8, near 0.1, far 100)
  *   .lights, .light_count   none: only the ambient colour lights
  *   .ambient                {0,0,0}
+ *   .fog                    none
  *   .keep_color             false: the colour buffer is cleared
  *   .keep_depth             false: the depth buffer is cleared
  */
@@ -440,6 +710,7 @@ typedef struct mote_frame_desc {
     mote_light lights[MOTE_MAX_LIGHTS];
     int light_count;
     float ambient[3];             /* added to every lit colour */
+    mote_fog fog;
     bool keep_color;              /* true: do not clear the colour buffer */
     bool keep_depth;              /* true: do not clear the depth buffer
                                      (both: full-frame devices; band mode
@@ -462,8 +733,8 @@ typedef enum mote_perspective {
     MOTE_PERSPECTIVE_DEFAULT = 0, /* correct per pixel */
     MOTE_PERSPECTIVE_CORRECT,
     MOTE_PERSPECTIVE_AFFINE,      /* screen-linear: the retro "wobble" */
-    MOTE_PERSPECTIVE_SUBSPAN,     /* 1/w exact every 2^subspan_log2 pixels and at a row's
-                                   * ends, linear between */
+    MOTE_PERSPECTIVE_SUBSPAN,     /* 1/w exact every 2^subspan_log2 pixels from a row's
+                                   * first and at its last, linear between */
     MOTE_PERSPECTIVE_COUNT
 } mote_perspective;
 
@@ -492,8 +763,13 @@ typedef enum mote_cull {
  *   .filter                 MOTE_FILTER_NEAREST
  *   .no_depth_test          false
  *   .no_depth_write         false
+ *   .depth_less_equal       false
+ *   .no_color_write         false
  *   .unlit                  false
  *   .point_color            the material colour (white without one)
+ *   .mip                    MOTE_MIP_NONE (level 0)
+ *   .lights_off             0: every light of the frame lights the draw
+ *   .no_fog                 false
  */
 typedef struct mote_draw_desc {
     mote_mode mode;
@@ -511,6 +787,19 @@ typedef struct mote_draw_desc {
                                      no lights */
     mote_rgba point_color;        /* points and wireframe, which ignore vertex
                                      colours; {0} = material colour */
+    /* bit i set: the frame's light i does not light this draw (Babylon.js's
+     * includedOnlyMeshes / excludedMeshes, a material's
+     * maxSimultaneousLights) */
+    uint32_t lights_off;
+    bool no_fog;                  /* the frame's fog leaves this draw alone */
+    /* A depth pre-pass (Babylon.js's needDepthPrePass) is two draws of a
+     * mesh: no_color_write, which writes only its nearest depths, then
+     * depth_less_equal, which passes where a pixel's depth equals the
+     * stored one, so that only the nearest surface is drawn. They need
+     * MOTE_ENABLE_BLEND (mote_draw refuses them without it). */
+    bool depth_less_equal;
+    bool no_color_write;
+    mote_mip mip;                 /* with material.mipmaps (MOTE_ENABLE_MIPMAPS) */
 } mote_draw_desc;
 
 /* ---- device ------------------------------------------------------------ */
@@ -558,6 +847,7 @@ typedef void (*mote_triangle_hook_fn)(void *user, const int32_t x[3],
  *   .clear_drawn_tiles_only false
  *   .parallel_for, .parallel_user          none: tiles in order on this thread
  *   .triangle_hook, .triangle_hook_user    none
+ *   .no_tile_depth          false: binned tiles skip triangles behind their drawn depth
  */
 typedef struct mote_device_desc {
     int width, height;
@@ -604,6 +894,11 @@ typedef struct mote_device_desc {
     void *parallel_user;
     mote_triangle_hook_fn triangle_hook; /* NULL: none */
     void *triangle_hook_user;
+    /* Binned mode keeps per tile a bound of the depths drawn in it (from
+     * triangles that covered the whole tile) and skips, before walking
+     * its edges, a triangle that is nowhere nearer: the same bytes, fewer
+     * pixels tested. true turns that off (to measure it). */
+    bool no_tile_depth;
 } mote_device_desc;
 
 /* Counters of the last frame: what was drawn and what was skipped. */
@@ -619,6 +914,11 @@ typedef struct mote_stats {
     uint32_t tiles_empty, tiles_drawn;    /* binned mode */
     uint32_t tiles_clear_skipped;         /* clear_drawn_tiles_only: tiles still clear, not cleared */
     uint32_t arena_flushes;               /* binned mode: times the arena filled up */
+    uint32_t tile_triangles_behind;       /* binned mode: a triangle's visits to tiles skipped
+                                             as behind the depth drawn there */
+    uint32_t draws_simplified;            /* asked for a feature the build left out
+                                             (alpha test, blending, specular, fog,
+                                             mipmaps, texture layers): drawn without it */
     uint64_t pixels_tested, pixels_written;
 } mote_stats;
 
@@ -684,7 +984,8 @@ mote_result mote_end(mote_device *dev);
 /* Statistics of the current or last frame (NULL for a NULL device). */
 const mote_stats *mote_device_stats(const mote_device *dev);
 
-/* Arena bytes one binned triangle needs at most (setup record and bin entry). */
+/* Arena bytes one binned triangle needs at most (setup record and bin
+ * entry); 72 more for one with specular highlights or fog. */
 size_t mote_arena_bytes_per_triangle(void);
 
 /* Bytes a band-mode device needs for its buffers (colour + depth), so that

@@ -111,6 +111,10 @@ typedef struct mote_scene {
     int mesh_count;
     mote_texture *textures;       /* meshes[i].material.texture points in here */
     int texture_count;
+    /* each texture's mip chain, built at load (texture_count of them;
+     * count 1 for a texture without levels); materials.mipmaps point in
+     * here, read by draws with mote_draw_desc.mip MOTE_MIP_TRIANGLE */
+    const mote_mipmaps *mipmaps;
     mote_camera camera;           /* the scene's active camera, if has_camera */
     bool has_camera;
     /* camera.fov is the horizontal field of view, which mote_scene_frame
@@ -137,6 +141,13 @@ typedef struct mote_scene {
      * warnings" for those that do not fit. Every one of them, one by one:
      * mote_scene_warning. */
     char warning[256];
+    /* One per mesh, or NULL for triangles throughout: what the mesh's
+     * indices draw. MOTE_MODE_DEFAULT triangles; MOTE_MODE_POINTS its
+     * every vertex, a point each (glTF's POINTS; no indices);
+     * MOTE_MODE_WIREFRAME line segments, each segment (a, b) stored as the
+     * triangle (a, b, b) (glTF's LINES, LINE_STRIP and LINE_LOOP).
+     * mote_scene_draw_desc sets the draw's mode for these. */
+    const mote_mode *modes;
     /* One flag per mesh (mesh_count): drawn with both sides (its material
      * says so). The core's culling is a draw option (mote_draw_desc.cull),
      * not a material property: mote_scene_draw_desc applies these. */
@@ -145,12 +156,38 @@ typedef struct mote_scene {
      * texture x vertex colour (its material says so);
      * mote_scene_draw_desc sets mote_draw_desc.unlit for these. */
     const bool *unlit;
+    /* One flag per mesh, or NULL: drawn without writing depth (its
+     * material says disableDepthWrite); mote_scene_draw_desc applies it. */
+    const bool *no_depth_write;
+    /* One mask per mesh, or NULL: the lights that do not light it
+     * (mote_draw_desc.lights_off: a light's includedOnlyMeshesIds or
+     * excludedMeshesIds, a material's maxSimultaneousLights);
+     * mote_scene_draw_desc applies it. */
+    const uint32_t *lights_off;
+    /* One flag per mesh, or NULL: the fog leaves it alone (its applyFog or
+     * its material's fogEnabled is false); mote_scene_draw_desc applies it. */
+    const bool *no_fog;
+    /* One flag per mesh, or NULL: a blended mesh drawn after a depth
+     * pre-pass (its material says needDepthPrePass), so that only its
+     * nearest surface is blended; mote_scene_draw draws it so. */
+    const bool *depth_pre_pass;
+    /* One per mesh, or NULL: its alphaIndex (FLT_MAX where unsaid), which
+     * orders blended meshes before their distance (mote_scene_draw_order). */
+    const float *alpha_index;
+    /* The scene's fog (fogMode, fogColor, fogDensity, fogStart, fogEnd),
+     * which mote_scene_frame puts in the frame. */
+    mote_fog fog;
     /* The groups of meshes of which one is drawn by the camera's distance
      * (Babylon.js's levels of detail). mote_scene_load chooses for the
      * scene's camera (without one, each base); mote_scene_choose_lod
      * chooses again for any camera. */
     const mote_lod *lods;
     int lod_count;
+    /* One per mesh, or NULL: the mip mode its texture's sampler asks for
+     * (glTF's minFilter: *_MIPMAP_NEAREST MOTE_MIP_PIXEL, *_MIPMAP_LINEAR
+     * MOTE_MIP_TRILINEAR), MOTE_MIP_DEFAULT for none; mote_scene_draw_desc
+     * applies it where the draw leaves mip at its default. */
+    const mote_mip *mip_modes;
     void *files_;                 /* private: the files read (mote_scene_reads_file) */
     void *warnings_;              /* private: every warning (mote_scene_warning) */
     void *storage_;               /* private: owned allocations */
@@ -210,9 +247,37 @@ void mote_scene_fit_planes(const mote_scene *scene, mote_camera *camera);
 
 /* The draw options for scene->meshes[mesh]: *base (NULL: defaults) with
  * cull MOTE_CULL_NONE where the mesh's material has backFaceCulling false,
- * and unlit where it says disableLighting (mote_scene.unlit). */
+ * unlit where it says disableLighting (mote_scene.unlit), no_depth_write
+ * where it says disableDepthWrite, no_fog where the mesh or its material
+ * turns fog off, the mesh's lights_off, and the mode of
+ * a mesh of points or lines (mote_scene.modes) whatever base's, but for
+ * MOTE_MODE_POINTS asked of lines (their vertices are then drawn); lines
+ * are drawn without culling, as a segment has no side. */
 void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_desc *base,
                           mote_draw_desc *out);
+
+/* The order Babylon.js draws the scene's meshes in, for camera: into
+ * order (mesh_count entries), the opaque meshes first, then the
+ * alpha-tested ones, each in the scene's order, then the blended ones
+ * (mote_material.alpha_mode BLEND or TEST_AND_BLEND) by alpha_index, the
+ * smaller first, and within one alpha_index from the farthest to the
+ * nearest, by the distance from the camera's position to the centre of
+ * the mesh's bounding sphere in world space (Babylon.js's RenderingGroup;
+ * ties keep the scene's order). meshes: the scene's, or a
+ * posed copy as below. Returns how many it wrote: mesh_count, or 0 for a
+ * bad argument or when out of memory (then draw in the scene's order).
+ * A program drawing its own meshes with blending sorts them so too. */
+int mote_scene_draw_order(const mote_scene *scene, const mote_mesh *meshes, const mote_camera *camera,
+                          int *order);
+
+/* Draws scene mesh `mesh` of meshes (the scene's, or a posed copy) with
+ * mote_scene_draw_desc's options for base: one mote_draw, or for a mesh
+ * with depth_pre_pass two, its depth alone (no_color_write) and then its
+ * colour where its depth is the nearest (depth_less_equal), as Babylon.js
+ * draws a material that needs a depth pre-pass. Returns mote_draw's
+ * result (MOTE_ERR_INVALID_ARGUMENT for a mesh out of range). */
+mote_result mote_scene_draw(mote_device *dev, const mote_scene *scene, const mote_mesh *meshes, int mesh,
+                            const mote_draw_desc *base);
 
 /* Which level Babylon.js's getLOD draws of scene->lods[lod] for camera:
  * -1 the base, k its levels[k]. The distance is from the camera's
@@ -262,6 +327,40 @@ mote_result mote_write_file(const char *path, const void *data, size_t size,
 /* A mote_parallel_for_fn running tiles on OpenMP threads; user points to an
  * int thread count (NULL or <= 0: all). Without OpenMP it runs serially. */
 void mote_parallel_openmp(void *user, int count, mote_task_fn fn, void *task_arg);
+
+/* A pool of threads that stay between frames, for desc.parallel_for
+ * (mote_parallel_pool, with the pool as desc.parallel_user). The calling
+ * thread works too, and a call returns once its tasks are done: a pool
+ * thread the system has put aside (another process busy on its core)
+ * holds nobody up, so asking for more threads than are free is never
+ * slower than one; an OpenMP region waits for its latest thread. Pool
+ * threads spin a few microseconds after a call, then sleep. One call at
+ * a time: a call made while another runs (from another thread, or from
+ * a task) runs its tasks on its own thread. Same bytes for any count.
+ *
+ *   .threads   threads working, the caller's included; 0: the cores online
+ *   .on_wake   NULL; test hook: called by pool thread t (1 .. threads-1)
+ *              each time it wakes for a call, before it takes a task
+ *   .user      on_wake's first argument
+ *
+ * mote_pool_create returns MOTE_ERR_RANGE for threads outside
+ * [0, 4096], MOTE_ERR_OUT_OF_MEMORY, or MOTE_ERR_IO when the system
+ * refuses a thread; nothing is left behind then. Without POSIX threads
+ * a pool has one thread, the caller. */
+typedef struct mote_pool mote_pool;
+typedef struct mote_pool_desc {
+    int threads;
+    void (*on_wake)(void *user, int thread);
+    void *user;
+} mote_pool_desc;
+mote_result mote_pool_create(const mote_pool_desc *desc, mote_pool **pool,
+                             char *message, size_t message_size);
+/* Stops and joins the pool's threads (NULL: nothing). */
+void mote_pool_destroy(mote_pool *pool);
+/* Threads working in the pool's calls, the caller's included. */
+int mote_pool_threads(const mote_pool *pool);
+/* A mote_parallel_for_fn; user is a mote_pool (NULL: this thread alone). */
+void mote_parallel_pool(void *user, int count, mote_task_fn fn, void *task_arg);
 
 #ifdef __cplusplus
 }

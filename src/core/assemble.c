@@ -7,6 +7,7 @@
  * (setup.c) and handed to the sink in submission order.
  */
 #include "vertex.h"
+#include "vertex_fixed.h"
 
 
 /* true when a triangle of this signed screen area is culled */
@@ -30,6 +31,53 @@ static void mote__band_note(const mote__ctx *cx, const int32_t Y[3])
     r[1] = (unsigned char)MOTE__MAX(r[1], b1);
 }
 
+/* Band bins (mote_device_desc.band_bins): whether triangle i misses the
+ * band being drawn. The first band visits every triangle and records the
+ * bands it touches (mote__band_note, as it is emitted); the others skip
+ * those that miss them before any of their vertices is transformed. */
+static bool mote__band_skip(mote__ctx *cx, uint32_t i)
+{
+    const int band = cx->dev->bands.index;
+    unsigned char *range = cx->band_bins + 2 * (size_t)i;
+    if (band == 0) {
+        range[0] = 255;           /* none until emitted */
+        range[1] = 0;
+        cx->band_range = range;
+        return false;
+    }
+    return band < range[0] || band > range[1];
+}
+
+/* Counts what setup made of a triangle. */
+static void mote__count_setup(mote_device *dev, mote__setup_result set, bool black)
+{
+    dev->stats.triangles_degenerate += set == MOTE__SETUP_EMPTY;
+    dev->stats.triangles_clipped_away += set == MOTE__SETUP_OUTSIDE;
+    dev->stats.triangles_drawn += set == MOTE__SETUP_DRAWN;
+    dev->stats.triangles_black += black;
+}
+
+/* A band's early end for a triangle with no row of pixels in it (there is
+ * no y test in setup): counted as setup would count it, which the first
+ * band's figures, the frame's, need. Setup calls a triangle black when its
+ * shade is zero at every vertex, or at its first when it is not Gouraud,
+ * and then every vertex has the same shade (flat, or unlit): zero at all
+ * nine is the same test. */
+static bool mote__band_rejects(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], const mote__svert *const v[3])
+{
+    mote_device *dev = cx->dev;
+    const mote__rect *band = &cx->sink->region;
+    int box[4];
+    mote__setup_result set = mote__setup_box(X, Y, dev->desc.subpixel_bits, dev->desc.width, dev->desc.height, box);
+    if (set == MOTE__SETUP_DRAWN && box[3] >= band->y0 && box[1] < band->y1)
+        return false;
+    int32_t shade = 0;
+    for (int k = 0; k < 3; k++)
+        shade |= v[k]->s[0] | v[k]->s[1] | v[k]->s[2];
+    mote__count_setup(dev, set, set == MOTE__SETUP_DRAWN && shade == 0);
+    return true;
+}
+
 static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
                        const mote__svert *const v[3])
 {
@@ -42,6 +90,8 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
         dev->desc.triangle_hook(dev->desc.triangle_hook_user, X, Y, z, w);
     }
     mote__sink *sink = cx->sink;
+    if (mote__band_mode(dev) && mote__band_rejects(cx, X, Y, v))
+        return;
     mote__tri local, *t = MOTE_ENABLE_BINNING && sink->place ? sink->place(sink) : NULL;
     if (!t)
         t = &local;
@@ -49,15 +99,9 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
     const mote__raster_state *rs = MOTE_ENABLE_BINNING && sink->rs ? sink->rs : cx->rs;
     mote__setup_result set = mote__setup(t, rs, X, Y, area2, v, dev->desc.subpixel_bits,
                                          dev->desc.width, dev->desc.height);
-    if (set != MOTE__SETUP_DRAWN) {
-        if (set == MOTE__SETUP_EMPTY)
-            dev->stats.triangles_degenerate++;
-        else
-            dev->stats.triangles_clipped_away++;
+    mote__count_setup(dev, set, set == MOTE__SETUP_DRAWN && t->shade == MOTE__SHADE_BLACK);
+    if (set != MOTE__SETUP_DRAWN)
         return;
-    }
-    dev->stats.triangles_drawn++;
-    dev->stats.triangles_black += t->shade == MOTE__SHADE_BLACK;
     if (MOTE_ENABLE_BINNING && sink->triangle)
         sink->triangle(sink, t);
     else
@@ -375,20 +419,25 @@ void mote__triangles(mote__ctx *cx, uint32_t first, uint32_t end, bool prepared)
 #else
     (void)prepared;
 #endif
-    /* band bins: the first band records where each triangle goes, the
-     * others skip those that miss them (mote_device_desc.band_bins) */
-    const int band = cx->dev->bands.index;
     for (; i < end && !cx->sink->full; i++) {
-        if (cx->band_bins) {
-            unsigned char *range = cx->band_bins + 2 * (size_t)i;
-            if (band == 0) {
-                range[0] = 255;   /* none until emitted */
-                range[1] = 0;
-                cx->band_range = range;
-            } else if (band < range[0] || band > range[1]) {
-                continue;
-            }
-        }
-        mote__triangle(cx, &cx->mesh->indices[3 * i]);
+        if (cx->band_bins && mote__band_skip(cx, i))
+            continue;
+        uint32_t idx[3];
+        mote__mesh_triangle(cx->mesh, i, idx);
+        mote__triangle(cx, idx);
     }
 }
+
+#if MOTE_FIXED_VERTEX
+bool mote__fixed_skip(void *cx, uint32_t i)
+{
+    mote__ctx *c = (mote__ctx *)cx;
+    return c->band_bins && mote__band_skip(c, i);
+}
+
+void mote__fixed_emit(void *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
+                      const mote__svert *const v[3])
+{
+    mote__emit((mote__ctx *)cx, X, Y, area2, v);
+}
+#endif

@@ -9,12 +9,14 @@
  * Arena layout: [tiles][raster states, triangles, list blocks ->   <- per-draw scratch]
  */
 #include "internal.h"
+#include "plane.h"
 
 #define MOTE__BLOCK 30
 
 typedef struct mote__tile {
     uint32_t head, tail;          /* arena offsets of list blocks; 0 = none */
     mote__counts counts;
+    uint32_t behind;              /* triangles skipped as behind its drawn depth */
 } mote__tile;
 
 typedef struct mote__block {
@@ -26,8 +28,9 @@ static size_t mote__align(size_t n) { return (n + 7u) & ~(size_t)7u; }
 
 size_t mote_arena_bytes_per_triangle(void)
 {
-    /* the triangle, plus list space for a typical few tiles */
-    return mote__align(sizeof(mote__tri)) + 4 * sizeof(uint32_t) + sizeof(mote__block) / 4;
+    /* the triangle, plus list space for a typical few tiles (one with
+     * an additive colour takes its three more planes: mote.h says so) */
+    return mote__align(MOTE__TRI_BYTES(MOTE__A_B + 1)) + 4 * sizeof(uint32_t) + sizeof(mote__block) / 4;
 }
 
 #if MOTE_ENABLE_BINNING
@@ -128,6 +131,8 @@ static bool mote__bin_triangle(mote_device *dev, const mote__tri *t)
             memcpy(copy, t, MOTE__TRI_BYTES(0));
         else if (bytes == MOTE__TRI_BYTES(MOTE__A_V + 1))
             memcpy(copy, t, MOTE__TRI_BYTES(MOTE__A_V + 1));
+        else if (bytes == MOTE__TRI_BYTES(MOTE__A_B + 1))
+            memcpy(copy, t, MOTE__TRI_BYTES(MOTE__A_B + 1));
         else
             *copy = *t;
     }
@@ -191,6 +196,67 @@ static void mote__warm_tile(const mote__target *tg, mote__rect r)
 #endif
 }
 
+/* ---- coarse depth per tile ----------------------------------------------
+ * A tile keeps an upper bound of the depths in it: the farthest depth of
+ * a triangle that covered every pixel centre of the tile and wrote its
+ * depth there (after it, no pixel of the tile is farther). A later
+ * triangle whose nearest depth in the tile is not nearer than that bound
+ * fails the depth test at every pixel, so it is skipped before its edges
+ * are walked: the same bytes. The depth of a pixel is clamp(z >> 16) of
+ * the triangle's plane (span.c), monotonic in z, so the plane's extremes
+ * over a rectangle, at its corners, bound every pixel's depth. Speed
+ * builds only (MOTE_SHORTCUTS). */
+
+/* The depth buffer's value for plane value z at pixel (x, y). */
+static uint32_t mote__depth_at(const mote__tri *t, int x, int y, bool d16)
+{
+    int64_t zz = mote__plane_at(mote__plane_at(t->z, t->zdy, y - t->oy), t->zdx, x - t->ox) >> MOTE__DEPTH_FRAC;
+    uint32_t depth = zz < 0 ? 0u : zz > (int64_t)MOTE__DEPTH_MAX ? MOTE__DEPTH_MAX : (uint32_t)zz;
+    return d16 ? depth >> 8 : depth;
+}
+
+/* The smallest (near) or largest depth t can write in r's pixels. */
+static uint32_t mote__depth_bound(const mote__tri *t, mote__rect r, bool d16, bool near)
+{
+    uint32_t b = mote__depth_at(t, r.x0, r.y0, d16);
+    const int xs[2] = {r.x0, r.x1 - 1}, ys[2] = {r.y0, r.y1 - 1};
+    for (int i = 1; i < 4; i++) {
+        uint32_t d = mote__depth_at(t, xs[i & 1], ys[i >> 1], d16);
+        b = near ? MOTE__MIN(b, d) : MOTE__MAX(b, d);
+    }
+    return b;
+}
+
+/* Whether every pixel centre of r lies strictly inside t (on no edge,
+ * whatever the fill rule says there). Most triangles of a tile do not
+ * even box it: that test first, inline, before the edges'. */
+static bool mote__covers_edges(const mote__tri *t, mote__rect r, int F)
+{
+    const int64_t half = (int64_t)1 << (F - 1);
+    const int64_t area = (int64_t)(t->X[1] - t->X[0]) * (t->Y[2] - t->Y[0])
+                       - (int64_t)(t->Y[1] - t->Y[0]) * (t->X[2] - t->X[0]);
+    if (area == 0)
+        return false;
+    for (int i = 0; i < 4; i++) {
+        const int64_t px = ((int64_t)(i & 1 ? r.x1 - 1 : r.x0) << F) + half;
+        const int64_t py = ((int64_t)(i >> 1 ? r.y1 - 1 : r.y0) << F) + half;
+        for (int e = 0; e < 3; e++) {
+            const int a = e, b = e == 2 ? 0 : e + 1;
+            const int64_t c = (int64_t)(t->X[b] - t->X[a]) * (py - t->Y[a])
+                            - (int64_t)(t->Y[b] - t->Y[a]) * (px - t->X[a]);
+            if (c == 0 || (c > 0) != (area > 0))
+                return false;
+        }
+    }
+    return true;
+}
+
+static inline bool mote__covers(const mote__tri *t, mote__rect r, int F)
+{
+    return t->xmin <= r.x0 && t->ymin <= r.y0 && t->xmax >= r.x1 - 1 && t->ymax >= r.y1 - 1
+        && mote__covers_edges(t, r, F);
+}
+
 static void mote__raster_tile(void *arg, int index)
 {
     mote_device *dev = (mote_device *)arg;
@@ -208,14 +274,39 @@ static void mote__raster_tile(void *arg, int index)
     mote__counts count = {0, 0};
     mote__full_target(dev, &tg, &count);
     mote__warm_tile(&tg, r);
+    /* a shortcut: size builds leave it out (the same bytes) */
+    const bool coarse = MOTE_SHORTCUTS && !dev->desc.no_tile_depth && tg.depth_format != MOTE_DEPTH_FORMAT_NONE;
+    const bool d16 = tg.depth_format == MOTE_DEPTH_FORMAT_16;
+    uint32_t farthest = UINT32_MAX;   /* no bound yet: the buffer's depths are any */
+    uint32_t behind = 0;
     for (uint32_t off = tile->head; off;) {
         const mote__block *blk = (const mote__block *)(const void *)(b->base + off);
-        for (uint32_t i = 0; i < blk->count; i++)
-            mote__raster_tri((const mote__tri *)(const void *)(b->base + blk->tri[i]), &tg, r,
-                             dev->desc.subpixel_bits);
+        for (uint32_t i = 0; i < blk->count; i++) {
+            const mote__tri *t = (const mote__tri *)(const void *)(b->base + blk->tri[i]);
+            const mote__raster_state *rs = t->rs;
+            /* the pixels t may touch here (the tile lists it: some) */
+            const mote__rect in = {MOTE__MAX(r.x0, t->xmin), MOTE__MAX(r.y0, t->ymin),
+                                   MOTE__MIN(r.x1, t->xmax + 1), MOTE__MIN(r.y1, t->ymax + 1)};
+            if (farthest != UINT32_MAX && rs->depth_test && mote__depth_bound(t, in, d16, true) >= farthest + (uint32_t)rs->depth_equal) {
+                behind++;
+                continue;
+            }
+            mote__raster_tri(t, &tg, r, dev->desc.subpixel_bits);
+            if (!coarse || !rs->depth_write)
+                continue;
+            if (!rs->depth_test) {  /* it may have written farther depths */
+                if (mote__covers(t, r, dev->desc.subpixel_bits))
+                    farthest = mote__depth_bound(t, r, d16, false);
+                else if (farthest != UINT32_MAX)
+                    farthest = MOTE__MAX(farthest, mote__depth_bound(t, in, d16, false));
+            } else if (!rs->alpha && mote__covers(t, r, dev->desc.subpixel_bits)) {
+                farthest = MOTE__MIN(farthest, mote__depth_bound(t, r, d16, false));
+            }
+        }
         off = blk->next;
     }
     tile->counts = count;
+    tile->behind = behind;
 }
 
 void mote__bin_flush(mote_device *dev)
@@ -236,6 +327,7 @@ void mote__bin_flush(mote_device *dev)
         for (int i = 0; i < n; i++) {
             if (tiles[i].head) {
                 dev->stats.tiles_drawn++;
+                dev->stats.tile_triangles_behind += tiles[i].behind;
                 mote__add_counts(dev, &tiles[i].counts);
             } else {
                 dev->stats.tiles_empty++;
@@ -427,7 +519,7 @@ bool mote__bin_defers(const mote_device *dev)
 
 static uint32_t mote__draw_triangles(const mote__draw *d)
 {
-    return d->mesh->indices ? d->mesh->index_count / 3 : 0;
+    return mote__mesh_has_indices(d->mesh) ? d->mesh->index_count / 3 : 0;
 }
 
 /* Bins a draw or a piece of it through target (dev itself, or a group's
@@ -489,6 +581,8 @@ static void mote__stats_add(mote_stats *to, const mote_stats *from)
     to->tiles_empty += from->tiles_empty;
     to->tiles_drawn += from->tiles_drawn;
     to->arena_flushes += from->arena_flushes;
+    to->tile_triangles_behind += from->tile_triangles_behind;
+    to->draws_simplified += from->draws_simplified;
     to->pixels_tested += from->pixels_tested;
     to->pixels_written += from->pixels_written;
 }

@@ -27,7 +27,7 @@ static float mote__plane_dist(const mote__ctx *cx, const mote__cvert *v, int p)
 
 /* every field of a vertex, as one array of floats */
 #define MOTE__CVERT_FLOATS (sizeof(mote__cvert) / sizeof(float))
-typedef char mote__cvert_is_floats[sizeof(mote__cvert) == 9 * sizeof(float) ? 1 : -1];
+typedef char mote__cvert_is_floats[sizeof(mote__cvert) == (9 + 3 * MOTE__ADD_ENABLED) * sizeof(float) ? 1 : -1];
 
 static void mote__lerp(const mote__cvert *a, const mote__cvert *b, float t, mote__cvert *out)
 {

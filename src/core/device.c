@@ -233,7 +233,8 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
         return MOTE_ERR_INVALID_ARGUMENT;
     if (!dev->ready || !dev->in_frame)
         return MOTE_ERR_STATE;
-    if ((mesh->vertex_count > 0 && !mesh->vertices) || (mesh->index_count > 0 && !mesh->indices))
+    if ((mesh->vertex_count > 0 && !mote__mesh_has_vertices(mesh))
+        || (mesh->index_count > 0 && !mote__mesh_has_indices(mesh)))
         return MOTE_ERR_INVALID_ARGUMENT;
     if (mesh->hidden)
         return MOTE_OK;
@@ -241,6 +242,9 @@ mote_result mote_draw(mote_device *dev, const mote_mesh *mesh, const mote_draw_d
     mote_result r = mote__resolve_draw_desc(draw, mesh, &d);
     if (r != MOTE_OK)
         return r;
+    /* points and lines write colour alone */
+    if (d.no_color_write && (d.mode == MOTE_MODE_POINTS || d.mode == MOTE_MODE_WIREFRAME))
+        return MOTE_OK;
     if (mote__band_mode(dev)) {
         if (dev->draw_count >= MOTE_MAX_DRAWS)
             return MOTE_ERR_TOO_MANY_DRAWS;

@@ -6,6 +6,7 @@
  * handed on (assemble.c) to the sink the caller gives.
  */
 #include "vertex.h"
+#include "vertex_fixed.h"
 
 /* An enum value of a desc: v when it is a valid non-default one (in
  * (0, count)), else def. */
@@ -29,6 +30,7 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
     if (MOTE_ENABLE_SUBSPAN && out->subspan_log2 > 6)
         out->subspan_log2 = 6;
     out->filter = (mote_filter)mote__enum_or(out->filter, MOTE_FILTER_COUNT, MOTE_FILTER_NEAREST);
+    out->mip = (mote_mip)mote__enum_or(out->mip, MOTE_MIP_COUNT, MOTE_MIP_NONE);
     /* only points and wireframe read it, which a build without lines refuses */
     if (MOTE_ENABLE_LINES && out->point_color.r == 0 && out->point_color.g == 0
         && out->point_color.b == 0 && out->point_color.a == 0) {
@@ -42,7 +44,8 @@ mote_result mote__resolve_draw_desc(const mote_draw_desc *in, const mote_mesh *m
     if ((!MOTE_ENABLE_LINES && (out->mode == MOTE_MODE_POINTS || out->mode == MOTE_MODE_WIREFRAME))
         || (!MOTE_ENABLE_BILINEAR && out->filter == MOTE_FILTER_BILINEAR)
         || (!MOTE_ENABLE_SUBSPAN && out->perspective == MOTE_PERSPECTIVE_SUBSPAN)
-        || (!MOTE_ENABLE_VERTEX_COLORS && mesh->colors))
+        || (!MOTE_ENABLE_VERTEX_COLORS && mesh->colors)
+        || (!MOTE_ENABLE_BLEND && (out->depth_less_equal || out->no_color_write)))
         return MOTE_ERR_UNSUPPORTED;
     return MOTE_OK;
 }
@@ -99,6 +102,204 @@ size_t mote__vertex_cache_bytes(const mote_mesh *mesh)
 }
 
 
+/* A draw texture's size and row stride into rs and cx. */
+static void mote__texture_dims(mote__raster_state *rs, mote__ctx *cx, const mote_texture *t)
+{
+    rs->tex_w = t->width;
+    rs->tex_h = t->height;
+    cx->tex_w = (float)rs->tex_w;
+    cx->tex_h = (float)rs->tex_h;
+    rs->tex_stride = t->stride > 0 ? t->stride : t->width * mote__format_bytes(t->format);
+}
+
+/* The draw's alpha (mote_material.alpha_mode) into rs: what changes
+ * nothing is dropped (an alpha test without a texture, blending at alpha
+ * 255 without the texture's), and what the build left out is drawn opaque and counted. */
+static void mote__alpha_select(mote__raster_state *rs, const mote_material *mat, mote__ctx *cx)
+{
+    const mote_alpha_mode mode = mat->alpha_mode;
+    const bool test = mode == MOTE_ALPHA_TEST || mode == MOTE_ALPHA_TEST_AND_BLEND;
+    const bool blend = mode == MOTE_ALPHA_BLEND || mode == MOTE_ALPHA_TEST_AND_BLEND;
+    if (!test && !blend)
+        return;
+#if !MOTE__ALPHA_ENABLED
+    (void)rs;
+    cx->simplified = true;           /* the whole check, in the least flash */
+    return;
+#endif
+    if ((test && !MOTE_ENABLE_ALPHA_TEST) || (blend && !MOTE_ENABLE_BLEND))
+        cx->simplified = true;
+    /* an opacity layer weighs both the test and the blend */
+    bool opacity = false, textured = rs->tex != MOTE__TEX_NONE;
+#if MOTE__LAYERS_ENABLED
+    for (int i = 0; i < rs->layer_count; i++)
+        opacity = opacity || rs->layer[i].role == MOTE_LAYER_OPACITY;
+    textured = textured && !rs->base_white;
+#endif
+    const bool texel = textured && mat->use_texture_alpha;
+    uint32_t a8 = 255;
+    if (mat->alpha_set) {
+        const float a = mat->alpha * 255.0f + 0.5f;
+        a8 = a >= 255.0f ? 255u : a > 0.0f ? (uint32_t)a : 0u;   /* NaN: 0 */
+    }
+    rs->alpha8 = (uint8_t)a8;
+    if (MOTE_ENABLE_ALPHA_TEST && test && (textured || opacity)) {
+        /* a / 255 < cut  <=>  a < ceil(255 cut), for integer a */
+        const float cut = 255.0f * mote__or(mat->alpha_cutoff, 0.4f);
+        uint32_t c = cut >= 256.0f ? 256u : cut > 0.0f ? (uint32_t)cut : 0u;
+        c += c < 256u && (float)c < cut;
+        rs->cutoff = (uint16_t)c;
+        rs->alpha |= MOTE__ALPHA_TEST;
+    }
+    if (MOTE_ENABLE_BLEND && blend && (a8 < 255 || texel || opacity))
+        rs->alpha |= MOTE__ALPHA_BLEND | (texel ? MOTE__ALPHA_TEXEL : 0);
+}
+
+#if MOTE__LAYERS_ENABLED
+/* Whether the build draws layers of this role. */
+static bool mote__role_built(int role)
+{
+    return (role == MOTE_LAYER_EMISSIVE && MOTE_ENABLE_EMISSIVE_MAP)
+        || (role == MOTE_LAYER_OPACITY && MOTE_ENABLE_OPACITY_MAP)
+        || (role == MOTE_LAYER_SPECULAR && MOTE_ENABLE_SPECULAR_MAP && MOTE_ENABLE_SPECULAR);
+}
+
+/* One axis of a layer's map L = T a + b (texels of the layer from the
+ * draw's, mote__layer): a as mul 2^-sh with mul in [2^29, 2^30], b in
+ * 1/2^MOTE__LAYER_BITS texels. false for a scale out of [2^-20, 2^20]. */
+static bool mote__layer_axis(float a, float b, mote__layer *l, int k)
+{
+    float m = a < 0.0f ? -a : a;
+    if (!(m >= 1.0f / 1048576.0f && m <= 1048576.0f) || !mote__finite(b))
+        return false;
+    int sh = 0;
+    while (m < 536870912.0f) {
+        m *= 2.0f;
+        sh++;
+    }
+    while (m >= 1073741824.0f) {
+        m *= 0.5f;
+        sh--;
+    }
+    const int32_t mul = (int32_t)(m + 0.5f);
+    l->mul[k] = a < 0.0f ? -mul : mul;
+    l->sh[k] = (int8_t)sh;
+    const float add = b * (float)(1 << MOTE__LAYER_BITS);
+    if (!(add > -4.0e18f && add < 4.0e18f))
+        return false;
+    l->add[k] = (int64_t)(add < 0.0f ? add - 0.5f : add + 0.5f);
+    return true;
+}
+
+/* Whether taking whole periods of the draw's texture off its texel
+ * coordinates (setup does, for repeat and mirror) moves a layer by whole
+ * periods of its own: a shift of one period (two for mirror) is ratio of
+ * the layer's uv units. */
+static bool mote__layer_period_ok(float ratio, mote_wrap base, mote_wrap layer)
+{
+    const float unit = ratio * (base == MOTE_WRAP_MIRROR ? 2.0f : 1.0f);
+    if (layer == MOTE_WRAP_CLAMP || !(unit > -16777216.0f && unit < 16777216.0f))
+        return false;
+    const int32_t whole = (int32_t)unit;
+    return (float)whole == unit && (layer != MOTE_WRAP_MIRROR || (whole & 1) == 0);
+}
+
+/* The material's layers (mote_layer) into rs, after the texture: a draw
+ * without one takes layer 0's coordinates and draws as white. What the
+ * build left out, and highlights' layers on a fogged draw, are skipped
+ * and counted. smooth: Gouraud or textured. */
+static void mote__layers_select(mote__raster_state *rs, const mote_material *mat, mote__ctx *cx, bool smooth)
+{
+    rs->layer_count = 0;
+    if (!mat->layers || mat->layer_count <= 0 || cx->d.mode != MOTE_MODE_TEXTURED)
+        return;
+    const bool spec = smooth && cx->lit && (mat->specular.r | mat->specular.g | mat->specular.b);
+    const mote_fog_mode fm = cx->dev->frame.fog.mode;
+    const bool fog = smooth && fm > MOTE_FOG_NONE && fm < MOTE_FOG_COUNT && !cx->d.no_fog;
+    const int n = MOTE__MIN(mat->layer_count, MOTE_MAX_LAYERS);
+    for (int i = 0; i < n; i++) {
+        const mote_layer *in = &mat->layers[i];
+        const int role = (int)in->role;
+        if (role <= MOTE_LAYER_NONE || role >= MOTE_LAYER_ROLE_COUNT || !mote__texture_ok(in->texture))
+            continue;
+        if (!mote__role_built(role) || (role == MOTE_LAYER_SPECULAR && spec && fog)) {
+            cx->simplified = true;
+            continue;
+        }
+        if (role == MOTE_LAYER_SPECULAR && !spec)
+            continue;             /* no highlights to scale */
+        if (rs->tex == MOTE__TEX_NONE) {   /* layer 0 lends the draw its coordinates */
+            rs->tex = MOTE_ENABLE_BILINEAR && cx->d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR
+                                                                                     : MOTE__TEX_NEAREST;
+            rs->base_white = true;
+            rs->texture = in->texture;
+            rs->wrap_u = (mote_wrap)mote__enum_or(in->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+            rs->wrap_v = (mote_wrap)mote__enum_or(in->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+            mote__texture_dims(rs, cx, in->texture);
+        }
+        mote__layer *l = &rs->layer[rs->layer_count];
+        const mote_texture *tx = in->texture;
+        l->texture = tx;
+        l->stride = tx->stride > 0 ? tx->stride : tx->width * mote__format_bytes(tx->format);
+        l->wrap_u = (mote_wrap)mote__enum_or(in->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+        l->wrap_v = (mote_wrap)mote__enum_or(in->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+        l->role = (uint8_t)role;
+        l->from_rgb = in->from_rgb;
+        /* L = T a + b per axis: T = (uv ms + mo) TW (v: (1 - that) TH),
+         * L = (uv ls + lo) LW likewise, so a = LW ls / (TW ms) */
+        bool ok = true;
+        const bool bottom = mat->v_origin_bottom;
+        for (int k = 0; k < 2; k++) {
+            const float ms = mote__or(k ? mat->v_scale : mat->u_scale, 1.0f), mo = k ? mat->v_offset : mat->u_offset;
+            const float ls = mote__or(k ? in->v_scale : in->u_scale, 1.0f), lo = k ? in->v_offset : in->u_offset;
+            const float tsize = (float)(k ? rs->tex_h : rs->tex_w), lsize = (float)(k ? tx->height : tx->width);
+            const float ratio = ls / ms;
+            const float b = k && bottom ? (1.0f - ((1.0f - mo) * ratio + lo)) * lsize : (lo - mo * ratio) * lsize;
+            ok = ok && mote__layer_axis(lsize * ratio / tsize, b, l, k);
+            if (!mote__layer_period_ok(ratio, k ? rs->wrap_v : rs->wrap_u, k ? l->wrap_v : l->wrap_u))
+                rs->texel_absolute = true;
+        }
+        if (!ok)
+            continue;
+        const bool white = mote__zero3(in->factor);
+        for (int k = 0; k < 3; k++) {
+            float f = white ? 1.0f : in->factor[k];
+            f = f > 0.0f ? (f < 64.0f ? f : 64.0f) : 0.0f;   /* NaN: 0 */
+            const float unit = role == MOTE_LAYER_EMISSIVE ? (float)MOTE__SHADE_ONE / 255.0f
+                             : role == MOTE_LAYER_SPECULAR ? 65536.0f : 256.0f;
+            l->factor[k] = (uint32_t)(f * unit + 0.5f);
+        }
+        rs->layer_count++;
+    }
+}
+#endif
+
+/* Specular highlights and fog (an additive colour per vertex, and per
+ * vertex shades) for Gouraud and textured draws: asked for by a specular
+ * colour on a lit draw, or by the frame's fog unless the draw says no_fog.
+ * What the build left out is drawn without and counted. */
+static void mote__additive_select(mote__raster_state *rs, const mote_material *mat, mote__ctx *cx, bool smooth)
+{
+    const bool spec = smooth && cx->lit && (mat->specular.r | mat->specular.g | mat->specular.b);
+    const mote_fog_mode fm = cx->dev->frame.fog.mode;
+    const bool fog = smooth && fm > MOTE_FOG_NONE && fm < MOTE_FOG_COUNT && !cx->d.no_fog;
+    if ((spec && !MOTE_ENABLE_SPECULAR) || (fog && !MOTE_ENABLE_FOG))
+        cx->simplified = true;
+#if MOTE__ADD_ENABLED
+    cx->spec_on = MOTE_ENABLE_SPECULAR && spec;
+    cx->fog_on = MOTE_ENABLE_FOG && fog;
+    cx->additive = cx->spec_on || cx->fog_on;
+    for (int k = 0; k < 3; k++)
+        cx->spec[k] = (float)(&mat->specular.r)[k] / 255.0f;
+    cx->spec_power = mote__or(mat->specular_power, 64.0f);
+    rs->additive = cx->additive;
+    if (cx->additive)             /* its values are per vertex */
+        rs->gouraud = true;
+#else
+    (void)rs;
+#endif
+}
+
 /* A draw's context and raster state: matrices, material, features.
  * false: the mesh lies outside the view frustum. */
 static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_device *dev, const mote_mesh *mesh,
@@ -121,6 +322,10 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     mote__normal_matrix(cx->world, mirrored, cx->nrm);
     if (mote__mesh_outside(cx))
         return false;
+    if (mesh->compact) {          /* its integers into the mesh's space */
+        mote__compact_fold(cx->world, mesh->compact->offset, mesh->compact->scale, cx->world);
+        mote__compact_fold(cx->mvp, mesh->compact->offset, mesh->compact->scale, cx->mvp);
+    }
     const mote_material *mat = &mesh->material;
     for (int k = 0; k < 3; k++) {
         cx->color[k] = mat->color_set ? (float)(&mat->color.r)[k] / 255.0f : 1.0f;
@@ -132,6 +337,12 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     cx->vscale = mote__or(mat->v_scale, 1.0f);
     cx->uoff = mat->u_offset;
     cx->voff = mat->v_offset;
+    if (mesh->compact) {          /* uv = uvs x uv_scale + uv_offset, then the material's */
+        cx->uoff += mesh->compact->uv_offset[0] * cx->uscale;
+        cx->voff += mesh->compact->uv_offset[1] * cx->vscale;
+        cx->uscale *= mesh->compact->uv_scale[0];
+        cx->vscale *= mesh->compact->uv_scale[1];
+    }
     cx->guard_x = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.width * 0.5f);
     cx->guard_y = (float)(1 << MOTE_GUARD_BITS) / ((float)dev->desc.height * 0.5f);
 
@@ -155,14 +366,29 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
         rs->tex = MOTE_ENABLE_BILINEAR && cx->d.filter == MOTE_FILTER_BILINEAR ? MOTE__TEX_BILINEAR
                                                                                  : MOTE__TEX_NEAREST;
         rs->texture = mat->texture;
-        rs->tex_w = mat->texture->width;
-        rs->tex_h = mat->texture->height;
-        cx->tex_w = (float)rs->tex_w;
-        cx->tex_h = (float)rs->tex_h;
-        rs->tex_stride = mat->texture->stride > 0 ? mat->texture->stride
-                       : mat->texture->width * mote__format_bytes(mat->texture->format);
+        mote__texture_dims(rs, cx, mat->texture);
         rs->wrap_u = (mote_wrap)mote__enum_or(mat->wrap_u, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
         rs->wrap_v = (mote_wrap)mote__enum_or(mat->wrap_v, MOTE_WRAP_COUNT, MOTE_WRAP_REPEAT);
+    }
+#if MOTE__LAYERS_ENABLED
+    mote__layers_select(rs, mat, cx, tri_mode && mode != MOTE_MODE_FLAT);
+#else
+    /* a build without any layer draws the rest, and says so */
+    if (mat->layers && mat->layer_count > 0 && cx->d.mode == MOTE_MODE_TEXTURED)
+        cx->simplified = true;
+#endif
+    mote__alpha_select(rs, mat, cx);
+    mote__additive_select(rs, mat, cx, tri_mode && mode != MOTE_MODE_FLAT);
+    /* a mip chain of the draw's texture (level 0 its pixels) */
+    if (rs->tex != MOTE__TEX_NONE && (!MOTE__LAYERS_ENABLED || rs->texture == mat->texture) && cx->d.mip >= MOTE_MIP_TRIANGLE && mat->mipmaps && mat->mipmaps->count > 1
+        && mat->mipmaps->count <= MOTE_MAX_MIPS && mat->mipmaps->level[0].pixels == mat->texture->pixels
+        && mat->mipmaps->level[0].width == rs->tex_w && mat->mipmaps->level[0].height == rs->tex_h) {
+        if (MOTE_ENABLE_MIPMAPS) {
+            rs->mips = mat->mipmaps;
+            rs->mip_pixel = cx->d.mip >= MOTE_MIP_PIXEL;
+            rs->mip_blend = cx->d.mip == MOTE_MIP_TRILINEAR;
+        } else
+            cx->simplified = true;
     }
     /* features that change nothing are dropped before choosing the span */
     bool varying = rs->gouraud || rs->tex != MOTE__TEX_NONE;
@@ -174,6 +400,8 @@ static bool mote__draw_context(mote__ctx *cx, mote__raster_state *rs, mote_devic
     bool has_depth = dev->desc.depth_format != MOTE_DEPTH_FORMAT_NONE;
     rs->depth_test = has_depth && !cx->d.no_depth_test;
     rs->depth_write = has_depth && !cx->d.no_depth_write;
+    rs->depth_equal = rs->depth_test && cx->d.depth_less_equal;
+    rs->no_color = cx->d.no_color_write;
     /* the pixel loops truncate (z >> 16, then >> 8 for 16 bits): the plane
      * starts half a unit up, so each pixel's 24-bit depth is rounded to
      * nearest, and a 16-bit one is that rounded again: (d24 + 128) >> 8 */
@@ -190,6 +418,10 @@ void mote__prepare_vertices(mote_device *dev, const mote_mesh *mesh, const mote_
 {
     mote__ctx cx;
     mote__raster_state rs;
+#if MOTE_FIXED_VERTEX
+    if (mote__fixed_handles(dev, mesh, desc))   /* its pieces transform their own */
+        return;
+#endif
     if (!mote__draw_context(&cx, &rs, dev, mesh, desc))
         return;
     mote__tvert *tv = (mote__tvert *)cache;
@@ -208,6 +440,61 @@ void mote__prepare_vertices(mote_device *dev, const mote_mesh *mesh, const mote_
     for (; i < end; i++)
         if (tv[i].state == 1)
             mote__finish(&cx, &tv[i]);
+}
+#endif
+
+/* The triangles [*first, return) of the draw: a piece's, or all. */
+static uint32_t mote__tri_range(mote__ctx *cx, const mote__piece *piece, uint32_t *first)
+{
+    const mote_mesh *mesh = cx->mesh;
+    uint32_t tris = mote__mesh_has_indices(mesh) ? mesh->index_count / 3 : 0;
+    *first = 0;
+    if (MOTE_ENABLE_BINNING && piece) {
+        *first = MOTE__MIN(piece->tri0, tris);
+        tris = MOTE__MIN(piece->tri1, tris);
+    }
+    cx->dev->stats.triangles_in += tris - *first;
+    return tris;
+}
+
+/* Band bins for the draw's triangles (mote_device_desc.band_bins): in the
+ * first band (recording), room for them if there is some; in the others,
+ * the ranges the first recorded. */
+static void mote__bins_open(mote__ctx *cx, mote__draw *rec, bool recording, uint32_t first, uint32_t tris)
+{
+    mote__bands *bb = &cx->dev->bands;
+    if (recording && first == 0 && tris <= bb->capacity - bb->used) {
+        rec->bin_first = bb->used;
+        bb->used += tris;
+        cx->band_bins = bb->bins + 2 * (size_t)rec->bin_first;
+    } else if (rec && !recording && rec->band_known) {
+        cx->band_bins = bb->bins + 2 * (size_t)rec->bin_first;
+    }
+}
+
+/* The first band: the draw's bands, from its triangles' */
+static void mote__bins_close(const mote__ctx *cx, mote__draw *rec, bool recording, uint32_t tris)
+{
+    if (!recording || !cx->band_bins)
+        return;
+    for (uint32_t k = 0; k < tris; k++) {
+        rec->band_first = MOTE__MIN(rec->band_first, cx->band_bins[2 * k]);
+        rec->band_last = MOTE__MAX(rec->band_last, cx->band_bins[2 * k + 1]);
+    }
+    rec->band_known = true;
+}
+
+#if MOTE_FIXED_VERTEX
+/* The draw's triangles through the integer vertex stage (vertex_fixed.c). */
+static mote_result mote__fixed_run(mote__ctx *cx, const mote__piece *piece, mote__draw *rec, bool recording)
+{
+    uint32_t first, tris = mote__tri_range(cx, piece, &first);
+    mote__bins_open(cx, rec, recording, first, tris);
+    const mote__fixed_draw fd = {cx->mvp, cx->world, cx->nrm, cx->uscale, cx->vscale, cx->uoff, cx->voff,
+                                 cx->lit, cx->flat, cx->cull_cw, cx->cull_ccw, cx->rs, cx, cx->d.lights_off};
+    mote__fixed_triangles(cx->dev, cx->mesh, &fd, first, tris);
+    mote__bins_close(cx, rec, recording, tris);
+    return MOTE_OK;
 }
 #endif
 
@@ -234,9 +521,14 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
             rec->band_known = true;   /* in no band */
         return MOTE_OK;
     }
+    dev->stats.draws_simplified += first_piece && cx.simplified;
     cx.sink = sink;
     if (MOTE_ENABLE_BINNING && sink->begin && !sink->begin(sink, &rs))
         return sink->full ? MOTE_OK : MOTE_ERR_OUT_OF_MEMORY;
+#if MOTE_FIXED_VERTEX
+    if (mote__fixed_handles(dev, mesh, &cx.d))
+        return mote__fixed_run(&cx, piece, rec, recording);
+#endif
     int F = dev->desc.subpixel_bits;
     mote_mode mode = cx.d.mode;
 
@@ -266,31 +558,11 @@ mote_result mote__process_draw(mote_device *dev, const mote_mesh *mesh, const mo
         }
         return MOTE_OK;
     }
-    {
-        uint32_t tris = mesh->index_count / 3, first = 0;
-        if (!mesh->indices)
-            tris = 0;
-        if (MOTE_ENABLE_BINNING && piece) {
-            first = MOTE__MIN(piece->tri0, tris);
-            tris = MOTE__MIN(piece->tri1, tris);
-        }
-        dev->stats.triangles_in += tris - first;
-        const bool triangles = !(MOTE_ENABLE_LINES && mode == MOTE_MODE_WIREFRAME);
-        if (recording && triangles && cx.cache_mask && first == 0 && tris <= dev->bands.capacity - dev->bands.used) {
-            rec->bin_first = dev->bands.used;
-            dev->bands.used += tris;
-            cx.band_bins = dev->bands.bins + 2 * (size_t)rec->bin_first;
-        } else if (rec && !recording && rec->band_known) {
-            cx.band_bins = dev->bands.bins + 2 * (size_t)rec->bin_first;
-        }
-        mote__triangles(&cx, first, tris, MOTE_ENABLE_BINNING && piece && piece->vertices);
-        if (recording && cx.band_bins) {
-            for (uint32_t k = 0; k < tris; k++) {
-                rec->band_first = MOTE__MIN(rec->band_first, cx.band_bins[2 * k]);
-                rec->band_last = MOTE__MAX(rec->band_last, cx.band_bins[2 * k + 1]);
-            }
-            rec->band_known = true;
-        }
-    }
+    uint32_t first, tris = mote__tri_range(&cx, piece, &first);
+    /* wireframe draws no triangle through mote__emit, which records bands */
+    const bool triangles = !(MOTE_ENABLE_LINES && mode == MOTE_MODE_WIREFRAME);
+    mote__bins_open(&cx, rec, recording && triangles && cx.cache_mask, first, tris);
+    mote__triangles(&cx, first, tris, MOTE_ENABLE_BINNING && piece && piece->vertices);
+    mote__bins_close(&cx, rec, recording, tris);
     return MOTE_OK;
 }

@@ -114,6 +114,21 @@ static inline void mote__texel(mote_format format, const uint8_t *row, size_t x,
     }
 }
 
+/* Texel x's alpha (0..255): RGBA8888's fourth byte, 255 in the formats
+ * without alpha. */
+static inline uint32_t mote__texel_alpha(mote_format format, const uint8_t *row, size_t x)
+{
+    return format == MOTE_FORMAT_RGBA8888 ? row[4 * x + 3] : 255u;
+}
+
+/* round(x / 255) for x in [0, 255 * 255], without a division: x / 255
+ * never lies half-way between integers (255 is odd). */
+static inline uint32_t mote__div255(uint32_t x)
+{
+    x += 128;
+    return (x + (x >> 8)) >> 8;
+}
+
 /* A depth D in 0..2^24-1 as element i of a depth buffer of the format
  * (not NONE): 32-bit buffers keep D, 16-bit ones D >> 8. */
 static inline void mote__depth_store(void *depth, size_t i, mote_depth_format format, uint32_t d)

@@ -73,7 +73,7 @@ static bool mote__light_terms(const mote_light *l, float col[3], float *k, float
     return true;
 }
 
-#if MOTE_ENABLE_LIGHT_FALLOFF
+#if MOTE_ENABLE_LIGHT_FALLOFF || MOTE__ADD_ENABLED
 /* x^e for x in [0, 1] and e >= 0, as 2^(e log2 x), in float operations of
  * a fixed order (libm's powf differs between targets); relative error
  * about 1e-6. */
@@ -109,6 +109,9 @@ static float mote__powf01(float x, float e)
     scale.u = (uint32_t)(i + 127) << 23;
     return p * scale.f;
 }
+#endif
+
+#if MOTE_ENABLE_LIGHT_FALLOFF
 
 /* Babylon.js's default falloff of the frame's light i, a point or spot
  * light (StandardMaterial: max(0, 1 - distance / range); a spot light's
@@ -135,12 +138,69 @@ static float mote__falloff(const mote_device *dev, int i, const float L[3], floa
     return att;
 }
 #endif
+
+#if MOTE_ENABLE_SPECULAR
+/* Blinn-Phong highlights at camera-relative position p with unit normal n,
+ * as Babylon.js's StandardMaterial sums them (no n.l test): per light not
+ * in off, pow(max(0, n.h), max(1, power)) x intensity x its specular
+ * colour x its falloff, h = normalize(l + v), v toward the eye; a
+ * hemispheric light's l is its direction, without falloff. */
+static void mote__specular(const mote_device *dev, uint32_t off, const float p[3], const float n[3], float power,
+                           float out[3])
+{
+    out[0] = out[1] = out[2] = 0.0f;
+    float V[3] = {-p[0], -p[1], -p[2]};
+    const float iv = mote__rsqrtf(mote__dot3(V, V));
+    const mote_frame_desc *f = &dev->frame;
+    for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
+        const mote_light *l = &f->lights[i];
+        float col[3], k, s;
+        if ((off >> i & 1) || !mote__light_terms(l, col, &k, &s))
+            continue;
+        const bool positional = l->type == MOTE_LIGHT_POINT || l->type == MOTE_LIGHT_SPOT;
+        float L[3], H[3];
+        for (int c = 0; c < 3; c++)
+            L[c] = positional ? l->position[c] - p[c] : s * l->direction[c];
+        const float inv = mote__rsqrtf(mote__dot3(L, L));
+        for (int c = 0; c < 3; c++)
+            H[c] = L[c] * inv + V[c] * iv;
+        const float h = mote__dot3(n, H) * mote__rsqrtf(mote__dot3(H, H));
+        if (!(h > 0.0f))
+            continue;
+        float att = mote__powf01(h, power > 1.0f ? power : 1.0f) * k;
+#if MOTE_ENABLE_LIGHT_FALLOFF
+        if (l->type == MOTE_LIGHT_SPOT || (l->type == MOTE_LIGHT_POINT && l->range > 0.0f))
+            att *= mote__falloff(dev, i, L, inv);
+#endif
+        for (int c = 0; c < 3; c++)
+            out[c] += att * (mote__zero3(l->specular) ? 1.0f : l->specular[c]);
+    }
+}
+#endif
+
+#if MOTE_ENABLE_FOG
+/* Babylon.js's fog factor at distance d from the camera: 1 clear, 0 all
+ * fog. */
+static float mote__fog_factor(const mote_fog *fog, float d)
+{
+    float f = 1.0f;
+    if (fog->mode == MOTE_FOG_LINEAR) {
+        const float span = fog->end - fog->start;
+        f = span != 0.0f ? (fog->end - d) / span : (d < fog->end ? 1.0f : 0.0f);
+    } else if (fog->mode == MOTE_FOG_EXP || fog->mode == MOTE_FOG_EXP2) {
+        const float x = d * fog->density;
+        f = mote__powf01(0.367879441f, fog->mode == MOTE_FOG_EXP ? x : x * x);   /* e^-x */
+    }
+    return f > 0.0f ? (f < 1.0f ? f : 1.0f) : 0.0f;   /* NaN: all fog */
+}
+#endif
 #endif /* MOTE__LIGHT_HELPERS */
 
-/* The set of a draw: the frame's lights and ambient colour, the material's
+/* The set of a draw: the frame's lights but those whose bit is set in off
+ * (mote_draw_desc.lights_off) and its ambient colour, the material's
  * colour and emissive colour (0..1). */
 static void MOTE__LT_PREPARE(MOTE__LT_SET *set, const mote_device *dev, const float color[3],
-                             const float emissive[3])
+                             const float emissive[3], uint32_t off)
 {
     const mote_frame_desc *f = &dev->frame;
     set->dev = dev;
@@ -153,7 +213,7 @@ static void MOTE__LT_PREPARE(MOTE__LT_SET *set, const mote_device *dev, const fl
     for (int i = 0; i < f->light_count && i < MOTE_MAX_LIGHTS; i++) {
         const mote_light *l = &f->lights[i];
         float col[3], k, s;
-        if (!mote__light_terms(l, col, &k, &s))
+        if ((off >> i & 1) || !mote__light_terms(l, col, &k, &s))
             continue;
         MOTE__LT_LIGHT *o = &set->light[set->count++];
         o->type = l->type;

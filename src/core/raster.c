@@ -45,10 +45,21 @@ MOTE__WALK_INLINE void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, in
      * With A = xa - 2^(F-1) + u qs = Aq 2^F + Ar (0 <= Ar < 2^F),
      * num = Aq den + n2, n2 = Ar dy + u rs >= 0. At the edge's first row
      * (u < 2^F: every edge of a region that holds the top of the triangle)
-     * n2 < 2 den, and x needs no division. */
+     * n2 < 2 den, and x needs no division; unless the edge is longer than
+     * 2^(22-F) pixels it needs no 64-bit number either: |u qs| < 2^F
+     * 2^(30-F), |xa| < 2^22, and Ar dy, u rs, den < 2^30 (MOTE__CORE32:
+     * a 64-bit host ran its extra tests for nothing). */
+    const int32_t lim = (int32_t)1 << (30 - F);
+    if (MOTE__CORE32 && u < one && dy < lim && dx < lim && dx > -lim) {
+        const int32_t a32 = xa - (int32_t)half + (int32_t)u * qs;
+        const int32_t n32 = (a32 & ((int32_t)one - 1)) * dy + (int32_t)u * rs, c32 = (n32 > 0) + (n32 > (int32_t)den);
+        e->x = mote__floor_shift32(a32, F) + c32;
+        e->err = c32 * (int32_t)den - n32;
+        return;
+    }
     int64_t A = (int64_t)xa - half + u * qs, Aq = mote__floor_shift64(A, F);
     int64_t n2 = (int64_t)(int32_t)(A & (one - 1)) * dy + u * rs;   /* A - Aq 2^F */
-    int64_t c = MOTE_SHORTCUTS && u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
+    int64_t c = u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
     e->x = Aq + c;
     e->err = c * den - n2;
 }

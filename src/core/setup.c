@@ -14,26 +14,14 @@
  *
  * The planes' origin is the pixel holding vertex 0, where E1 and E2 are
  * small (both vanish at vertex 0), so the depth products fit in 64 bits.
- * No double arithmetic but one exact rounding on SSE2 hosts
- * (mote__round_positive): a core without an FPU pays only for float.
+ * The weights qi come from each vertex's 1/w as mantissa and exponent
+ * (mote__inverse_w) by shifts: no float arithmetic at all.
+ *
+ * The pixel loops (span.c) take these 64-bit planes down to 32 bits a
+ * block of pixels at a time; what they need for it is set here: the
+ * reciprocal's K (rbits), n_extra and texel_bits (see mote__tri).
  */
 #include "internal.h"
-
-/* Number of significant bits of v (0 for 0). */
-static int mote__bitlen(uint64_t v)
-{
-#if defined(__GNUC__)
-    return v ? 64 - __builtin_clzll(v) : 0;
-#else
-    int n = 0;
-    for (int step = 32; step > 0; step >>= 1)
-        if (v >> step) {
-            v >>= step;
-            n += step;
-        }
-    return n + (int)v;
-#endif
-}
 
 /* floor(a b / 2^s) for 0 < s < 64 (setup's shifts are 10 and more),
  * exact (128-bit product), modulo 2^64 when it does not fit: the same bits
@@ -46,22 +34,32 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
     /* the low half as a 64-bit product (the same bits signed or not):
      * split from one 128-bit value, GCC passed it through the stack */
     uint64_t lo = (uint64_t)a * (uint64_t)b, hi = (uint64_t)(((mote__i128)a * b) >> 64);
-#else
-    /* the unsigned 128-bit product of a's and b's bits, then the signed
-     * one: a negative a read as unsigned is a + 2^64, which adds 2^64 b
-     * to the product (and a negative b adds 2^64 a): take those from hi */
-    uint64_t x = (uint64_t)a, y = (uint64_t)b;
-    uint64_t xl = x & 0xffffffffu, xh = x >> 32, yl = y & 0xffffffffu, yh = y >> 32;
-    uint64_t ll = xl * yl, lh = xl * yh, hl = xh * yl, hh = xh * yh;
-    uint64_t mid = (ll >> 32) + (lh & 0xffffffffu) + (hl & 0xffffffffu);
-    uint64_t lo = (ll & 0xffffffffu) | (mid << 32);
-    uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32) - (a < 0 ? y : 0) - (b < 0 ? x : 0);
-#endif
     /* the low 64 bits of hi:lo shifted by s, by two plain shifts: with a
      * 128-bit shift by a variable count GCC emits x86's slow shrd and a
      * test for s >= 64 (1.75 against 1.15 ns a product in a loop, on the
      * CI machine's AMD EPYC) */
     return (int64_t)((lo >> s) | (hi << (64 - s)));
+#else
+    /* |a| |b| as hi:lo from 32x32-bit products (mote__umul64: four 16-bit
+     * ones where the core has no long multiply; a's high half is 0 for
+     * the attribute differences setup passes, so two of them are skipped),
+     * floored by s; a negative product's floor is minus the magnitude's
+     * ceiling, which the bits shifted out decide */
+    const bool neg = (a < 0) != (b < 0);
+    const uint64_t x = a < 0 ? 0u - (uint64_t)a : (uint64_t)a, y = b < 0 ? 0u - (uint64_t)b : (uint64_t)b;
+    const uint32_t xl = (uint32_t)x, xh = (uint32_t)(x >> 32), yl = (uint32_t)y, yh = (uint32_t)(y >> 32);
+    const uint64_t ll = mote__umul64(xl, yl), lh = mote__umul64(xl, yh);
+    uint64_t hl = 0, hh = 0;
+    if (xh != 0) {
+        hl = mote__umul64(xh, yl);
+        hh = mote__umul64(xh, yh);
+    }
+    const uint64_t mid = (ll >> 32) + (uint32_t)lh + (uint32_t)hl;
+    const uint64_t lo = (uint32_t)ll | (mid << 32);
+    const uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
+    const uint64_t r = (lo >> s) | (hi << (64 - s));
+    return (int64_t)(neg ? 0u - r - ((lo << (64 - s)) != 0) : r);
+#endif
 }
 
 /* Shortcuts: the same bits as the code they stand in for, in fewer
@@ -70,6 +68,7 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
  * and size builds leave them out (MOTE_SHORTCUTS). */
 #if MOTE_SHORTCUTS && defined(__GNUC__)
 #define MOTE__SETUP_FAST 1
+#define MOTE__SETUP_INLINE static inline __attribute__((always_inline))
 
 /* floor(v / 2^k) in one instruction, where mote__floor_shift32 and 64
  * take four */
@@ -104,27 +103,17 @@ static inline int64_t mote__mul_shift2(int64_t a1, int64_t b1, int64_t a2, int64
 }
 #else
 #define MOTE__SETUP_FAST 0
+#define MOTE__SETUP_INLINE static inline
 #define mote__sar32 mote__floor_shift32
 #define mote__floor_div_pos mote__floor_div64
 #endif
 
 MOTE__SPEED_INLINE int64_t mote__abs64(int64_t v) { return v < 0 ? -v : v; }
+static inline uint32_t mote__abs32u(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
 
-/* round(f), halves up, for 0 <= f < 2^31: through a 32-bit integer, as a
- * float converted to a 64-bit one would cost a core without an FPU
- * libgcc's double-precision routines */
-MOTE__SPEED_INLINE int32_t mote__round_positive(float f)
-{
-#if MOTE_SHORTCUTS && defined(__SSE2__)
-    /* where double is hardware: f + 1/2 is exact in double (f's lowest bit
-     * is at least 2^-53 once f >= 2^-29; below, both give 0), so truncating
-     * it rounds halves up (the same for all 1.3 billion floats f) */
-    return (int32_t)((double)f + 0.5);
-#else
-    int32_t t = (int32_t)f;       /* toward zero */
-    return t + (f - (float)t >= 0.5f);   /* no branch: the fraction is noise */
-#endif
-}
+/* mote__floor_shift64, skipped for the usual k = 0 (mip level 0, no
+ * texel bits dropped): a size build calls it, a 64-bit shift in libgcc */
+static inline int64_t mote__floor_shift_k(int64_t v, int k) { return k != 0 ? mote__floor_shift64(v, k) : v; }
 
 MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
 {
@@ -183,9 +172,67 @@ MOTE__SPEED_INLINE int mote__before(const int32_t X[3], const int32_t Y[3], int 
     return (Y[i] < Y[j]) | ((Y[i] == Y[j]) & (X[i] < X[j]));
 }
 
-mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t Xin[3],
-                 const int32_t Yin[3], int64_t area2, const mote__svert *const vin[3], int F,
-                 int width, int height)
+#if MOTE_ENABLE_MIPMAPS
+/* The mip level of a triangle (MOTE_MIP_TRIANGLE): round(log2 rho), rho^2
+ * the texel area (level 0, vertices' 16.16 texels) over the pixel area
+ * (a2, twice the area in units of 2^-F pixel), clamped to the chain. In
+ * float: texel differences reach 2^45, their products past 64 bits. */
+static int mote__mip_level(const mote__raster_state *rs, const mote__svert *const v[3], int64_t a2, int F)
+{
+    const float du1 = (float)(v[1]->texel[0] - v[0]->texel[0]), dv1 = (float)(v[1]->texel[1] - v[0]->texel[1]);
+    const float du2 = (float)(v[2]->texel[0] - v[0]->texel[0]), dv2 = (float)(v[2]->texel[1] - v[0]->texel[1]);
+    float texels = du1 * dv2 - du2 * dv1;
+    texels = texels < 0.0f ? -texels : texels;
+    /* rho^2 = texels 2^-32 / (a2 2^-2F): level L when rho^2 >= 2 4^(L-1) */
+    float r = texels / ((float)a2 * (float)((int64_t)1 << (32 - 2 * F)));
+    int level = 0;
+    for (float at = 2.0f; r >= at && level + 1 < rs->mips->count; at *= 4.0f)
+        level++;
+    return level;
+}
+#endif
+
+/* Pixel bounding box: the pixels whose centre lies in the vertices'
+ * box, x from ceil((minx - half) / one) to floor((maxx - half) / one).
+ * Clamped to the viewport, it holds every pixel the planes are evaluated
+ * at. A triangle that holds no pixel centre (about 2% of a dense mesh's)
+ * ends here, and a box no wider than its pixels puts a triangle in no
+ * tile it does not touch. */
+/* mote__setup_box, with the vertices' extents {minx, miny, maxx, maxy}
+ * for setup (inline there: the call and the extents taken again cost a
+ * dense mesh 10% of setup) */
+MOTE__SETUP_INLINE mote__setup_result mote__box(const int32_t X[3], const int32_t Y[3], int F, int width,
+                                                int height, int box[4], int32_t ext[4])
+{
+    const int32_t one = (int32_t)1 << F, h32 = one >> 1, up = one - 1 - h32;
+    const int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
+    const int32_t miny = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), maxy = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
+    ext[0] = minx;
+    ext[1] = miny;
+    ext[2] = maxx;
+    ext[3] = maxy;
+    int x0 = mote__sar32(minx + up, F), x1 = mote__sar32(maxx - h32, F);
+    int y0 = mote__sar32(miny + up, F), y1 = mote__sar32(maxy - h32, F);
+    if (x0 > x1 || y0 > y1)
+        return MOTE__SETUP_EMPTY;
+    box[0] = MOTE__MAX(x0, 0);
+    box[1] = MOTE__MAX(y0, 0);
+    box[2] = MOTE__MIN(x1, width - 1);
+    box[3] = MOTE__MIN(y1, height - 1);
+    return box[0] > box[2] || box[1] > box[3] ? MOTE__SETUP_OUTSIDE : MOTE__SETUP_DRAWN;
+}
+
+mote__setup_result mote__setup_box(const int32_t X[3], const int32_t Y[3], int F, int width, int height, int box[4])
+{
+    int32_t ext[4];
+    return mote__box(X, Y, F, width, height, box, ext);
+}
+
+/* mote__setup for F sub-pixel bits: speed builds make a copy for the
+ * default 8, where every shift by F is by a constant */
+MOTE__SETUP_INLINE mote__setup_result mote__setup_f(mote__tri *t, const mote__raster_state *rs, const int32_t Xin[3],
+                                                    const int32_t Yin[3], int64_t area2,
+                                                    const mote__svert *const vin[3], int F, int width, int height)
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
 
@@ -195,6 +242,13 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
      * and attributes does not depend on that order either (with vertex 0
      * as given, about 2% of depths moved by a unit). A rotation keeps the
      * winding. */
+    /* first the box, the same in any order: a triangle with no pixel
+     * ends before the rest */
+    int box[4];
+    int32_t ext[4];
+    const mote__setup_result inside = mote__box(Xin, Yin, F, width, height, box, ext);
+    if (inside != MOTE__SETUP_DRAWN)
+        return inside;
     int top = mote__before(Xin, Yin, 1, 0);
     top = mote__before(Xin, Yin, 2, top) ? 2 : top;
     const mote__svert *v[3];
@@ -206,25 +260,8 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
     }
     const int32_t *const X = t->X, *const Y = t->Y;
 
-    /* Pixel bounding box: the pixels whose centre lies in the vertices'
-     * box, x from ceil((minx - half) / one) to floor((maxx - half) / one).
-     * Clamped to the viewport, it holds every pixel the planes are
-     * evaluated at. A triangle that holds no pixel centre (about 2% of a
-     * dense mesh's) ends here, and a box no wider than its pixels puts a
-     * triangle in no tile it does not touch. */
-    int32_t minx = MOTE__MIN(X[0], MOTE__MIN(X[1], X[2])), maxx = MOTE__MAX(X[0], MOTE__MAX(X[1], X[2]));
-    int32_t miny = MOTE__MIN(Y[0], MOTE__MIN(Y[1], Y[2])), maxy = MOTE__MAX(Y[0], MOTE__MAX(Y[1], Y[2]));
-    const int32_t h32 = (int32_t)half, up = (int32_t)one - 1 - h32;
-    int x0 = mote__sar32(minx + up, F), x1 = mote__sar32(maxx - h32, F);
-    int y0 = mote__sar32(miny + up, F), y1 = mote__sar32(maxy - h32, F);
-    if (x0 > x1 || y0 > y1)
-        return MOTE__SETUP_EMPTY;
-    x0 = MOTE__MAX(x0, 0);
-    y0 = MOTE__MAX(y0, 0);
-    x1 = MOTE__MIN(x1, width - 1);
-    y1 = MOTE__MIN(y1, height - 1);
-    if (x0 > x1 || y0 > y1)
-        return MOTE__SETUP_OUTSIDE;
+    const int x0 = box[0], y0 = box[1], x1 = box[2], y1 = box[3];
+    const int32_t minx = ext[0], miny = ext[1], maxx = ext[2], maxy = ext[3];
     /* every field is written below: no memset of the whole record */
     t->rs = rs;
     t->xmin = (int16_t)x0;
@@ -244,11 +281,21 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
     const int32_t cx = (X[0] & -(int32_t)one) + (int32_t)half, cy = (Y[0] & -(int32_t)one) + (int32_t)half;
     /* ed[3 j + i]: edge i's value (j = 0), x step (1), y step (2) */
     int64_t ed[9], *const e = ed, *const edx = ed + 3, *const edy = ed + 6;
+    /* within 2^14 sub-pixels each way, E and its steps fit 32 bits: |ax|,
+     * |ay| <= 2^14, |cx - X[j]|, |cy - Y[j]| <= 2^14 + 2^(F-1), so each
+     * product is below 2^29; a 32-bit core then needs no 64-bit product */
+    const bool small = MOTE__CORE32 && maxx - minx <= (1 << 14) && maxy - miny <= (1 << 14);
     for (int i = 0, j = 1, k = 2; i < 3; j = k, k = i, i++) {
         int32_t ax = X[k] - X[j], ay = Y[k] - Y[j];
         if (area2 < 0) {
             ax = -ax;
             ay = -ay;
+        }
+        if (small) {
+            e[i] = ax * (cy - Y[j]) - ay * (cx - X[j]);
+            edx[i] = -ay * (int32_t)one;
+            edy[i] = ax * (int32_t)one;
+            continue;
         }
         e[i] = (int64_t)ax * (cy - Y[j]) - (int64_t)ay * (cx - X[j]);
         edx[i] = (int64_t)((uint64_t)-(int64_t)ay << F);
@@ -264,7 +311,11 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         t->order = (uint8_t)((swap ? 2 << 2 | 1 << 4 : 1 << 2 | 2 << 4) | ((area2 > 0) != swap) << 6);
     }
 
-    t->rbits = MOTE__RBITS;       /* any pixel loop stays defined (N = 0: A = a0) */
+    /* any pixel loop stays defined (N = 0: A = a0) */
+    t->rbits = 30;
+    t->q_drop = 0;
+    t->n_extra = 0;
+    t->texel_bits = MOTE__TEXEL_BITS;
     t->q = t->qdx = t->qdy = 0;
     /* The shade: vertex 0's, and the differences to it (shades and their
      * differences fit in 32 bits). It is grey when its three channels agree
@@ -272,7 +323,7 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
      * is also zero (shades are >= 0): mote__modulate(c, 0) is 0 for any
      * texel, so a black triangle needs no weights. Tested with bits. */
     int64_t d1[MOTE__ATTRS], d2[MOTE__ATTRS];
-    uint32_t differ = 0, vary = 0, lit = 0;
+    uint32_t differ = 0, vary = 0, lit = 0, dmag = 0;
     static const int channel_attr[3] = {MOTE__A_R, MOTE__A_G, MOTE__A_B};
     for (int c = 0; c < 3; c++) {
         int32_t s0 = v[0]->s[c];
@@ -285,11 +336,31 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
                 | (uint32_t)(e2 ^ (int32_t)d2[MOTE__A_R]);
         vary |= (uint32_t)(e1 | e2);
         lit |= (uint32_t)s0;
+        dmag |= mote__abs32u(e1) | mote__abs32u(e2);
     }
     if (!rs->gouraud)             /* one shade per triangle: vertex 0's */
         vary = 0;
+    /* a black triangle whose texels' alpha cuts or blends still reads
+     * them: flat, at shade 0 */
     t->shade = vary != 0 ? (differ == 0 ? MOTE__SHADE_MONO : MOTE__SHADE_RGB)
-             : lit != 0 ? MOTE__SHADE_FLAT : MOTE__SHADE_BLACK;
+             : lit != 0 || (rs->alpha & (MOTE__ALPHA_TEST | MOTE__ALPHA_TEXEL)) || mote__has_layers(rs) ? MOTE__SHADE_FLAT
+             : MOTE__SHADE_BLACK;
+#if MOTE__ADD_ENABLED
+    /* an additive colour (highlights, fog): three planes more, and all
+     * three shade channels, for the generic loop */
+    if (rs->additive)
+        t->shade = MOTE__SHADE_ADD;
+    for (int c = 0; c < 3; c++) {
+        const int a = MOTE__A_AR + c;
+        t->a0[a] = d1[a] = d2[a] = 0;
+        if (rs->additive) {
+            t->a0[a] = v[0]->a[c];
+            d1[a] = v[1]->a[c] - v[0]->a[c];
+            d2[a] = v[2]->a[c] - v[0]->a[c];
+            dmag |= mote__abs32u((int32_t)d1[a]) | mote__abs32u((int32_t)d2[a]);
+        }
+    }
+#endif
     t->a0[MOTE__A_U] = t->a0[MOTE__A_V] = 0;
     bool needs_weights = t->shade != MOTE__SHADE_BLACK && (rs->gouraud || rs->tex != MOTE__TEX_NONE);
     if (!needs_weights)
@@ -307,7 +378,7 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
          * which only larger triangles compute. */
         const int64_t sx = maxx - minx, sy = maxy - miny;
         int64_t emax = 2 * sx * sy + one * (sx + sy);
-        if (!MOTE_SHORTCUTS || MOTE__MAX(emax, a2) > ((int64_t)1 << 31) - 2) {
+        if (MOTE__MAX(emax, a2) > ((int64_t)1 << 31) - 2) {
             /* E is linear: its largest and smallest values over the box
              * take each axis's term at its larger and smaller end */
             const int32_t b0[2] = {x0 - ox, y0 - oy}, b1[2] = {x1 - ox, y1 - oy};
@@ -334,7 +405,7 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
          * for the usual k = 0 */
         int64_t shifted[9];
         const int64_t *pd = ed;
-        if (!MOTE_SHORTCUTS || k != 0) {
+        if (k != 0) {
             for (int i = 0; i < 9; i++)
                 shifted[i] = mote__floor_shift64(ed[i], k);
             pd = shifted;
@@ -345,18 +416,16 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         qbits = MOTE__MAX(qbits, 0);
         int64_t q[3];
         if (rs->persp == MOTE__PERSP_AFFINE) {
-            q[0] = q[1] = q[2] = 1;
-            qbits = 0;
+            /* equal weights, as large as perspective's: Q keeps as many bits */
+            q[0] = q[1] = q[2] = (int64_t)1 << qbits;
         } else {
-            /* w > 0 (mote__snap): a positive float's bits order as its
-             * value does, and comparing them spares a soft-float core two
-             * library calls */
-            float wmin = v[0]->w;
-            for (int i = 1; i < 3; i++)
-                if (mote__float_bits(v[i]->w) < mote__float_bits(wmin))
-                    wmin = v[i]->w;
+            /* qi = 1/wi 2^qbits / max(1/w), rounded, from the mantissas
+             * (in (2^30, 2^31]) shifted by the exponents' differences: the
+             * largest is at most 2^qbits (qbits <= 28: shifts of 3 and up) */
+            const int32_t emin = MOTE__MIN(v[0]->qe, MOTE__MIN(v[1]->qe, v[2]->qe));
             for (int i = 0; i < 3; i++) {
-                q[i] = mote__round_positive((float)((int32_t)1 << qbits) * (wmin / v[i]->w));   /* qbits <= 28 */
+                const int32_t sh = 31 - qbits + (v[i]->qe - emin);
+                q[i] = sh < 32 ? (v[i]->qm + ((uint32_t)1 << (sh - 1))) >> sh : 0;
                 if (q[i] < 1)
                     q[i] = 1;
             }
@@ -375,45 +444,90 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         t->qdx = mote__q_plane(pd[3] * q[0] + p1[1] + p2[1], shift);
         t->qdy = mote__q_plane(pd[6] * q[0] + p1[2] + p2[2], shift);
 
-        /* K (below): shade differences are at most 2^24 and never lower
-         * it; texel differences' largest magnitude does, and has the bit
-         * length of all their magnitudes or-ed together */
-        uint64_t dbits = 0;
+        /* Inside the triangle the Q plane (t->q's units) lies between the
+         * smallest and the largest qi times 2 area (Q is a sum of the Ei,
+         * >= 0 there and adding up to 2 area, weighted by the qi). When the
+         * qi are within 4x of each other, one shift q_drop takes it below
+         * 2^30 everywhere, and K = bitlen(least) + 29 keeps r = 2^K / q
+         * below 2^30 (with q >= 2^28 it keeps 28 bits); otherwise the pixel
+         * loops choose both per block, so that the far end keeps its bits. */
+        {
+            const int64_t qmin = MOTE__MIN(q[0], MOTE__MIN(q[1], q[2]));
+            const int64_t qmax = MOTE__MAX(q[0], MOTE__MAX(q[1], q[2]));
+            const int64_t most = mote__q_plane((a2 >> k) * qmax, shift);
+            const int d = MOTE__MAX(mote__bitlen((uint64_t)most) - 30, 0);
+            const int64_t least = mote__q_plane((a2 >> k) * qmin, shift) >> d;
+            t->q_drop = (int8_t)(qmax <= 4 * qmin ? d : -1);
+            t->rbits = (int8_t)(mote__bitlen((uint64_t)MOTE__MAX(least, 1)) + 29);
+        }
+
+        /* n_extra (below): the bit length of the largest attribute
+         * difference, the shades' and the texels' magnitudes or-ed (the
+         * shades' gathered as they were taken, in 32 bits) */
+        uint64_t dbits = t->shade != MOTE__SHADE_FLAT ? dmag : 0;
         d1[MOTE__A_U] = d2[MOTE__A_U] = d1[MOTE__A_V] = d2[MOTE__A_V] = 0;
+        t->level = 0;
         if (rs->tex != MOTE__TEX_NONE) {
-            /* texels in 16.16; whole periods removed so numbers stay small */
+#if MOTE_ENABLE_MIPMAPS
+            if (rs->mips && !rs->mip_pixel)
+                t->level = (uint8_t)mote__mip_level(rs, v, a2, F);
+#endif
+            const int lv = t->level;
+            const int64_t tw = MOTE__MAX(rs->tex_w >> lv, 1), th = MOTE__MAX(rs->tex_h >> lv, 1);
+            /* texels in 16.16; whole periods removed so numbers stay small,
+             * then as many fraction bits dropped (texel_bits) as keep them
+             * below 2^28: the pixel loops address texels with 32-bit ones */
+            int64_t T[2][3];
+            uint64_t mag = 0;
             for (int a = MOTE__A_U; a <= MOTE__A_V; a++) {
-                int64_t T[3];
-                for (int i = 0; i < 3; i++)
-                    T[i] = v[i]->texel[a - MOTE__A_U];
+                int64_t *const Ta = T[a - MOTE__A_U];
+                for (int i = 0; i < 3; i++)   /* in the level's texels */
+                    Ta[i] = mote__floor_shift_k(v[i]->texel[a - MOTE__A_U], lv);
                 mote_wrap wrap = a == MOTE__A_U ? rs->wrap_u : rs->wrap_v;
                 int64_t base = 0;
+                /* texture layers that whole periods of this texture would move
+                 * (mote__layers_select): the coordinates stay whole */
+#if MOTE__LAYERS_ENABLED
+                const bool whole = rs->texel_absolute;
+#else
+                const bool whole = false;
+#endif
 #if MOTE_SHORTCUTS
-                if (rs->pow2_repeat)  /* both axes repeat a power of two: a mask */
-                    base = (int64_t)((uint64_t)MOTE__MIN(T[0], MOTE__MIN(T[1], T[2]))
-                                     & ~(((uint64_t)(a == MOTE__A_U ? rs->tex_w : rs->tex_h) << 16) - 1));
+                if (rs->pow2_repeat && !whole)  /* both axes repeat a power of two: a mask */
+                    base = (int64_t)((uint64_t)MOTE__MIN(Ta[0], MOTE__MIN(Ta[1], Ta[2]))
+                                     & ~(((uint64_t)(a == MOTE__A_U ? tw : th) << 16) - 1));
                 else
 #endif
-                if (wrap != MOTE_WRAP_CLAMP) {
-                    int64_t period = ((int64_t)(a == MOTE__A_U ? rs->tex_w : rs->tex_h) << 16)
+                if (wrap != MOTE_WRAP_CLAMP && !whole) {
+                    int64_t period = ((int64_t)(a == MOTE__A_U ? tw : th) << 16)
                                    * (wrap == MOTE_WRAP_MIRROR ? 2 : 1);
-                    base = mote__floor_multiple(MOTE__MIN(T[0], MOTE__MIN(T[1], T[2])), period);
+                    base = mote__floor_multiple(MOTE__MIN(Ta[0], MOTE__MIN(Ta[1], Ta[2])), period);
                 }
-                t->a0[a] = T[0] - base;
-                d1[a] = T[1] - T[0];
-                d2[a] = T[2] - T[0];
+                for (int i = 0; i < 3; i++) {
+                    Ta[i] -= base;
+                    mag |= (uint64_t)mote__abs64(Ta[i]);
+                }
+            }
+            const int drop = MOTE__MIN(MOTE__MAX(mote__bitlen(mag) - 28, 0), MOTE__TEXEL_BITS);
+            t->texel_bits = (int8_t)(MOTE__TEXEL_BITS - drop);
+            for (int a = MOTE__A_U; a <= MOTE__A_V; a++) {
+                const int64_t *const Ta = T[a - MOTE__A_U];
+                const int64_t t0 = mote__floor_shift_k(Ta[0], drop);
+                t->a0[a] = t0;
+                d1[a] = mote__floor_shift_k(Ta[1], drop) - t0;
+                d2[a] = mote__floor_shift_k(Ta[2], drop) - t0;
                 dbits |= (uint64_t)mote__abs64(d1[a]) | (uint64_t)mote__abs64(d2[a]);
             }
         }
+        t->n_extra = (int8_t)MOTE__MAX(mote__bitlen(dbits) - 20, 0);
         /* Numerator planes: A = a0 + (d1 P1 + d2 P2) / Q. With
          * N = (d1 P1 + d2 P2) / 2^(shift + 10) as an integer plane (so a
          * pixel gets the same value whatever row or region reaches it; its
          * floored steps drift under 2 units a pixel, 2^11 / (Q >> shift) of
          * an attribute unit) and r = 2^K / (Q >> shift),
-         * A = a0 + (N >> 10) r / 2^(K - 20). N r is about (A - a0) 2^(K-20),
-         * so K is 54 (r keeps >= 23 bits, Q >> shift being below 2^31)
-         * unless an attribute spans more than 2^27 units. Only the planes
-         * the pixel loops read are made (mote__has_plane); the rest are 0. */
+         * A = a0 + (N >> 10) r / 2^(K - 20), which the pixel loops take to
+         * 32 bits (see mote__tri). Only the planes the pixel loops read
+         * are made (mote__has_plane); the rest are 0. */
         const int ps = shift + 10;
 #if MOTE__SETUP_FAST
         /* 2^(64-ps) for mote__mul_shift2, written so: from 1 << (64 - ps)
@@ -428,7 +542,7 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         const int ws = F - k, cs = ps - ws;
         const int64_t w1x = mote__sar64(p1[1], ws), w1y = mote__sar64(p1[2], ws);
         const int64_t w2x = mote__sar64(p2[1], ws), w2y = mote__sar64(p2[2], ws);
-#pragma GCC unroll 5              /* as GCC unrolled the loop before it grew */
+#pragma GCC unroll 8              /* as GCC unrolled the loop before it grew */
 #endif
         for (int a = 0; a < MOTE__ATTRS; a++) {
             int64_t *n = t->n[a];
@@ -453,12 +567,6 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
                                  + (uint64_t)mote__mul_shift(d2[a], p2[j], ps));
 #endif
         }
-#if MOTE_SHORTCUTS
-        if (dbits >> 27 == 0)     /* the usual K, without a bit length */
-            t->rbits = MOTE__RBITS;
-        else
-#endif
-        t->rbits = (int8_t)(MOTE__RBITS - MOTE__MIN(MOTE__MAX(mote__bitlen(dbits) - 27, 0), 20));
     }
 
     t->z = t->zdx = t->zdy = 0;
@@ -496,4 +604,15 @@ mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const
         t->zdy = zp[2];
     }
     return MOTE__SETUP_DRAWN;
+}
+
+mote__setup_result mote__setup(mote__tri *t, const mote__raster_state *rs, const int32_t X[3],
+                 const int32_t Y[3], int64_t area2, const mote__svert *const v[3], int F,
+                 int width, int height)
+{
+#if MOTE__SETUP_FAST
+    if (F == 8)
+        return mote__setup_f(t, rs, X, Y, area2, v, 8, width, height);
+#endif
+    return mote__setup_f(t, rs, X, Y, area2, v, F, width, height);
 }

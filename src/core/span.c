@@ -43,27 +43,19 @@
 #define MOTE__INLINE static inline __attribute__((always_inline))
 #define MOTE__SMALL MOTE__INLINE
 /* per-attribute loops unrolled, so that a variant keeps only the planes it reads */
-#define MOTE__UNROLL _Pragma("GCC unroll 5")
+#define MOTE__UNROLL _Pragma("GCC unroll 8")
 #else
 #define MOTE__UNROLL
 #define MOTE__INLINE static
 /* a few 64-bit steps the pixel loop repeats per attribute: one copy */
 #define MOTE__SMALL MOTE__SPEED_INLINE
 #endif
-
-/* What the host is, for faster forms with the same results (and
- * format.h's MOTE__LITTLE_ENDIAN): two channels in one multiplication
- * where registers are 64 bits wide (not on 32-bit microcontrollers, where a
- * 64-bit product is a library call). */
-#if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ >= 8
-#define MOTE__WIDE_REGISTERS 1
-#else
-#define MOTE__WIDE_REGISTERS 0
-#endif
+#define MOTE__PLANE_FN MOTE__SMALL
+#include "plane.h"
 
 /* Depth buffer selector inside the body, and what a draw does with it. */
 enum { MOTE__D_NONE = 0, MOTE__D_16 = 1, MOTE__D_32 = 2 };
-enum { MOTE__D_TEST = 1, MOTE__D_WRITE = 2 };
+enum { MOTE__D_TEST = 1, MOTE__D_WRITE = 2, MOTE__D_EQUAL = 4, MOTE__D_ONLY = 8 };
 
 MOTE__INLINE int mote__wrap(int i, int n, mote_wrap mode)
 {
@@ -89,7 +81,6 @@ typedef struct mote__tex_view {
     const uint8_t *pixels;
     int stride, w, h;
     int stride_log2;              /* with pow2_repeat: rows by a shift */
-    int row_shift;                /* mote__texel_pow2: K - 4 - stride_log2 */
     mote_format format;
     mote_wrap wrap_u, wrap_v;
     bool pow2_repeat;
@@ -103,41 +94,53 @@ MOTE__INLINE const uint8_t *mote__texel_row(const mote__tex_view *tx, bool pow2_
     return tx->pixels + (shift ? y << tx->stride_log2 : y * (size_t)tx->stride);
 }
 
-/* The texel nearest to (u, v), in 16.16 texels: its row, and its column in *col. */
-MOTE__INLINE const uint8_t *mote__nearest(const mote__tex_view *tx, bool pow2_repeat, int64_t u, int64_t v,
-                                          size_t *col)
+/* The texel nearest to (u, v), texel coordinates with tb fraction bits:
+ * its row, and its column in *col. */
+MOTE__INLINE const uint8_t *mote__nearest(const mote__tex_view *tx, bool pow2_repeat, int32_t u, int32_t v,
+                                          int tb, size_t *col)
 {
+    const int iu = u >> tb, iv = v >> tb;
     size_t tv;
     if (pow2_repeat) {
-        *col = (size_t)(u >> 16) & (size_t)(tx->w - 1);
-        tv = (size_t)(v >> 16) & (size_t)(tx->h - 1);
+        *col = (size_t)(iu & (tx->w - 1));
+        tv = (size_t)(iv & (tx->h - 1));
     } else {
-        *col = (size_t)mote__wrap((int)(u >> 16), tx->w, tx->wrap_u);
-        tv = (size_t)mote__wrap((int)(v >> 16), tx->h, tx->wrap_v);
+        *col = (size_t)mote__wrap(iu, tx->w, tx->wrap_u);
+        tv = (size_t)mote__wrap(iv, tx->h, tx->wrap_v);
     }
     return mote__texel_row(tx, pow2_repeat, tv);
 }
 
-/* The four texels bilinear filtering blends at (u, v), in 16.16 texels:
- * columns u0 and u1 of rows row0 and row1, weighted by fu and fv, the
- * 8-bit fractions of the way from u0 to u1 and row0 to row1. The pixel
- * loop keeps a nearest texel in row0 and u0. */
+/* The four texels bilinear filtering blends at (u, v), texel coordinates
+ * with tb fraction bits: columns u0 and u1 of rows row0 and row1, weighted
+ * by fu and fv, the 8-bit fractions of the way from u0 to u1 and row0 to
+ * row1. The pixel loop keeps a nearest texel in row0 and u0. */
 typedef struct mote__taps {
     const uint8_t *row0, *row1;
     size_t u0, u1;
     uint32_t fu, fv;
 } mote__taps;
 
-MOTE__INLINE mote__taps mote__bilinear_taps(const mote__tex_view *tx, bool pow2_repeat, int64_t u, int64_t v)
+/* the 8 bits below the point of x, a coordinate with tb fraction bits */
+MOTE__INLINE uint32_t mote__frac8(int32_t x, int tb)
 {
-    u -= 0x8000;
-    v -= 0x8000;
-    /* the next column and row from the 64-bit value: iu + 1 overflowed int
-     * where garbage texels (a hostile texel range) made iu INT_MAX */
-    int iu = (int)(u >> 16), iv = (int)(v >> 16), iu1 = (int)((u >> 16) + 1), iv1 = (int)((v >> 16) + 1);
+    return (tb >= 8 ? (uint32_t)x >> (tb - 8) : (uint32_t)x << (8 - tb)) & 0xff;
+}
+
+MOTE__INLINE mote__taps mote__bilinear_taps(const mote__tex_view *tx, bool pow2_repeat, int32_t u, int32_t v, int tb)
+{
+    /* half a texel back, modular: garbage texels (a hostile texel range)
+     * may lie anywhere */
+    const uint32_t half = tb > 0 ? (uint32_t)1 << (tb - 1) : 0u;
+    u = (int32_t)((uint32_t)u - half);
+    v = (int32_t)((uint32_t)v - half);
+    /* the next column and row in 64 bits: iu + 1 overflowed int where
+     * garbage made iu INT_MAX */
+    const int iu = u >> tb, iv = v >> tb, iu1 = (int)(int32_t)(uint32_t)((int64_t)iu + 1),
+              iv1 = (int)(int32_t)(uint32_t)((int64_t)iv + 1);
     mote__taps t;
-    t.fu = (uint32_t)(u >> 8) & 0xff;
-    t.fv = (uint32_t)(v >> 8) & 0xff;
+    t.fu = mote__frac8(u, tb);
+    t.fv = mote__frac8(v, tb);
     int u0, u1, v0, v1;
     if (pow2_repeat) {
         u0 = iu & (tx->w - 1);
@@ -171,15 +174,37 @@ MOTE__INLINE void mote__blend(mote_format format, const mote__taps *t, uint32_t 
                 + e[k] * fu * fv + 32768) >> 16;
 }
 
-/* A plane's value d steps (of one axis) from base. The value at a pixel of
- * the triangle fits in 64 bits, but d * step alone may not (the origin can
- * lie far outside the viewport, and the row and column terms then nearly
- * cancel), so the sum is formed in modular unsigned arithmetic, which is
- * exact whenever the result fits. */
-MOTE__INLINE int64_t mote__plane_at(int64_t base, int64_t step, int64_t d)
+/* Bilinear's blend of the four taps' texel alphas, unrounded (16
+ * fraction bits). */
+MOTE__INLINE uint32_t mote__blend_alpha_wide(mote_format format, const mote__taps *t)
 {
-    return (int64_t)((uint64_t)base + (uint64_t)step * (uint64_t)d);
+    const uint32_t fu = t->fu, fv = t->fv;
+    return mote__texel_alpha(format, t->row0, t->u0) * (256 - fu) * (256 - fv)
+         + mote__texel_alpha(format, t->row0, t->u1) * fu * (256 - fv)
+         + mote__texel_alpha(format, t->row1, t->u0) * (256 - fu) * fv
+         + mote__texel_alpha(format, t->row1, t->u1) * fu * fv;
 }
+
+/* the same rounded, as mote__blend's channels */
+MOTE__INLINE uint32_t mote__blend_alpha(mote_format format, const mote__taps *t)
+{
+    return (mote__blend_alpha_wide(format, t) + 32768) >> 16;
+}
+
+#if MOTE_ENABLE_BLEND
+/* Source channels src (0..255) over pixel x of row with alpha a (0..255):
+ * src a + dst (255 - a), rounded, per 8-bit channel, the destination read
+ * back as 8 bits (RGB565 widened as its texels are), then packed. */
+static uint32_t mote__blend_over(const uint8_t *row, ptrdiff_t x, mote_format fmt, const uint32_t src[3], uint32_t a)
+{
+    uint8_t d[4];
+    mote__read_rgba(row, (int)x, fmt, d);
+    uint32_t c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = mote__div255(src[k] * a + d[k] * (255 - a));
+    return mote__pack(fmt, c[0], c[1], c[2]);
+}
+#endif
 
 /* The next pixel's value, modular for the same reason: a plane may leave
  * 64 bits past a row's last pixel, or inside a hostile triangle whose
@@ -188,40 +213,6 @@ MOTE__INLINE int64_t mote__plane_at(int64_t base, int64_t step, int64_t d)
 MOTE__INLINE int64_t mote__plane_next(int64_t value, int64_t step)
 {
     return (int64_t)((uint64_t)value + (uint64_t)step);
-}
-
-/* 2^k / (q >> 10), for q a value of the triangle's Q plane (setup.c's
- * mote__q_plane: q >> 10 is Q >> shift): the one division per pixel. */
-MOTE__SMALL uint64_t mote__recip_k(int64_t q, int k)
-{
-    uint64_t qs = (uint64_t)(q >> 10);
-    if (qs == 0)                  /* never inside a sane triangle: a branch, not a select */
-        return (uint64_t)1 << k;
-    return ((uint64_t)1 << k) / qs;
-}
-
-/* An attribute from its numerator plane value n and r (see setup.c): one
- * multiplication. Modular, so a hostile triangle gives garbage, not UB. */
-MOTE__SMALL int64_t mote__attr(int64_t a0, int64_t n, uint64_t r, int k)
-{
-    return a0 + ((int64_t)((uint64_t)(n >> 10) * r) >> (k - 20));
-}
-
-/* The nearest texel of a repeating power-of-two texture, from the texel
- * coordinates' numerator planes: its row, and its column in *col.
- * u = a0 + P / 2^(k-20) with P = (n >> 10) r (mote__attr), and the texel
- * column is (u >> 16) & (w - 1): that is bits k-4 and up of
- * a0 2^(k-20) + P, which in modular 64-bit arithmetic are right as long as
- * they lie below bit 64, w <= 2^(68-k) (the raster state keeps pow2_repeat
- * for textures up to that). One addition and one shift instead of two
- * shifts, and the row's byte offset straight from v's sum. */
-MOTE__INLINE const uint8_t *mote__texel_pow2(const mote__tex_view *tx, const uint64_t origin[2], int64_t nu,
-                                             int64_t nv, uint64_t r, int k, size_t *col)
-{
-    uint64_t su = origin[0] + (uint64_t)(nu >> 10) * r, sv = origin[1] + (uint64_t)(nv >> 10) * r;
-    *col = (size_t)(su >> (k - 4)) & (size_t)(tx->w - 1);
-    /* the row's offset (v's texel << stride_log2) is those bits of sv moved down less far */
-    return tx->pixels + ((size_t)(sv >> tx->row_shift) & ((size_t)(tx->h - 1) << tx->stride_log2));
 }
 
 /* (c * s + 2^23) >> 24 for a channel c <= 255 and a shade s in [0, 2^24]
@@ -327,146 +318,408 @@ MOTE__INLINE uint32_t mote__word(const uint8_t *row, size_t x)
 #define MOTE__VECTOR_COLOR 0
 #endif
 
-MOTE__SMALL uint32_t mote__clamp_shade(int64_t v)
+/* An interpolated shade, clamped. */
+MOTE__SMALL uint32_t mote__shade_at(int32_t a0, int32_t n, int32_t r, int shift)
 {
-    /* one test for the usual in-range value, as for depth */
-    if ((uint64_t)v > MOTE__SHADE_ONE)
-        return v < 0 ? 0u : (uint32_t)MOTE__SHADE_ONE;
-    return (uint32_t)v;
+    return mote__clamp_shade(mote__attr(a0, n, r, shift));
 }
 
-/* An interpolated shade, clamped. */
-MOTE__SMALL uint32_t mote__shade_at(int64_t a0, int64_t n, uint64_t r, int k)
-{
-    return mote__clamp_shade(mote__attr(a0, n, r, k));
-}
+/* The rows are cut into blocks of MOTE__BLOCK pixels, counted from each
+ * row's own first pixel, whatever region draws it: the pixel loop steps
+ * 32-bit copies of the planes taken afresh at each block's first pixel
+ * (see mote__tri). */
+#define MOTE__BLOCK_LOG2 6
+#define MOTE__BLOCK (1 << MOTE__BLOCK_LOG2)
+
+/* A block's 32-bit planes: q and the numerators at its first pixel to be
+ * drawn, and their x steps, rounded; K of its reciprocals and the shift
+ * of its attributes (see mote__block_begin). */
+typedef struct mote__block {
+    int32_t q, qdx, n[MOTE__ATTRS], ndx[MOTE__ATTRS];
+    int k, ash;
+#if MOTE_ENABLE_MIPMAPS
+    int32_t qdy, nudy, nvdy;      /* per-pixel mip levels: the y steps, rounded */
+#endif
+} mote__block;
 
 /* What the pixel loop needs of a triangle, read once per triangle into
  * locals (see the top of the file). */
 typedef struct mote__fill_ctx {
-    int64_t zdx, qdx;
+    int64_t zdx, qdx;             /* the 64-bit x steps, to each block's first pixel */
     /* the numerator planes: origin value, x and y steps (0 for those the
      * triangle lacks: a binned record ends after its last plane) */
     int64_t n0[MOTE__ATTRS], ndx[MOTE__ATTRS], ndy[MOTE__ATTRS];
-    int64_t a0[MOTE__ATTRS];
+    int32_t a0[MOTE__ATTRS];
+    int n_extra;                  /* the triangle's (mote__tri) */
+    int tb;                       /* fraction bits of texel coordinates */
     uint32_t flat_px;             /* the pixel when nothing varies */
     uint32_t sr, sg, sb;          /* the shade when it does not vary */
     mote__tex_view tx;
-    uint64_t tex_origin[2];       /* mote__texel_pow2: a0 of u and v, times 2^(k-20) */
     int seg_log2;                 /* sub-span: segments of 2^seg_log2 columns */
-    uint64_t affine_r;            /* affine: all qi are 1, Q is (nearly) constant: one r */
+    int32_t affine_r;             /* affine: all qi alike, Q constant: one r */
+    int q_drop;                   /* the triangle's (mote__tri) ... */
+    mote__block steps;            /* ... and when >= 0, every block's steps, K and shift */
+    uint32_t alpha8, cutoff;      /* the draw's (mote__raster_state) */
+#if MOTE_ENABLE_MIPMAPS
+    /* per-pixel mip levels: the chain's views, and the 64-bit y steps */
+    int levels;                   /* 0: none */
+    bool blend_levels;            /* trilinear: two levels a pixel */
+    mote__tex_view level[MOTE_MAX_MIPS];
+    int64_t qdy, nudy, nvdy;
+#endif
+#if MOTE__LAYERS_ENABLED
+    /* texture layers (the generic loop): their maps and views */
+    int layers;                   /* 0: none */
+    bool base_white;              /* the draw's own texture is white */
+    int tri_level;                /* the triangle's mip level */
+    const mote__layer *layer;
+    mote__tex_view lview[MOTE_MAX_LAYERS];
+#endif
 } mote__fill_ctx;
 
-/* One row: pixels [x0, x1) given the planes' values at x0 (z, Q and the
- * numerator planes n[]). Adds the pixels the depth test rejects to
- * *rejected (rare: counted rather than the written ones). */
-MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t *d16, uint32_t *d32,
-                               ptrdiff_t x0, ptrdiff_t x1, int64_t z, int64_t q, const int64_t n[MOTE__ATTRS],
-                               const int64_t span[2], uint32_t *rejected, const int tex, const mote_format tfmt, const bool pow2,
-                               const int shade, const int persp, const int dsel, const int dmode,
-                               const mote_format fmt, const int k)
+#if MOTE__ADD_ENABLED
+/* Channels t (0..255) of a pixel with an additive colour (highlights,
+ * fog): t s + 255 a, one rounding, at most 255; a from its numerators n
+ * at the pixel's reciprocal r. */
+static void mote__modulate_add(const mote__fill_ctx *c, const int32_t n[3], int32_t r, int ash, uint32_t t[3],
+                               uint32_t sr, uint32_t sg, uint32_t sb, const uint32_t *scale)
+{
+    const uint32_t s[3] = {sr, sg, sb};
+    for (int k = 0; k < 3; k++) {
+        uint64_t a = mote__shade_at(c->a0[MOTE__A_AR + k], n[k], r, ash);
+        if (scale)                /* a specular layer's, 2^16 = 1 */
+            a = (a * scale[k] + 32768) >> 16;
+        const uint64_t v = ((uint64_t)t[k] * s[k] + 255 * a + (1u << 23)) >> 24;
+        t[k] = v < 255 ? (uint32_t)v : 255u;
+    }
+}
+#endif
+
+#if MOTE_ENABLE_MIPMAPS
+/* The y steps a block's per-pixel mip levels take, in its scale. */
+static void mote__block_dy(const mote__fill_ctx *c, mote__block *b, int d, int nsh)
+{
+    b->qdy = mote__step32(c->qdy, d);
+    b->nudy = mote__step32(c->nudy, nsh);
+    b->nvdy = mote__step32(c->nvdy, nsh);
+}
+
+/* The level of a pixel at (u, v) (its q and numerators nu, nv): log2 of
+ * the largest texel step to the pixel right of it or below it, rounded,
+ * within the chain. */
+static int mote__pixel_level(const mote__fill_ctx *c, const mote__block *b, int32_t q, int32_t nu, int32_t nv,
+                             int32_t u, int32_t v, uint32_t *frac)
+{
+    const int32_t rx = mote__recip_k(mote__add32(q, b->qdx, 1), b->k);
+    const int32_t ry = mote__recip_k(mote__add32(q, b->qdy, 1), b->k);
+    const int32_t step[4] = {
+        (int32_t)((uint32_t)mote__attr(c->a0[MOTE__A_U], mote__add32(nu, b->ndx[MOTE__A_U], 1), rx, b->ash) - (uint32_t)u),
+        (int32_t)((uint32_t)mote__attr(c->a0[MOTE__A_V], mote__add32(nv, b->ndx[MOTE__A_V], 1), rx, b->ash) - (uint32_t)v),
+        (int32_t)((uint32_t)mote__attr(c->a0[MOTE__A_U], mote__add32(nu, b->nudy, 1), ry, b->ash) - (uint32_t)u),
+        (int32_t)((uint32_t)mote__attr(c->a0[MOTE__A_V], mote__add32(nv, b->nvdy, 1), ry, b->ash) - (uint32_t)v)};
+    uint32_t most = 0;
+    for (int i = 0; i < 4; i++) {
+        const uint32_t m = step[i] < 0 ? 0u - (uint32_t)step[i] : (uint32_t)step[i];
+        most = m > most ? m : most;
+    }
+    if (c->blend_levels) {
+        /* floor(log2(most / 2^tb)), and the next level's weight: the
+         * 8 bits below most's leading one */
+        const int bl = mote__bitlen(most), level = bl - 1 - c->tb;
+        const uint32_t f = (bl >= 9 ? most >> (bl - 9) : most << (9 - bl)) & 0xffu;
+        *frac = level < 0 || level >= c->levels - 1 ? 0u : f;
+        return level < 0 ? 0 : level >= c->levels ? c->levels - 1 : level;
+    }
+    /* round(log2(most / 2^tb)): the floor of log2(most sqrt 2) */
+    const int level = mote__bitlen(((uint64_t)most * 181) >> 7) - 1 - c->tb;
+    *frac = 0;
+    return level < 0 ? 0 : level >= c->levels ? c->levels - 1 : level;
+}
+
+/* A texel of one level, the draw's filter, for trilinear's second level:
+ * its colour into t, and its alpha. */
+static uint32_t mote__level_texel(const mote__tex_view *tx, int32_t u, int32_t v, int tb, bool bilinear, uint32_t t[3])
+{
+    mote__taps p;
+    if (bilinear) {
+        p = mote__bilinear_taps(tx, false, u, v, tb);
+        mote__blend(tx->format, &p, t);
+        return mote__blend_alpha(tx->format, &p);
+    }
+    p.row0 = mote__nearest(tx, false, u, v, tb, &p.u0);
+    mote__texel(tx->format, p.row0, p.u0, t);
+    return mote__texel_alpha(tx->format, p.row0, p.u0);
+}
+#endif
+
+#if MOTE__LAYERS_ENABLED
+/* What a pixel's texture layers give: shade to add (emissive), the
+ * highlights' scale per channel (specular, 2^16 = 1) and an opacity
+ * (0..MOTE__OPAQUE, 1/256 of the alpha's unit: rounded once, late). */
+#define MOTE__OPAQUE (255u * 256u)
+typedef struct mote__layer_px {
+    uint32_t e[3], m[3], o;
+    bool emit, spec;
+} mote__layer_px;
+
+/* A layer's coordinate on one axis (mote__layer's map) from the draw's t
+ * (tb fraction bits, level lv), wrapped to one period (clamped: near the
+ * texture), in 1/2^MOTE__LAYER_BITS texels. Modular: hostile
+ * coordinates give garbage texels, never undefined behaviour. */
+static int32_t mote__layer_coord(const mote__layer *l, int k, int32_t t, int tb, int lv, int size, mote_wrap wrap)
+{
+    const int64_t prod = (int64_t)t * l->mul[k];
+    const int s = l->sh[k] + tb - MOTE__LAYER_BITS - lv;
+    int64_t x = s >= 0 ? mote__floor_shift64(prod, s) : (int64_t)((uint64_t)prod << -s);
+    x = (int64_t)((uint64_t)x + (uint64_t)l->add[k]);
+    if (wrap == MOTE_WRAP_CLAMP) {
+        const int64_t hi = ((int64_t)size + 1) << MOTE__LAYER_BITS;
+        return (int32_t)(x < -hi ? -hi : x > hi ? hi : x);
+    }
+    const int64_t period = ((int64_t)size << MOTE__LAYER_BITS) * (wrap == MOTE_WRAP_MIRROR ? 2 : 1);
+    x %= period;
+    return (int32_t)(x < 0 ? x + period : x);
+}
+
+/* The layers at the draw's texel coordinates (u, v), tb fraction bits of
+ * level lv. */
+static void mote__layers_at(const mote__fill_ctx *c, int32_t u, int32_t v, int tb, int lv, bool bilinear,
+                            mote__layer_px *out)
+{
+    for (int k = 0; k < 3; k++) {
+        out->e[k] = 0;
+        out->m[k] = 65536;
+    }
+    out->o = MOTE__OPAQUE;
+    out->emit = out->spec = false;
+    for (int i = 0; i < c->layers; i++) {
+        const mote__layer *l = &c->layer[i];
+        const mote__tex_view *tx = &c->lview[i];
+        const int32_t lu = mote__layer_coord(l, 0, u, tb, lv, tx->w, tx->wrap_u);
+        const int32_t lw = mote__layer_coord(l, 1, v, tb, lv, tx->h, tx->wrap_v);
+        mote__taps p;
+        uint32_t t[3], a = 255;
+        if (bilinear) {
+            p = mote__bilinear_taps(tx, false, lu, lw, MOTE__LAYER_BITS);
+            mote__blend(tx->format, &p, t);
+        } else {
+            p.row0 = mote__nearest(tx, false, lu, lw, MOTE__LAYER_BITS, &p.u0);
+            mote__texel(tx->format, p.row0, p.u0, t);
+        }
+        if (l->role == MOTE_LAYER_EMISSIVE) {
+            out->emit = true;
+            for (int k = 0; k < 3; k++)
+                out->e[k] += t[k] * l->factor[k];
+        } else if (l->role == MOTE_LAYER_SPECULAR) {
+            out->spec = true;
+            for (int k = 0; k < 3; k++)   /* texel / 255 x factor, in 2^16 */
+                out->m[k] = (uint32_t)(((uint64_t)t[k] * l->factor[k] * out->m[k] / 65536 + 127) / 255);
+        } else {                  /* in 1/256 */
+            if (l->from_rgb)      /* Babylon.js's luminance weights */
+                a = 54 * t[0] + 183 * t[1] + 19 * t[2];
+            else
+                a = bilinear ? (mote__blend_alpha_wide(tx->format, &p) + 128) >> 8
+                             : mote__texel_alpha(tx->format, p.row0, p.u0) << 8;
+            a = (uint32_t)(((uint64_t)a * l->factor[0] + 128) >> 8);
+            out->o = (uint32_t)(((uint64_t)out->o * MOTE__MIN(a, MOTE__OPAQUE) + MOTE__OPAQUE / 2) / MOTE__OPAQUE);
+        }
+    }
+}
+#endif
+
+/* Pixels [x0, x1) of a row, all in one block, given the 32-bit planes'
+ * values at x0 (the exact depth plane z, q and the numerators n[]); bx is the
+ * block's first pixel and last the row's last one (sub-span segments).
+ * Adds the pixels the depth test rejects to *rejected (rare: counted
+ * rather than the written ones). */
+MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, const mote__block *b, uint8_t *crow, uint16_t *d16,
+                               uint32_t *d32, ptrdiff_t x0, ptrdiff_t x1, ptrdiff_t bx, ptrdiff_t last, int64_t z,
+                               uint32_t *rejected, const int tex, const mote_format tfmt,
+                               const bool pow2, const int shade, const int persp, const int dsel, const int dmode,
+                               const mote_format fmt, const int amode)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
-    const int64_t zdx = c->zdx, qdx = c->qdx;
-    int64_t nr = n[MOTE__A_R], ng = n[MOTE__A_G], nb = n[MOTE__A_B], nu = n[MOTE__A_U], nv = n[MOTE__A_V];
-    const int64_t nrdx = c->ndx[MOTE__A_R], ngdx = c->ndx[MOTE__A_G], nbdx = c->ndx[MOTE__A_B];
-    const int64_t nudx = c->ndx[MOTE__A_U], nvdx = c->ndx[MOTE__A_V];
+    const int64_t zdx = c->zdx;
+    const int32_t qdx = b->qdx;
+    int32_t q = b->q, nr = b->n[MOTE__A_R], ng = b->n[MOTE__A_G], nb = b->n[MOTE__A_B], nu = b->n[MOTE__A_U],
+            nv = b->n[MOTE__A_V];
+    const int32_t nrdx = b->ndx[MOTE__A_R], ngdx = b->ndx[MOTE__A_G], nbdx = b->ndx[MOTE__A_B];
+    const int32_t nudx = b->ndx[MOTE__A_U], nvdx = b->ndx[MOTE__A_V];
+    const int k = b->k, ash = b->ash, tb = c->tb;
+#if MOTE__ADD_ENABLED
+    /* the additive colour's numerators (MOTE__SHADE_ADD: the generic loop) */
+    int32_t na[3] = {b->n[MOTE__A_AR], b->n[MOTE__A_AG], b->n[MOTE__A_AB]};
+    const int32_t nadx[3] = {b->ndx[MOTE__A_AR], b->ndx[MOTE__A_AG], b->ndx[MOTE__A_AB]};
+#endif
     uint32_t sr = c->sr, sg = c->sg, sb = c->sb;
-    /* sub-span: r exact at screen columns that are multiples of 2^seg_log2
-     * and at the row's ends, linear between, so where a region starts a
-     * row changes nothing */
-    uint64_t seg_r0 = 0, seg_r1 = 0;
-    int64_t seg_step = 0;
+    /* sub-span: r exact at the first pixel of each segment of 2^seg_log2
+     * counted from the row's first pixel, and at the row's last pixel,
+     * linear between, so where a region starts a row changes nothing */
+    int32_t seg_r0 = 0, seg_r1 = 0, seg_step = 0;
     ptrdiff_t seg_x0 = 0, seg_x1 = 0, seg_next = x0;   /* r's ends; where the next segment starts */
     bool seg_exact = true;        /* until a segment with both ends valid: no r1 to reuse */
-    /* Speed builds index the buffers from the row's end, i = x - x1 < 0:
-     * one counter for both and no end to compare with, a register fewer
-     * in a loop that spills. The generic-only build indexes from the row's
-     * start (base 0: less code on a 32-bit core). */
+    /* Speed builds index the buffers from the end, i = x - x1 < 0: one
+     * counter for both and no end to compare with, a register fewer in a
+     * loop that spills. The generic-only build indexes from the start
+     * (base 0: less code on a 32-bit core). */
     const ptrdiff_t base = MOTE_SPECIALISE_SPANS ? x1 : 0;
     uint8_t *const cb = crow + base * mote__format_bytes(fmt);
     uint16_t *const d16b = MOTE_SPECIALISE_SPANS && dsel == MOTE__D_16 ? d16 + base : d16;   /* NULL unless used */
     uint32_t *const d32b = MOTE_SPECIALISE_SPANS && dsel == MOTE__D_32 ? d32 + base : d32;
 
-    for (ptrdiff_t i = x0 - base; i < x1 - base; i++, z = mote__plane_next(z, zdx), q = mote__plane_next(q, qdx),
-                                                   nr = mote__plane_next(nr, nrdx), ng = mote__plane_next(ng, ngdx),
-                                                   nb = mote__plane_next(nb, nbdx), nu = mote__plane_next(nu, nudx),
-                                                   nv = mote__plane_next(nv, nvdx)) {
+    for (ptrdiff_t i = x0 - base; i < x1 - base; i++, z = mote__plane_next(z, zdx),
+                                                   q = mote__add32(q, qdx, 1), nr = mote__add32(nr, nrdx, 1),
+                                                   ng = mote__add32(ng, ngdx, 1), nb = mote__add32(nb, nbdx, 1),
+                                                   nu = mote__add32(nu, nudx, 1), nv = mote__add32(nv, nvdx, 1)) {
         uint32_t depth = 0;
+#if MOTE__ADD_ENABLED
+        /* stepped here, as the loop's continue would skip it at the end */
+        int32_t add_n[3] = {0, 0, 0};
+        if (shade == MOTE__SHADE_ADD)
+            for (int j = 0; j < 3; j++) {
+                add_n[j] = na[j];
+                na[j] = mote__add32(na[j], nadx[j], 1);
+            }
+#endif
         if (dsel != MOTE__D_NONE) {
             /* z is a convex combination of in-range depths: only rounding
              * at an edge can take it a unit outside, so test before clamping */
-            int64_t zz = z >> MOTE__DEPTH_FRAC;
+            const int64_t zz = z >> MOTE__DEPTH_FRAC;
             depth = (uint32_t)zz;
             if ((uint64_t)zz > MOTE__DEPTH_MAX)
                 depth = zz < 0 ? 0u : MOTE__DEPTH_MAX;
             if (dsel == MOTE__D_16)
-                depth >>= 8;
-            if ((dmode & MOTE__D_TEST) && depth >= (dsel == MOTE__D_16 ? (uint32_t)d16b[i] : d32b[i])) {
+                depth >>= 8;      /* the top 16 bits of the exact 24-bit depth */
+            const uint32_t stored = dsel == MOTE__D_16 ? (uint32_t)d16b[i] : d32b[i];
+            if ((dmode & MOTE__D_TEST) && depth >= stored + ((dmode & MOTE__D_EQUAL) ? 1u : 0u)) {
                 (*rejected)++;
                 continue;
             }
         }
         uint32_t px = c->flat_px;
+        /* with alpha (the generic loop only): the source channels before
+         * packing, and the texel's alpha */
+        uint32_t src[3] = {0, 0, 0}, ta = 255;
+#if MOTE__LAYERS_ENABLED
+        uint32_t op = MOTE__OPAQUE;   /* texture layers' opacity */
+#endif
+        if (amode && !varying) {
+            src[0] = mote__modulate(255, sr);
+            src[1] = mote__modulate(255, sg);
+            src[2] = mote__modulate(255, sb);
+        }
         if (varying) {
-            uint64_t r;
+            int32_t r;
             if (MOTE_ENABLE_SUBSPAN && persp == MOTE__PERSP_SUBSPAN) {
                 const ptrdiff_t x = base + i;
                 if (x >= seg_next) {
-                    /* r is exact at the segment's ends, cut to the
-                     * triangle's own row: past its edges Q may be
+                    /* r is exact at the segment's ends, cut to the row's
+                     * last pixel: past the triangle's edge q may be
                      * anything (across a sliver's edge it moves by far
-                     * more than its whole range inside, within a pixel),
-                     * and r from it garbage. The row's span, not the
-                     * region's cut of it, so that a region changes
-                     * nothing. The start's r is the last segment's end's,
-                     * unless depth-rejected pixels skipped a segment. */
-                    const ptrdiff_t len = (ptrdiff_t)1 << c->seg_log2, start = x & -len;
-                    const ptrdiff_t first = start > span[0] ? start : (ptrdiff_t)span[0];
-                    const bool reuse = !seg_exact && first == seg_x1;
+                     * more than its whole range inside, within a pixel).
+                     * The start's r is the last segment's end's, unless
+                     * depth-rejected pixels skipped a segment. Segments
+                     * tile blocks (2^seg_log2 <= MOTE__BLOCK). */
+                    const ptrdiff_t len = (ptrdiff_t)1 << c->seg_log2, start = bx + ((x - bx) & -len);
+                    const bool reuse = !seg_exact && start == seg_x1;
                     seg_next = start + len;
-                    seg_x0 = first;
-                    seg_x1 = seg_next < span[1] - 1 ? seg_next : (ptrdiff_t)span[1] - 1;
+                    seg_x0 = start;
+                    seg_x1 = seg_next < last ? seg_next : last;
                     seg_exact = seg_x1 <= seg_x0;
                     if (!seg_exact) {
-                        seg_r0 = reuse ? seg_r1 : mote__recip_k(mote__plane_at(q, qdx, seg_x0 - x), k);
-                        seg_r1 = mote__recip_k(mote__plane_at(q, qdx, seg_x1 - x), k);
+                        seg_r0 = reuse ? seg_r1 : mote__recip_k(mote__add32(q, qdx, (int32_t)(seg_x0 - x)), k);
+                        seg_r1 = mote__recip_k(mote__add32(q, qdx, (int32_t)(seg_x1 - x)), k);
                         /* (r1 - r0) / length, rounded toward zero: by a
                          * shift for a whole segment */
-                        int64_t d = (int64_t)seg_r1 - (int64_t)seg_r0;
+                        const int32_t d = seg_r1 - seg_r0;
                         seg_step = seg_x1 - seg_x0 == len
-                                 ? mote__floor_shift64(d + ((len - 1) & -(int64_t)(d < 0)), c->seg_log2)
-                                 : d / (int64_t)(seg_x1 - seg_x0);
+                                 ? mote__floor_shift32(d + ((int32_t)(len - 1) & -(int32_t)(d < 0)), c->seg_log2)
+                                 : d / (int32_t)(seg_x1 - seg_x0);
                     }
                 }
-                r = seg_exact ? mote__recip_k(q, k) : seg_r0 + (uint64_t)(seg_step * (x - seg_x0));
+                r = seg_exact ? mote__recip_k(q, k) : seg_r0 + seg_step * (int32_t)(x - seg_x0);
             } else {
                 r = persp == MOTE__PERSP_AFFINE ? c->affine_r : mote__recip_k(q, k);
             }
             if (shade == MOTE__SHADE_MONO) {
-                sr = sg = sb = mote__shade_at(c->a0[MOTE__A_R], nr, r, k);
-            } else if (shade == MOTE__SHADE_RGB) {
-                sr = mote__shade_at(c->a0[MOTE__A_R], nr, r, k);
-                sg = mote__shade_at(c->a0[MOTE__A_G], ng, r, k);
-                sb = mote__shade_at(c->a0[MOTE__A_B], nb, r, k);
+                sr = sg = sb = mote__shade_at(c->a0[MOTE__A_R], nr, r, ash);
+            } else if (shade == MOTE__SHADE_RGB || shade == MOTE__SHADE_ADD) {
+                sr = mote__shade_at(c->a0[MOTE__A_R], nr, r, ash);
+                sg = mote__shade_at(c->a0[MOTE__A_G], ng, r, ash);
+                sb = mote__shade_at(c->a0[MOTE__A_B], nb, r, ash);
             }
             if (tex) {
                 /* where the texel lies, or bilinear's four (nearest: row0, u0) */
                 const bool bilinear = MOTE_ENABLE_BILINEAR && tex == MOTE__TEX_BILINEAR;
+                int32_t u = mote__attr(c->a0[MOTE__A_U], nu, r, ash), v = mote__attr(c->a0[MOTE__A_V], nv, r, ash);
+                const mote__tex_view *tx = &c->tx;
+#if MOTE_ENABLE_MIPMAPS
+                /* trilinear: the next level's weight, and its texel */
+                uint32_t mip_f = 0, mip_t[3] = {0, 0, 0}, mip_a = 255;
+                if (c->levels) {  /* the generic loop's per-pixel level */
+                    const int lv = mote__pixel_level(c, b, q, nu, nv, u, v, &mip_f);
+                    tx = &c->level[lv];
+                    if (mip_f)
+                        mip_a = mote__level_texel(&c->level[lv + 1], mote__floor_shift32(u, lv + 1),
+                                                  mote__floor_shift32(v, lv + 1), tb, bilinear, mip_t);
+                    u = mote__floor_shift32(u, lv);
+                    v = mote__floor_shift32(v, lv);
+                }
+#endif
+                /* texture layers (the generic loop: tfmt is not known) */
+                bool white = false;
+#if MOTE__LAYERS_ENABLED
+                const bool layered = tfmt == MOTE_FORMAT_DEFAULT && c->layers;
+                mote__layer_px lp;
+                if (layered) {
+                    int lv = c->tri_level;
+#if MOTE_ENABLE_MIPMAPS
+                    if (c->levels)
+                        lv = (int)(tx - c->level);
+#endif
+                    mote__layers_at(c, u, v, tb, lv, bilinear, &lp);
+                    white = c->base_white;
+                    op = lp.o;
+                    if (lp.emit) {  /* before the texture multiplies: Babylon.js's order */
+                        if (shade == MOTE__SHADE_FLAT) {   /* the triangle's, not the last pixel's */
+                            sr = c->sr;
+                            sg = c->sg;
+                            sb = c->sb;
+                        }
+                        sr = MOTE__MIN(sr + lp.e[0], (uint32_t)MOTE__SHADE_ONE);
+                        sg = MOTE__MIN(sg + lp.e[1], (uint32_t)MOTE__SHADE_ONE);
+                        sb = MOTE__MIN(sb + lp.e[2], (uint32_t)MOTE__SHADE_ONE);
+                    }
+                }
+#endif
                 mote__taps p;
-                if (MOTE_SPECIALISE_SPANS && !bilinear && pow2) {
-                    p.row0 = mote__texel_pow2(&c->tx, c->tex_origin, nu, nv, r, k, &p.u0);
-                } else {
-                    const int64_t u = mote__attr(c->a0[MOTE__A_U], nu, r, k), v = mote__attr(c->a0[MOTE__A_V], nv, r, k);
-                    if (bilinear)
-                        p = mote__bilinear_taps(&c->tx, pow2, u, v);
-                    else
-                        p.row0 = mote__nearest(&c->tx, pow2, u, v, &p.u0);
+                if (white)
+                    memset(&p, 0, sizeof p);
+                else if (bilinear)
+                    p = mote__bilinear_taps(tx, pow2, u, v, tb);
+                else
+                    p.row0 = mote__nearest(tx, pow2, u, v, tb, &p.u0);
+                if (amode & (MOTE__ALPHA_TEST | MOTE__ALPHA_TEXEL)) {
+                    if (!white)
+                        ta = bilinear ? mote__blend_alpha(tx->format, &p) : mote__texel_alpha(tx->format, p.row0, p.u0);
+#if MOTE_ENABLE_MIPMAPS
+                    if (mip_f)
+                        ta = (ta * (256 - mip_f) + mip_a * mip_f + 128) >> 8;
+#endif
+                    uint32_t tv = ta;
+#if MOTE__LAYERS_ENABLED
+                    if (op < MOTE__OPAQUE)
+                        tv = (ta * op + MOTE__OPAQUE / 2) / MOTE__OPAQUE;
+#endif
+                    if (MOTE_ENABLE_ALPHA_TEST && (amode & MOTE__ALPHA_TEST) && tv < c->cutoff) {
+                        (*rejected)++;   /* cut out: neither colour nor depth */
+                        continue;
+                    }
                 }
                 /* vector registers only where the texture's format is a
                  * constant: the specialised variants, not their oracle,
                  * the generic loop */
-                if (MOTE__VECTOR_COLOR && tfmt == MOTE_FORMAT_RGBA8888 && fmt == MOTE_FORMAT_RGBA8888) {
+                if (MOTE__VECTOR_COLOR && !amode && tfmt == MOTE_FORMAT_RGBA8888 && fmt == MOTE_FORMAT_RGBA8888) {
 #if MOTE__VECTOR_COLOR
                     __m128i t = bilinear ? mote__blend_channels(mote__word(p.row0, p.u0), mote__word(p.row0, p.u1),
                                                                 mote__word(p.row1, p.u0), mote__word(p.row1, p.u1),
@@ -477,27 +730,71 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, uint8_t *crow, uint16_t 
                     px = mote__modulate_channels(t, sh, sl);
 #endif
                 } else {
-                    uint32_t t[3];
-                    if (bilinear)
-                        mote__blend(c->tx.format, &p, t);
+                    uint32_t t[3] = {255, 255, 255};
+                    if (white) {
+                    } else if (bilinear)
+                        mote__blend(tx->format, &p, t);
                     else
-                        mote__texel(c->tx.format, p.row0, p.u0, t);
+                        mote__texel(tx->format, p.row0, p.u0, t);
+#if MOTE_ENABLE_MIPMAPS
+                    if (mip_f)    /* trilinear: the two levels, weighed */
+                        for (int ch = 0; ch < 3; ch++)
+                            t[ch] = (t[ch] * (256 - mip_f) + mip_t[ch] * mip_f + 128) >> 8;
+#endif
                     /* a flat shade takes three products: testing for grey
                      * at every pixel costs what the shared product saves */
+#if MOTE__ADD_ENABLED
+                    if (shade == MOTE__SHADE_ADD) {
+                        const uint32_t *scale = NULL;
+#if MOTE__LAYERS_ENABLED
+                        scale = layered && lp.spec ? lp.m : NULL;
+#endif
+                        mote__modulate_add(c, add_n, r, ash, t, sr, sg, sb, scale);
+                    } else
+#endif
+#if MOTE__LAYERS_ENABLED
+                    if (MOTE__WIDE_REGISTERS && shade == MOTE__SHADE_MONO && !layered) {
+#else
                     if (MOTE__WIDE_REGISTERS && shade == MOTE__SHADE_MONO) {
+#endif
                         mote__modulate_grey(t, sr);
                     } else {
                         t[0] = mote__modulate(t[0], sr);
                         t[1] = mote__modulate(t[1], sg);
                         t[2] = mote__modulate(t[2], sb);
                     }
+                    if (amode)
+                        memcpy(src, t, sizeof src);
                     px = mote__pack(fmt, t[0], t[1], t[2]);
                 }
             } else {
-                px = mote__pack(fmt, mote__modulate(255, sr), mote__modulate(255, sg), mote__modulate(255, sb));
+                src[0] = src[1] = src[2] = 255;
+#if MOTE__ADD_ENABLED
+                if (shade == MOTE__SHADE_ADD) {
+                    mote__modulate_add(c, add_n, r, ash, src, sr, sg, sb, NULL);
+                } else
+#endif
+                {
+                    src[0] = mote__modulate(255, sr);
+                    src[1] = mote__modulate(255, sg);
+                    src[2] = mote__modulate(255, sb);
+                }
+                px = mote__pack(fmt, src[0], src[1], src[2]);
             }
         }
-        mote__store(cb, i, fmt, px);
+#if MOTE_ENABLE_BLEND
+        if (amode & MOTE__ALPHA_BLEND) {
+            uint32_t a = amode & MOTE__ALPHA_TEXEL ? mote__div255(c->alpha8 * ta) : c->alpha8;
+#if MOTE__LAYERS_ENABLED
+            if (op < MOTE__OPAQUE)   /* an opacity layer's: the three factors, rounded once */
+                a = (uint32_t)(((uint64_t)c->alpha8 * (amode & MOTE__ALPHA_TEXEL ? ta : 255u) * op
+                                + 255u * MOTE__OPAQUE / 2) / (255u * MOTE__OPAQUE));
+#endif
+            px = mote__blend_over(crow, base + i, fmt, src, a);
+        }
+#endif
+        if (!(dmode & MOTE__D_ONLY))
+            mote__store(cb, i, fmt, px);
         if (dsel != MOTE__D_NONE && (dmode & MOTE__D_WRITE)) {
             if (dsel == MOTE__D_16)
                 d16b[i] = (uint16_t)depth;
@@ -516,12 +813,59 @@ MOTE__INLINE bool mote__reads_plane(int a, int shade, int tex)
     return mote__has_plane(a, (mote__shade_kind)shade, tex != MOTE__TEX_NONE);
 }
 
-/* Row by row: the edge walk, then the pixel loop over the row's span. The
- * planes are stepped down from their values at column ox of the first
- * row (unsigned: exact modulo 2^64, see mote__plane_at). */
+/* A block's 32-bit planes (mote__block) from the 64-bit ones at its first
+ * pixel, q64 and n64[], given where its last pixel (or the row's, if
+ * nearer) lies, at + len, and where drawing starts, at + off. q is taken
+ * down only as far as keeps it below 2^30 at both ends (Q is linear, so
+ * inside), and the numerators as far again past n_extra, so that a far
+ * block (small q) keeps as many bits as a near one; K makes r = 2^K / q
+ * at most 2^30 at the smaller end. */
+MOTE__INLINE void mote__block_begin(const mote__fill_ctx *c, mote__block *b, int64_t q64, const uint64_t n64[MOTE__ATTRS],
+                                    int32_t len, int32_t off, const int shade, const int tex)
+{
+    if (c->q_drop >= 0) {         /* the usual case: the triangle's scale */
+        const int d = c->q_drop, nsh = d + c->n_extra;
+        *b = c->steps;
+        b->q = mote__add32(mote__to32(q64, d), b->qdx, off);
+#if MOTE_ENABLE_MIPMAPS
+        if (c->levels)
+            mote__block_dy(c, b, d, nsh);
+#endif
+        MOTE__UNROLL
+        for (int a = 0; a < MOTE__ATTRS; a++)
+            if (mote__reads_plane(a, shade, tex))
+                b->n[a] = mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off);
+        return;
+    }
+    const int64_t q64e = mote__plane_at(q64, c->qdx, len);
+    const mote__block_scale sc = mote__block_scale_of(q64, q64e, c->n_extra);
+    const int d = sc.d;
+    b->qdx = mote__step32(c->qdx, d);
+    b->q = mote__add32(sc.qa, b->qdx, off);
+    b->k = sc.k;
+    b->ash = sc.ash;
+    const int nsh = d + c->n_extra;
+#if MOTE_ENABLE_MIPMAPS
+    if (c->levels)
+        mote__block_dy(c, b, d, nsh);
+#endif
+    MOTE__UNROLL
+    for (int a = 0; a < MOTE__ATTRS; a++) {
+        b->n[a] = b->ndx[a] = 0;
+        if (mote__reads_plane(a, shade, tex)) {
+            b->ndx[a] = mote__step32(c->ndx[a], nsh);
+            b->n[a] = mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off);
+        }
+    }
+}
+
+/* Row by row: the edge walk, then the pixel loop over the row's span,
+ * block by block. The 64-bit planes are stepped down from their values at
+ * column ox of the first row (unsigned: exact modulo 2^64, see
+ * mote__plane_at), and taken to 32 bits at each block's first pixel. */
 MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote__tri *t, const mote__target *tg,
                              const int tex, const mote_format tfmt, const bool pow2, const int shade,
-                             const int persp, const int dsel, const int dmode, const mote_format fmt, const int k)
+                             const int persp, const int dsel, const int dmode, const mote_format fmt, const int amode)
 {
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     /* the rows' colour and depth, stepped row by row (a product a row
@@ -550,20 +894,41 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
         int64_t span[2];
         mote__walk_row(w, &x0, &x1, span);
         if (x0 < x1) {
-            const int64_t dx0 = x0 - ox;
-            int64_t n[MOTE__ATTRS] = {0};
-            MOTE__UNROLL
-            for (int a = 0; a < MOTE__ATTRS; a++)
-                if (mote__reads_plane(a, shade, tex))
-                    n[a] = mote__plane_at((int64_t)nrow[a], c->ndx[a], dx0);
             /* counted before the pixel loop: after it, x0 and x1 would
              * have to outlive a loop that needs every register */
             tested += (uint64_t)(x1 - x0);
-            mote__pixels(c, crow, dsel == MOTE__D_16 ? (uint16_t *)(void *)zrow : NULL,
-                         dsel == MOTE__D_32 ? (uint32_t *)(void *)zrow : NULL, x0, x1,
-                         mote__plane_at((int64_t)zr, c->zdx, dx0),
-                         varying ? mote__plane_at((int64_t)qr, c->qdx, dx0) : 0, n, span, &rejected,
-                         tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, k);
+            /* the block holding x0, and the 64-bit planes at its first pixel */
+            ptrdiff_t bx = (ptrdiff_t)(span[0] + ((x0 - span[0]) & -(int64_t)MOTE__BLOCK));
+            const int64_t d = bx - ox;
+            uint64_t zb = (uint64_t)mote__plane_at((int64_t)zr, c->zdx, d), qb = 0, nb[MOTE__ATTRS] = {0};
+            if (varying) {
+                qb = (uint64_t)mote__plane_at((int64_t)qr, c->qdx, d);
+                MOTE__UNROLL
+                for (int a = 0; a < MOTE__ATTRS; a++)
+                    if (mote__reads_plane(a, shade, tex))
+                        nb[a] = (uint64_t)mote__plane_at((int64_t)nrow[a], c->ndx[a], d);
+            }
+            for (ptrdiff_t from = x0; from < x1;) {
+                const ptrdiff_t to = MOTE__MIN(bx + MOTE__BLOCK, (ptrdiff_t)x1);
+                mote__block blk;
+                if (varying)
+                    mote__block_begin(c, &blk, (int64_t)qb, nb, (int32_t)(MOTE__MIN(bx + MOTE__BLOCK, span[1] - 1) - bx),
+                                      (int32_t)(from - bx), shade, tex);
+                else              /* read by no pixel: a flat loop's stepping is dropped */
+                    memset(&blk, 0, sizeof blk);
+                const int32_t off = (int32_t)(from - bx);
+                mote__pixels(c, &blk, crow, dsel == MOTE__D_16 ? (uint16_t *)(void *)zrow : NULL,
+                             dsel == MOTE__D_32 ? (uint32_t *)(void *)zrow : NULL, from, to, bx,
+                             (ptrdiff_t)span[1] - 1, dsel != MOTE__D_NONE ? mote__plane_at((int64_t)zb, c->zdx, off) : 0,
+                             &rejected, tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, amode);
+                from = to;
+                bx += MOTE__BLOCK;
+                zb += (uint64_t)c->zdx << MOTE__BLOCK_LOG2;
+                qb += (uint64_t)c->qdx << MOTE__BLOCK_LOG2;
+                MOTE__UNROLL
+                for (int a = 0; a < MOTE__ATTRS; a++)
+                    nb[a] += (uint64_t)c->ndx[a] << MOTE__BLOCK_LOG2;
+            }
         }
         MOTE__UNROLL
         for (int a = 0; a < MOTE__ATTRS; a++)
@@ -580,33 +945,27 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
 
 /* A whole triangle inside region r: its constants once, then the rows.
  * tfmt: the texture's format when known at compile time (the specialised
- * variants take RGBA8888 textures), MOTE_FORMAT_DEFAULT to read it.
- * fixed_k: the reciprocal's K when known at compile time (the specialised
- * variants take MOTE__RBITS, what all but huge-range triangles have), 0 to
- * read it. */
+ * variants take RGBA8888 textures), MOTE_FORMAT_DEFAULT to read it. */
 MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mote__rect r, int F,
                                   const int tex, const mote_format tfmt, const int shade, const int persp,
-                                  const int dsel, const int dmode, const mote_format fmt, const int fixed_k)
+                                  const int dsel, const int dmode, const mote_format fmt, const int amode)
 {
-    if (fixed_k && t->rbits != fixed_k) {
-        mote__fill_generic(t, tg, r, F);
-        return;
-    }
     mote__walk w;
     if (!mote__walk_begin(&w, t, r, F))
         return;
     const mote__raster_state *rs = t->rs;
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
-    const int k = fixed_k ? fixed_k : t->rbits;
     /* field by field: a memset of the whole context was 3.5% of the dense
      * grid's instructions, whose triangles have a dozen pixels each */
     mote__fill_ctx c;
     c.zdx = t->zdx;
     c.qdx = t->qdx;
+    c.n_extra = t->n_extra;
+    c.tb = t->texel_bits;
     /* only binned records are cut short: drawn directly, t has them all */
     const int planes = MOTE_ENABLE_BINNING ? mote__plane_count(shade, tex != MOTE__TEX_NONE) : MOTE__ATTRS;
     for (int a = 0; a < MOTE__ATTRS; a++) {
-        c.a0[a] = t->a0[a];
+        c.a0[a] = (int32_t)t->a0[a];
         /* the generic loop reads every plane the record holds */
         const bool has = a < planes && (!MOTE_SPECIALISE_SPANS || mote__reads_plane(a, shade, tex));
         c.n0[a] = has ? t->n[a][0] : 0;
@@ -619,7 +978,6 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     c.sg = mote__clamp_shade(c.a0[MOTE__A_G]);
     c.sb = mote__clamp_shade(c.a0[MOTE__A_B]);
     c.flat_px = mote__pack(fmt, mote__modulate(255, c.sr), mote__modulate(255, c.sg), mote__modulate(255, c.sb));
-    c.tex_origin[0] = c.tex_origin[1] = 0;
     if (!tex) {
         const mote__tex_view none = {0};
         c.tx = none;
@@ -629,28 +987,97 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
         c.tx.stride = rs->tex_stride;
         c.tx.w = rs->tex_w;
         c.tx.h = rs->tex_h;
+#if MOTE_ENABLE_MIPMAPS
+        if (t->level) {           /* a packed level of the chain */
+            const mote_texture *lv = &rs->mips->level[t->level];
+            c.tx.pixels = (const uint8_t *)lv->pixels;
+            c.tx.w = lv->width;
+            c.tx.h = lv->height;
+            c.tx.stride = lv->stride;
+        }
+#endif
         c.tx.wrap_u = rs->wrap_u;
         c.tx.wrap_v = rs->wrap_v;
         c.tx.pow2_repeat = rs->pow2_repeat;
         c.tx.stride_log2 = rs->tex_stride_log2;
-        if (MOTE_SPECIALISE_SPANS) {
-            /* once a triangle: worked out in the row loop, it took a
-             * register the pixel loop then lacked */
-            c.tx.row_shift = k - 4 - c.tx.stride_log2;
-            c.tex_origin[0] = (uint64_t)c.a0[MOTE__A_U] << (k - 20);
-            c.tex_origin[1] = (uint64_t)c.a0[MOTE__A_V] << (k - 20);
+#if MOTE_ENABLE_MIPMAPS
+        if (t->level) {
+            c.tx.stride_log2 = 0;
+            while ((1 << c.tx.stride_log2) < c.tx.stride)
+                c.tx.stride_log2++;
         }
+#endif
     }
     c.seg_log2 = MOTE_ENABLE_SUBSPAN ? rs->subspan_log2 : 0;
-    c.affine_r = varying && persp == MOTE__PERSP_AFFINE ? mote__recip_k(t->q, k) : 0;
+    c.alpha8 = rs->alpha8;
+    c.cutoff = rs->cutoff;
+#if MOTE_ENABLE_MIPMAPS
+    c.levels = 0;
+    if (tex && rs->mip_pixel && varying) {
+        c.levels = rs->mips->count;
+        c.blend_levels = rs->mip_blend;
+        for (int l = 0; l < c.levels; l++) {
+            c.level[l] = c.tx;
+            if (l) {
+                const mote_texture *lv = &rs->mips->level[l];
+                c.level[l].pixels = (const uint8_t *)lv->pixels;
+                c.level[l].w = lv->width;
+                c.level[l].h = lv->height;
+                c.level[l].stride = lv->stride;
+                c.level[l].stride_log2 = 0;
+                while ((1 << c.level[l].stride_log2) < lv->stride)
+                    c.level[l].stride_log2++;
+            }
+        }
+        c.qdy = t->qdy;
+        c.nudy = c.ndy[MOTE__A_U];
+        c.nvdy = c.ndy[MOTE__A_V];
+    }
+#endif
+#if MOTE__LAYERS_ENABLED
+    c.layers = tex ? rs->layer_count : 0;
+    c.base_white = rs->base_white;
+    c.tri_level = t->level;
+    c.layer = rs->layer;
+    for (int i = 0; i < c.layers; i++) {
+        const mote__layer *l = &rs->layer[i];
+        mote__tex_view *v = &c.lview[i];
+        v->pixels = (const uint8_t *)l->texture->pixels;
+        v->stride = l->stride;
+        v->w = l->texture->width;
+        v->h = l->texture->height;
+        v->stride_log2 = 0;
+        v->format = l->texture->format;
+        v->wrap_u = l->wrap_u;
+        v->wrap_v = l->wrap_v;
+        v->pow2_repeat = false;
+    }
+#endif
+    c.q_drop = t->q_drop;
+    c.affine_r = 0;
+    if (varying && c.q_drop >= 0) {
+        const int d = c.q_drop;
+        c.steps.q = 0;
+        c.steps.qdx = mote__step32(t->qdx, d);
+        c.steps.k = t->rbits;
+        /* below 0 only for absurd texel ranges: keeps the shift defined */
+        c.steps.ash = MOTE__MAX(t->rbits - 20 - t->n_extra, 0);
+        for (int a = 0; a < MOTE__ATTRS; a++) {
+            c.steps.n[a] = 0;
+            c.steps.ndx[a] = mote__step32(c.ndx[a], d + t->n_extra);
+        }
+        /* affine: all qi alike (so q_drop >= 0), Q without steps */
+        if (persp == MOTE__PERSP_AFFINE)
+            c.affine_r = mote__recip_k(mote__to32(t->q, d), t->rbits);
+    }
 #if MOTE_SPECIALISE_SPANS
     /* a power-of-two repeating texture: its own loop, texel addresses by masks */
     if (tex && c.tx.pow2_repeat) {
-        mote__rows(&c, &w, t, tg, tex, tfmt, true, shade, persp, dsel, dmode, fmt, k);
+        mote__rows(&c, &w, t, tg, tex, tfmt, true, shade, persp, dsel, dmode, fmt, amode);
         return;
     }
 #endif
-    mote__rows(&c, &w, t, tg, tex, tfmt, c.tx.pow2_repeat, shade, persp, dsel, dmode, fmt, k);
+    mote__rows(&c, &w, t, tg, tex, tfmt, c.tx.pow2_repeat, shade, persp, dsel, dmode, fmt, amode);
 }
 
 static int mote__dsel(mote_depth_format f)
@@ -675,7 +1102,10 @@ void mote__fill_generic(const mote__tri *t, const mote__target *tg, mote__rect r
     int tex, shade;
     mote__fill_kinds(t->shade, (int)rs->tex, &tex, &shade);
     mote__fill_body(t, tg, r, F, tex, MOTE_FORMAT_DEFAULT, shade, rs->persp, dsel,
-                    (rs->depth_test ? MOTE__D_TEST : 0) | (rs->depth_write ? MOTE__D_WRITE : 0), tg->format, 0);
+                    (rs->depth_test ? MOTE__D_TEST : 0) | (rs->depth_write ? MOTE__D_WRITE : 0)
+                        | (MOTE_ENABLE_BLEND && rs->depth_equal ? MOTE__D_EQUAL : 0)
+                        | (MOTE_ENABLE_BLEND && rs->no_color ? MOTE__D_ONLY : 0), tg->format,
+                    MOTE__ALPHA_ENABLED ? rs->alpha : 0);
 }
 
 #if MOTE_SPECIALISE_SPANS
@@ -704,40 +1134,56 @@ enum { MOTE__TABLE_SHADES = MOTE__SHADE_BLACK };   /* flat, mono, RGB */
             mote__fill_##T##S##0##D##_##F(t, tg, r, bits);                                  \
             return;                                                                         \
         }                                                                                   \
-        mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, MOTE__D_TEST | MOTE__D_WRITE, MOTE_FORMAT_##F, MOTE__RBITS); \
+        mote__fill_body(t, tg, r, bits, T, MOTE_FORMAT_RGBA8888, S, P, D, MOTE__D_TEST | MOTE__D_WRITE, MOTE_FORMAT_##F, 0); \
     }
 MOTE__ALL(MOTE__DEFINE)
 #undef MOTE__DEFINE
 
 #define MOTE__ENTRY(T, S, P, D, F) mote__fill_##T##S##P##D##_##F,
-static const mote__fill_fn mote__fill_table[] = {MOTE__ALL(MOTE__ENTRY)};
+const mote__fill_fn mote__fill_table[] = {MOTE__ALL(MOTE__ENTRY)};
 #undef MOTE__ENTRY
 typedef char mote__fill_table_size_check[sizeof mote__fill_table / sizeof mote__fill_table[0]
                                          == 3 * MOTE__TABLE_SHADES * 3 * 3 * 2 ? 1 : -1];
 #endif
 
+#if MOTE_FIRMWARE_SPANS
+/* span_fw.c's loop, but for a triangle whose planes need a scale per
+ * block (q_drop < 0), which the generic loop takes */
+static void mote__fill_firmware(const mote__tri *t, const mote__target *tg, mote__rect r, int F)
+{
+    if (t->q_drop < 0)
+        mote__fill_generic(t, tg, r, F);
+    else
+        mote__fill_fw(t, tg, r, F);
+}
+#endif
+
 /* Whether texels can be addressed by masks and shifts: both axes repeat,
- * with power-of-two sizes up to 2^(68 - K) (mote__texel_pow2) and, in the
- * specialised build, a power-of-two stride up to 2^18 (rows by a shift). */
+ * with power-of-two sizes and, in the specialised build, a power-of-two
+ * stride up to 2^18 (rows by a shift). */
 static void mote__address_select(mote__raster_state *rs)
 {
     rs->pow2_repeat = false;
     if (rs->tex == MOTE__TEX_NONE || rs->wrap_u != MOTE_WRAP_REPEAT || rs->wrap_v != MOTE_WRAP_REPEAT)
         return;
-    const int max = 1 << (68 - MOTE__RBITS), w = rs->tex_w, h = rs->tex_h, stride = rs->tex_stride;
+    const int w = rs->tex_w, h = rs->tex_h, stride = rs->tex_stride;
     rs->pow2_repeat = (w & (w - 1)) == 0 && (h & (h - 1)) == 0;
 #if MOTE_SPECIALISE_SPANS
-    rs->pow2_repeat = rs->pow2_repeat && w <= max && h <= max && (stride & (stride - 1)) == 0 && stride <= 1 << 18;
+    rs->pow2_repeat = rs->pow2_repeat && (stride & (stride - 1)) == 0 && stride <= 1 << 18;
     rs->tex_stride_log2 = 0;
     while (rs->pow2_repeat && (1 << rs->tex_stride_log2) < stride)
         rs->tex_stride_log2++;
 #else
-    (void)max;
     (void)stride;
 #endif
 }
 
 void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_format depth_format)
+{
+    mote__fill_select_isa(rs, format, depth_format, MOTE__ISA_BEST);
+}
+
+void mote__fill_select_isa(mote__raster_state *rs, mote_format format, mote_depth_format depth_format, int isa)
 {
     mote__address_select(rs);
     for (int s = 0; s < MOTE__SHADE_COUNT; s++) {
@@ -749,8 +1195,10 @@ void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_fo
         int f = format == MOTE_FORMAT_RGBA8888 ? 0 : format == MOTE_FORMAT_RGB565 ? 1 : -1;
         int tex, shade;
         mote__fill_kinds(s, (int)rs->tex, &tex, &shade);
+        if (s == MOTE__SHADE_ADD)
+            continue;             /* the generic loop's alone */
         bool tex_ok = tex == MOTE__TEX_NONE || rs->texture->format == MOTE_FORMAT_RGBA8888;
-        if (f >= 0 && tex_ok && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
+        if (f >= 0 && tex_ok && !rs->mip_pixel && !mote__generic_only(rs) && (depth_on || depth_off || dsel == MOTE__D_NONE)) {
             int d = depth_on ? dsel : MOTE__D_NONE;
             int idx = (((tex * MOTE__TABLE_SHADES + shade) * 3 + (int)rs->persp) * 3 + d) * 2 + f;
             rs->fill[s] = mote__fill_table[idx];
@@ -760,4 +1208,10 @@ void mote__fill_select(mote__raster_state *rs, mote_format format, mote_depth_fo
         (void)depth_format;
 #endif
     }
+#if MOTE_FIRMWARE_SPANS
+    if (mote__fill_fw_fits(rs, format, depth_format))
+        rs->fill[MOTE__SHADE_MONO] = rs->fill[MOTE__SHADE_RGB] = mote__fill_firmware;
+#endif
+    if (isa != MOTE__ISA_SCALAR)
+        mote__simd_select(rs, format, depth_format, isa);
 }

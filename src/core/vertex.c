@@ -24,7 +24,7 @@
 
 void mote__vertex_begin(mote__ctx *cx)
 {
-    mote__lights_prepare(&cx->lights, cx->dev, cx->color, cx->emissive);
+    mote__lights_prepare(&cx->lights, cx->dev, cx->color, cx->emissive, cx->d.lights_off);
 }
 
 void mote__light_at(const mote__ctx *cx, const float p[3], const float n[3], float out[3])
@@ -57,12 +57,13 @@ void mote__tint(const mote__ctx *cx, mote__tvert *const tv[], int n, float s[3])
 
 /* ---- setup's units -------------------------------------------------------- */
 
-/* A colour in [0,1] as 2^24 fixed point; clipping's lerp may overshoot by an ulp. */
+/* A colour in [0,1] as 2^24 fixed point, clamped before the conversion:
+ * lights and materials can take a lit colour far past 1 (or to NaN). */
 void mote__shade_fixed(const float s[3], int32_t out[3])
 {
     for (int c = 0; c < 3; c++) {
-        int32_t v = (int32_t)(s[c] * (float)MOTE__SHADE_ONE + 0.5f);
-        out[c] = v < 0 ? 0 : v > MOTE__SHADE_ONE ? MOTE__SHADE_ONE : v;
+        const float f = s[c] * (float)MOTE__SHADE_ONE + 0.5f;
+        out[c] = !(f > 0.0f) ? 0 : f >= (float)MOTE__SHADE_ONE ? MOTE__SHADE_ONE : (int32_t)f;
     }
 }
 
@@ -87,6 +88,9 @@ static int64_t mote__round_scaled(float f, int s)
 void mote__to_setup(const mote__cvert *v, mote__svert *out)
 {
     mote__shade_fixed(v->s, out->s);
+#if MOTE__ADD_ENABLED
+    mote__shade_fixed(v->a, out->a);
+#endif
     for (int k = 0; k < 2; k++)
         out->texel[k] = mote__round_scaled(k ? v->v : v->u, 16);
     /* clipping's float rounding can leave z/w a hair outside [0, 1]; NaN
@@ -95,6 +99,7 @@ void mote__to_setup(const mote__cvert *v, mote__svert *out)
     out->depth = d > 0.0f ? (d < 1.0f ? d : 1.0f) : 0.0f;
     out->z = (int32_t)mote__round_scaled(out->depth * (float)MOTE__DEPTH_MAX, 0);
     out->w = v->w;
+    mote__inverse_w(v->w, out);
 }
 
 
@@ -102,7 +107,8 @@ void mote__to_setup(const mote__cvert *v, mote__svert *out)
 
 static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
 {
-    const mote_vertex *in = &cx->mesh->vertices[index];
+    mote_vertex tmp;
+    const mote_vertex *in = mote__mesh_vertex(cx->mesh, index, &tmp);
     tv->index = index;
     float out[4];
     mote__mat4_point(cx->mvp, in->position, out);
@@ -136,6 +142,35 @@ static void mote__transform(mote__ctx *cx, uint32_t index, mote__tvert *tv)
     }
 }
 
+#if MOTE__ADD_ENABLED
+/* The additive colour of a vertex, lit and tinted: Babylon.js's
+ * highlights x the material's specular colour, then its fog, which scales
+ * both and adds the fog colour: colour f + fog (1 - f) with
+ * colour = texel x s + a. */
+static void mote__additive(const mote__ctx *cx, mote__tvert *tv)
+{
+    float a[3] = {0.0f, 0.0f, 0.0f};
+#if MOTE_ENABLE_SPECULAR
+    if (cx->spec_on) {
+        mote__specular(cx->dev, cx->d.lights_off, tv->world, tv->normal, cx->spec_power, a);
+        for (int c = 0; c < 3; c++)
+            a[c] *= cx->spec[c];
+    }
+#endif
+#if MOTE_ENABLE_FOG
+    if (cx->fog_on) {
+        const mote_fog *fog = &cx->dev->frame.fog;
+        const float f = mote__fog_factor(fog, mote__sqrtf(mote__dot3(tv->world, tv->world)));
+        for (int c = 0; c < 3; c++) {
+            tv->c.s[c] *= f;
+            a[c] = a[c] * f + fog->color[c] * (1.0f - f);
+        }
+    }
+#endif
+    memcpy(tv->c.a, a, sizeof a);
+}
+#endif
+
 /* What only drawn triangles need of a vertex: its world position and
  * normal (lighting's inputs, read here by Gouraud and after this by flat
  * shading), Gouraud lighting, the costliest per-vertex step, and the
@@ -147,8 +182,9 @@ void mote__finish(const mote__ctx *cx, mote__tvert *tv)
     if (tv->ready)
         return;
     tv->ready = true;
-    if (cx->lit) {
-        const mote_vertex *in = &cx->mesh->vertices[tv->index];
+    if (cx->lit || cx->additive) {
+        mote_vertex tmp;
+        const mote_vertex *in = mote__mesh_vertex(cx->mesh, tv->index, &tmp);
         float wp[4];
         mote__mat4_point(cx->world, in->position, wp);
         for (int k = 0; k < 3; k++) {
@@ -164,6 +200,13 @@ void mote__finish(const mote__ctx *cx, mote__tvert *tv)
         if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors)
             mote__tint(cx, &tv, 1, tv->c.s);
     }
+#if MOTE__ADD_ENABLED
+    /* here, not at transform: the scalar and vector transforms share it */
+    if (cx->additive)
+        mote__additive(cx, tv);
+    else
+        tv->c.a[0] = tv->c.a[1] = tv->c.a[2] = 0.0f;
+#endif
     mote__to_setup(&tv->c, &tv->sv);
 }
 
@@ -313,6 +356,7 @@ void mote__finish4(const mote__ctx *cx, mote__tvert *const tv[4])
     for (int i = 0; i < 4; i++) {
         tv[i]->ready = true;
         mote__texels_fixed(&tv[i]->c, tv[i]->sv.texel);
+        mote__inverse_w(tv[i]->c.w, &tv[i]->sv);
     }
     if (MOTE_ENABLE_VERTEX_COLORS && cx->mesh->colors)
         for (int i = 0; i < 4; i++) {
@@ -455,7 +499,7 @@ void mote__v4_light_init(mote__ctx *cx)
         v4->nrm[k] = mote__v4_splat(cx->nrm[k]);
     for (int c = 0; c < 3; c++)
         v4->color[c] = mote__v4_splat(cx->color[c]);
-    mote__v4_lights_prepare(&v4->lights, cx->dev, cx->color, cx->emissive);
+    mote__v4_lights_prepare(&v4->lights, cx->dev, cx->color, cx->emissive, cx->d.lights_off);
 }
 #endif
 
@@ -465,9 +509,10 @@ void mote__transform_range(mote__ctx *cx, mote__tvert *tv, uint32_t first, uint3
 {
     uint32_t i = first;
 #if MOTE__VECTOR_VERTEX
-    if (i + 4 <= end)
+    /* (a compact mesh's vertices are not rows of floats) */
+    if (i + 4 <= end && !cx->mesh->compact)
         mote__v4_transform_init(cx);
-    for (; i + 4 <= end; i += 4)
+    for (; i + 4 <= end && !cx->mesh->compact; i += 4)
         mote__transform4(cx, i, &tv[i]);
 #endif
     for (; i < end; i++)

@@ -132,12 +132,10 @@ static inline mote__v4i mote__v4_snap_by(mote__v4f n, __m128d hd, mote__v4i hi, 
 #endif /* MOTE__VECTOR_VERTEX */
 
 
-/* Direct-mapped vertex cache used without an arena (a power of two; each
- * entry is about 120 bytes of stack). */
-#ifndef MOTE_VERTEX_CACHE
-#define MOTE_VERTEX_CACHE 32
-#endif
+/* The vertex cache of a draw without an arena (MOTE_VERTEX_CACHE, mote.h) */
 #define MOTE__SMALL_CACHE MOTE_VERTEX_CACHE
+typedef char mote__vertex_cache_check[MOTE_VERTEX_CACHE >= 2 && (MOTE_VERTEX_CACHE & (MOTE_VERTEX_CACHE - 1)) == 0
+                                      ? 1 : -1];
 
 /* Scalars first: Thumb-1 loads reach only small offsets, so this order
  * keeps the M0+ code shorter. */
@@ -152,6 +150,10 @@ typedef struct mote__ctx {
     float guard_x, guard_y;       /* guard band in NDC units */
     float color[3];               /* material colour 0..1 */
     float emissive[3];            /* the material's emissive colour 0..1 (lit draws add it) */
+    bool simplified;              /* a feature asked for, left out of the build: drawn without */
+    bool additive;                /* specular or fog: the additive colour c.a is set */
+    float spec[3], spec_power;    /* the material's specular colour (0..1) and power */
+    bool spec_on, fog_on;         /* what the additive colour holds */
     float uscale, vscale, uoff, voff;
     float tex_w, tex_h;
     mote__sink *sink;             /* where triangles go */
@@ -221,7 +223,7 @@ void mote__v4_light_init(mote__ctx *cx);
 /* Whether mote__finish4 can finish this draw's vertices: lit Gouraud ones. */
 static inline bool mote__finish_in_fours(const mote__ctx *cx)
 {
-    return cx->lit && cx->rs->gouraud;
+    return cx->lit && cx->rs->gouraud && !cx->mesh->compact && !cx->additive;
 }
 #endif
 

@@ -355,6 +355,34 @@ static bool mote__finite3(const float p[3])
     return mote__finite(p[0]) && mote__finite(p[1]) && mote__finite(p[2]);
 }
 
+const mote_vertex *mote__compact_vertex(const mote_compact *c, uint32_t i, mote_vertex *tmp)
+{
+    memset(tmp, 0, sizeof *tmp);
+    for (int k = 0; k < 3; k++) {
+        tmp->position[k] = (float)c->positions[3 * i + k];
+        if (c->normals8 || c->normals16)
+            tmp->normal[k] = (float)(c->normals8 ? c->normals8[3 * i + k] : c->normals16[3 * i + k]);
+    }
+    if (c->uvs)
+        for (int k = 0; k < 2; k++)
+            tmp->uv[k] = (float)c->uvs[2 * i + k];
+    return tmp;
+}
+
+void mote__compact_fold(const float m[16], const float offset[3], const float scale[3], float out[16])
+{
+    float r[16];                  /* out may be m */
+    for (int row = 0; row < 4; row++) {
+        float t = m[12 + row];
+        for (int k = 0; k < 3; k++) {
+            r[k * 4 + row] = m[k * 4 + row] * scale[k];
+            t += m[k * 4 + row] * offset[k];
+        }
+        r[12 + row] = t;
+    }
+    memcpy(out, r, sizeof r);
+}
+
 void mote_mesh_update_bounds(mote_mesh *mesh)
 {
     if (!mesh)
@@ -364,10 +392,15 @@ void mote_mesh_update_bounds(mote_mesh *mesh)
      * vertex array means no vertex, whatever vertex_count says */
     float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, r2 = 0.0f;
     bool any = false;
-    const uint32_t count = mesh->vertices ? mesh->vertex_count : 0;
+    const uint32_t count = mote__mesh_has_vertices(mesh) ? mesh->vertex_count : 0;
     for (int pass = 0; pass < 2; pass++) {
         for (uint32_t i = 0; i < count; i++) {
-            const float *p = mesh->vertices[i].position;
+            mote_vertex tmp;
+            float p[3];
+            memcpy(p, mote__mesh_vertex(mesh, i, &tmp)->position, sizeof p);
+            if (mesh->compact)    /* dequantised: the bounds are in the mesh's space */
+                for (int k = 0; k < 3; k++)
+                    p[k] = p[k] * mesh->compact->scale[k] + mesh->compact->offset[k];
             if (!mote__finite3(p))
                 continue;
             if (pass == 0) {

@@ -20,6 +20,18 @@ static mote_result mote__scene_colors(mote__babylon *bl)
     sc->clear_color.g = mote__unit_byte(c[1]);
     sc->clear_color.b = mote__unit_byte(c[2]);
     sc->clear_color.a = 255;
+    /* fog: Babylon.js's fogMode 1 exp, 2 exp2, 3 linear */
+    uint32_t mode = 0;
+    MOTE__TRY(mote__json_uint_member(bl->load, bl->root, "fogMode", "scene", 3, &mode));
+    static const mote_fog_mode modes[4] = {MOTE_FOG_NONE, MOTE_FOG_EXP, MOTE_FOG_EXP2, MOTE_FOG_LINEAR};
+    sc->fog.mode = modes[mode];
+    sc->fog.color[0] = sc->fog.color[1] = sc->fog.color[2] = 0.2f;   /* Babylon.js's defaults */
+    sc->fog.density = 0.1f;
+    sc->fog.end = 1000.0f;
+    MOTE__TRY(mote__babylon_color3(bl, bl->root, "fogColor", "scene", sc->fog.color));
+    MOTE__TRY(mote__json_number(bl->load, bl->root, "fogDensity", "scene", &sc->fog.density));
+    MOTE__TRY(mote__json_number(bl->load, bl->root, "fogStart", "scene", &sc->fog.start));
+    MOTE__TRY(mote__json_number(bl->load, bl->root, "fogEnd", "scene", &sc->fog.end));
     return MOTE_OK;
 }
 

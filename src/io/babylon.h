@@ -32,6 +32,10 @@ typedef struct mote__mat {
     bool uv2;                     /* the texture's coordinatesIndex is 1: it samples uvs2 */
     unsigned char side;           /* sideOrientation (MOTE__SIDE_...) */
     bool cull_front;              /* cullBackFaces false: the front faces are culled */
+    bool no_depth_write;          /* disableDepthWrite */
+    bool no_fog;                  /* fogEnabled false */
+    bool depth_pre_pass;          /* needDepthPrePass, on a blended material */
+    uint32_t max_lights;          /* maxSimultaneousLights (4) */
 } mote__mat;
 
 typedef struct mote__multi {
@@ -73,6 +77,9 @@ typedef struct mote__node {
     bool matrix_undone;           /* a pivot: its inverse applied after the turn and scale */
     const char *matrix_name;      /* for messages: "pivotMatrix", "source's localMatrix"... */
     bool invisible, disabled;     /* isVisible false; isEnabled false (children too) */
+    bool no_fog;                  /* applyFog false */
+    bool alpha_index_set;         /* alphaIndex written: alpha_index */
+    float alpha_index;
     bool legacy;                  /* interleaved `vertices`: v = 0 is the top row */
     bool unindexed;               /* isUnIndexed: vertices 0,1,2 / 3,4,5 / ... are the triangles */
     bool is_helper;               /* a sheared matrix's hidden stand-in (mote__fold_matrix) */
@@ -183,6 +190,7 @@ typedef struct mote__babylon {
     mote__entry_list entry_lists[2]; /* cameras, lights */
     mote__idmap *node_map;
     bool any_uv2;                 /* a material samples uvs2: keep them while loading */
+    uint8_t *max_lights;          /* per scene mesh: its material's maxSimultaneousLights (at most 32) */
     bool right_handed;            /* useRightHandedSystem: loaded mirrored (mote__mirror_point) */
     mote__lod_group *lod_groups;  /* masters, then instances of masters (mote__babylon_lods) */
     int lod_group_count;

@@ -463,6 +463,64 @@ static mote_result mote__light_range(mote__babylon *bl, const cJSON *light, cons
     return MOTE_OK;
 }
 
+/* The scene's lights_off, made on first use. */
+static uint32_t *mote__lights_off(mote__babylon *bl)
+{
+    mote_scene *sc = bl->load->scene;
+    if (!sc->lights_off && sc->mesh_count > 0)
+        sc->lights_off = mote__store_alloc(bl->load->keep, (size_t)sc->mesh_count, sizeof *sc->lights_off);
+    return (uint32_t *)(uintptr_t)sc->lights_off;
+}
+
+/* Whether list (an array of ids, or absent) holds id. */
+static bool mote__listed(const cJSON *list, const char *id)
+{
+    for (const cJSON *e = cJSON_IsArray(list) ? list->child : NULL; e && id; e = e->next)
+        if (cJSON_IsString(e) && strcmp(e->valuestring, id) == 0)
+            return true;
+    return false;
+}
+
+/* Light l (the scene's light `index`) lights only the meshes its
+ * includedOnlyMeshesIds names, when that lists any, and none that its
+ * excludedMeshesIds names: the others get its bit in lights_off. */
+static mote_result mote__light_meshes(mote__babylon *bl, const cJSON *l, const char *at, int index)
+{
+    const cJSON *only = mote__json_get(l, "includedOnlyMeshesIds"), *excluded = mote__json_get(l, "excludedMeshesIds");
+    const bool has_only = cJSON_IsArray(only) && only->child, has_not = cJSON_IsArray(excluded) && excluded->child;
+    if (!has_only && !has_not)
+        return MOTE_OK;
+    uint32_t *off = mote__lights_off(bl);
+    if (!off)
+        return bl->load->scene->mesh_count > 0 ? mote__oom(bl->load, at) : MOTE_OK;
+    for (int i = 0; i < bl->node_count; i++) {
+        const mote__node *nd = &bl->nodes[i];
+        const bool lit = (!has_only || mote__listed(only, nd->id)) && !mote__listed(excluded, nd->id);
+        for (int k = 0; !lit && k < nd->mesh_count; k++)
+            off[nd->first_mesh + k] |= (uint32_t)1 << index;
+    }
+    return MOTE_OK;
+}
+
+/* A material's maxSimultaneousLights: of the lights that light a mesh, in
+ * the scene's order, the first that many do (Babylon.js binds no more). */
+static mote_result mote__light_limits(mote__babylon *bl)
+{
+    mote_scene *sc = bl->load->scene;
+    for (int m = 0; m < sc->mesh_count && bl->max_lights; m++) {
+        if (bl->max_lights[m] >= sc->light_count)
+            continue;
+        uint32_t *off = mote__lights_off(bl);
+        if (!off)
+            return mote__oom(bl->load, "lights");
+        int lit = 0;
+        for (int i = 0; i < sc->light_count; i++)
+            if (!(off[m] >> i & 1) && lit++ >= bl->max_lights[m])
+                off[m] |= (uint32_t)1 << i;
+    }
+    return MOTE_OK;
+}
+
 mote_result mote__babylon_lights(mote__babylon *bl)
 {
     const cJSON *lights;
@@ -527,6 +585,15 @@ mote_result mote__babylon_lights(mote__babylon *bl)
             L.intensity = 1.0f;
             memset(L.ground_color, 0, sizeof L.ground_color);
         }
+        /* highlights' colour (white unsaid; black, which the core reads
+         * as unset, as good as none) */
+        float spec[3] = {1, 1, 1};
+        MOTE__TRY(mote__babylon_color3(bl, l, "specular", at, spec));
+        memcpy(L.specular, spec, sizeof spec);
+        if ((spec[0] == 0.0f && spec[1] == 0.0f && spec[2] == 0.0f) || intensity == 0.0f) {
+            L.specular[0] = 1e-30f;
+            L.specular[1] = L.specular[2] = 0.0f;
+        }
         /* a disabled light, or one under a disabled parent, lights nothing */
         bool enabled = true;
         MOTE__TRY(mote__json_flag(bl->load, l, "isEnabled", at, &enabled));
@@ -548,8 +615,10 @@ mote_result mote__babylon_lights(mote__babylon *bl)
                 first_ignored = i;
             continue;
         }
+        MOTE__TRY(mote__light_meshes(bl, l, at, sc->light_count));
         sc->lights[sc->light_count++] = L;
     }
+    MOTE__TRY(mote__light_limits(bl));
     /* one warning for them all, not one each */
     if (ignored == 1)
         mote__warn(bl->load, "lights[%d]: more than %d lights; this one is ignored", first_ignored,

@@ -107,16 +107,6 @@ static mote_result mote__emissive(mote__babylon *bl, const cJSON *m, const char 
                           : "emissive";
     MOTE__TRY(mote__babylon_color3(bl, m, key, at, emissive));
     MOTE__TRY(mote__babylon_color3(bl, m, "ambient", at, ambient));
-    /* an emissive texture (one with a name: Texture.Parse makes none
-     * otherwise) adds its colour, lit or not, as no mote draw can: named,
-     * as a glowing colour is (Maya's incandescence map is one) */
-    const cJSON *glow = mote__json_get(m, "emissiveTexture");
-    const cJSON *glow_name = cJSON_IsObject(glow) ? mote__json_get(glow, "name") : NULL;
-    if (cJSON_IsString(glow_name) && glow_name->valuestring[0])
-        mote__warn(bl->load,
-                   "%s.emissiveTexture: \"%s\" is not drawn (mote adds no texture's light "
-                   "to a material)",
-                   at, mote__quote(glow_name->valuestring).s);
     bool pbr_unlit = false;
     MOTE__TRY(mote__json_flag(bl->load, m, "unlit", at, &pbr_unlit));
     if (pbr_unlit) {
@@ -134,6 +124,160 @@ static mote_result mote__emissive(mote__babylon *bl, const cJSON *m, const char 
     return MOTE_OK;
 }
 
+/* Transparency as Babylon.js's StandardMaterial (and PBR) decide it:
+ * transparencyMode when written (0 opaque, 1 alpha test, 2 blend, 3
+ * both), else blending when alpha < 1 (or an opacity texture, or the
+ * diffuse texture's alpha with useAlphaFromDiffuseTexture), and else an
+ * alpha test when the diffuse texture hasAlpha. tex is the diffuse texture's
+ * JSON (NULL: none), at tex_at. */
+static mote_result mote__transparency(mote__babylon *bl, const cJSON *m, const cJSON *tex, const char *at,
+                                      const char *tex_at, mote__mat *mm)
+{
+    mote_material *mat = &mm->material;
+    float alpha = 1.0f, cutoff = 0.4f;
+    bool has_alpha = false, from_texture = false, from_albedo = false;
+    MOTE__TRY(mote__json_number(bl->load, m, "alpha", at, &alpha));
+    MOTE__TRY(mote__json_number(bl->load, m, "alphaCutOff", at, &cutoff));
+    MOTE__TRY(mote__json_flag(bl->load, m, "useAlphaFromDiffuseTexture", at, &from_texture));
+    MOTE__TRY(mote__json_flag(bl->load, m, "useAlphaFromAlbedoTexture", at, &from_albedo));
+    MOTE__TRY(mote__json_flag(bl->load, m, "disableDepthWrite", at, &mm->no_depth_write));
+    const bool textured = mat->texture != NULL;
+    if (tex && textured)
+        MOTE__TRY(mote__json_flag(bl->load, tex, "hasAlpha", tex_at, &has_alpha));
+    from_texture = (from_texture || from_albedo) && has_alpha;
+    const cJSON *opacity = mote__json_get(m, "opacityTexture");
+    const cJSON *opacity_name = cJSON_IsObject(opacity) ? mote__json_get(opacity, "name") : NULL;
+    const bool has_opacity = cJSON_IsString(opacity_name) && opacity_name->valuestring[0];
+    /* Babylon.js turns the test off for a blended material
+     * (Material._shouldTurnAlphaTestOn) unless transparencyMode says both */
+    bool blend = alpha < 1.0f || has_opacity || from_texture, test = has_alpha && !blend;
+    const cJSON *mode = mote__json_get(m, "transparencyMode");
+    if (cJSON_IsNumber(mode)) {
+        const int t = (int)mode->valuedouble;
+        test = t == 1 || t == 3;
+        blend = t == 2 || t == 3;
+        from_texture = from_texture && t != 0;
+    }
+    /* RenderingGroup gives a pre-pass to blended meshes alone */
+    MOTE__TRY(mote__json_flag(bl->load, m, "needDepthPrePass", at, &mm->depth_pre_pass));
+    const cJSON *blend_mode = mote__json_get(m, "alphaMode");
+    if (blend && cJSON_IsNumber(blend_mode) && blend_mode->valuedouble != 2) {
+        if (blend_mode->valuedouble == 0)
+            blend = false;        /* ALPHA_DISABLE */
+        else
+            mote__warn(bl->load, "%s.alphaMode: %g is drawn as 2 (ALPHA_COMBINE: src a + dst (1 - a))", at,
+                       blend_mode->valuedouble);
+    }
+    mat->alpha_mode = test && blend ? MOTE_ALPHA_TEST_AND_BLEND
+                    : test          ? MOTE_ALPHA_TEST
+                    : blend         ? MOTE_ALPHA_BLEND
+                                    : MOTE_ALPHA_OPAQUE;
+    mat->alpha = alpha < 0.0f ? 0.0f : alpha > 1.0f ? 1.0f : alpha;
+    mat->alpha_set = true;
+    mat->use_texture_alpha = from_texture;
+    mm->depth_pre_pass = mm->depth_pre_pass && blend;
+    /* 0 is the core's "default": a cut-off of 0 cuts nothing anyway,
+     * nor does one at or below the smallest alpha step */
+    mat->alpha_cutoff = cutoff > 0.0f ? cutoff : 1e-6f;
+    return MOTE_OK;
+}
+
+/* Highlights as Babylon.js adds them: a StandardMaterial's `specular`
+ * (white when unsaid) and `specularPower` (64); a specular-glossiness
+ * material's specularColor and glossiness; a metallic-roughness one
+ * (PBRMaterial with metallic or roughness written, or
+ * PBRMetallicRoughnessMaterial) approximated, docs/babylon.md: the
+ * albedo x (1 - metallic) lit diffusely, highlights of colour
+ * 0.04 (1 - metallic) + albedo metallic and power 2 / roughness^4 - 2.
+ * Other PBR materials keep their albedo, without highlights. */
+static mote_result mote__specular(mote__babylon *bl, const cJSON *m, const char *at, int kind, mote__mat *mm)
+{
+    mote_material *mat = &mm->material;
+    float spec[3] = {1, 1, 1}, power = 64.0f;
+    const cJSON *metal = mote__json_get(m, "metallic"), *rough = mote__json_get(m, "roughness");
+    if (kind == 2 || (kind == 1 && (cJSON_IsNumber(metal) || cJSON_IsNumber(rough)))) {
+        /* metallic unsaid: 0, not Babylon.js's 1, which without an
+         * environment (mote draws none) leaves only the highlights */
+        float metallic = 0.0f, roughness = 1.0f;
+        MOTE__TRY(mote__json_number(bl->load, m, "metallic", at, &metallic));
+        MOTE__TRY(mote__json_number(bl->load, m, "roughness", at, &roughness));
+        mote__metallic_roughness(mat, metallic, roughness);
+        return MOTE_OK;
+    } else if (kind == 3) {
+        float gloss = 1.0f;
+        MOTE__TRY(mote__babylon_color3(bl, m, "specularColor", at, spec));
+        MOTE__TRY(mote__json_number(bl->load, m, "glossiness", at, &gloss));
+        const float r = 1.0f - (gloss < 0.0f ? 0.0f : gloss > 0.95f ? 0.95f : gloss);
+        power = 2.0f / (r * r * r * r) - 2.0f;
+    } else if (kind == 1) {
+        return MOTE_OK;           /* PBRMaterial without metallic-roughness */
+    } else {
+        const char *key = mote__json_get(m, "specularColor") && !mote__json_get(m, "specular") ? "specularColor"
+                                                                                                  : "specular";
+        MOTE__TRY(mote__babylon_color3(bl, m, key, at, spec));
+        MOTE__TRY(mote__json_number(bl->load, m, "specularPower", at, &power));
+    }
+    mote__set_rgb(&mat->specular, spec);
+    mat->specular_power = power > 1.0f ? (power < 4096.0f ? power : 4096.0f) : 1.0f;
+    return MOTE_OK;
+}
+
+/* emissiveTexture, opacityTexture and specularTexture as the material's
+ * texture layers (mote_layer): each read as the diffuse texture is (its
+ * own scale, offset and wrap), its `level` the layer's factor, an opacity
+ * map's getAlphaFromRGB its luminance. Babylon.js's specular map takes
+ * the place of the specular colour: that becomes white. A layer on
+ * another uv set than the material's texture is drawn on the latter's,
+ * and warned. */
+static mote_result mote__material_layers(mote__babylon *bl, const cJSON *m, const char *at, mote__mat *mm)
+{
+    static const char *const keys[3] = {"emissiveTexture", "opacityTexture", "specularTexture"};
+    static const mote_layer_role roles[3] = {MOTE_LAYER_EMISSIVE, MOTE_LAYER_OPACITY, MOTE_LAYER_SPECULAR};
+    mote_material *mat = &mm->material;
+    mote_layer *layers = NULL;
+    int n = 0;
+    for (int k = 0; k < 3; k++) {
+        const cJSON *t = mote__json_get(m, keys[k]);
+        if (!t)
+            continue;
+        char at2[96];
+        snprintf(at2, sizeof at2, "%s.%s", at, keys[k]);
+        mote__mat scratch;
+        memset(&scratch, 0, sizeof scratch);
+        MOTE__TRY(mote__material_texture(bl, t, at2, &scratch));
+        const mote_material *sm = &scratch.material;
+        if (!sm->texture)         /* no name, or missing and warned */
+            continue;
+        if (scratch.uv2 != mm->uv2)
+            mote__warn(bl->load, "%s.coordinatesIndex: %s, drawn on %s as the material's texture", at2,
+                       scratch.uv2 ? "uvs2" : "uvs", mm->uv2 ? "uvs2" : "uvs");
+        if (!layers) {
+            layers = mote__store_alloc(bl->load->keep, MOTE_MAX_LAYERS, sizeof *layers);
+            if (!layers)
+                return mote__oom(bl->load, at2);
+        }
+        mote_layer *l = &layers[n++];
+        memset(l, 0, sizeof *l);
+        l->role = roles[k];
+        l->texture = sm->texture;
+        l->wrap_u = sm->wrap_u;
+        l->wrap_v = sm->wrap_v;
+        l->u_scale = sm->u_scale;
+        l->v_scale = sm->v_scale;
+        l->u_offset = sm->u_offset;
+        l->v_offset = sm->v_offset;
+        float level = 1.0f;
+        MOTE__TRY(mote__json_number(bl->load, t, "level", at2, &level));
+        l->factor[0] = l->factor[1] = l->factor[2] = level > 0.0f ? level : 1e-6f;
+        MOTE__TRY(mote__json_flag(bl->load, t, "getAlphaFromRGB", at2, &l->from_rgb));
+        if (roles[k] == MOTE_LAYER_SPECULAR && !mm->unlit)
+            mat->specular = (mote_rgba){255, 255, 255, 255};
+    }
+    mat->layers = layers;
+    mat->layer_count = n;
+    return MOTE_OK;
+}
+
 mote_result mote__babylon_materials(mote__babylon *bl)
 {
     const cJSON *list;
@@ -143,8 +287,8 @@ mote_result mote__babylon_materials(mote__babylon *bl)
     bl->mats = mote__store_alloc(&bl->load->tmp, n, sizeof *bl->mats);
     if (!bl->mats)
         return mote__oom(bl->load, "materials");
-    /* one texture per material at most */
-    MOTE__TRY(mote__texture_slots(bl->load, n, "materials"));
+    /* a texture per material and its layers at most */
+    MOTE__TRY(mote__texture_slots(bl->load, n * (1 + MOTE_MAX_LAYERS), "materials"));
     int i = 0;
     for (const cJSON *m = list ? list->child : NULL; m; m = m->next, i++) {
         char at[64];
@@ -199,6 +343,9 @@ mote_result mote__babylon_materials(mote__babylon *bl)
         MOTE__TRY(mote__json_flag(bl->load, m, "cullBackFaces", at, &cull_back_faces));
         mm->cull_front = !cull_back_faces;
         MOTE__TRY(mote__json_flag(bl->load, m, "disableLighting", at, &mm->unlit));
+        bool fog = true;
+        MOTE__TRY(mote__json_flag(bl->load, m, "fogEnabled", at, &fog));
+        mm->no_fog = !fog;
         /* PBRMetallicRoughnessMaterial (the 3ds Max exporter's PBR
          * material) serialises its albedo as baseColor and baseTexture
          * and reads no other key for them; the other types write diffuse
@@ -216,16 +363,28 @@ mote_result mote__babylon_materials(mote__babylon *bl)
             break;
         }
         MOTE__TRY(mote__emissive(bl, m, at, mm));
+        /* 0 standard, 1 PBRMaterial, 2 metallic-roughness, 3 specular-glossiness */
+        int kind = 0;
+        for (int k = 1; k < 4; k++)
+            kind = cJSON_IsString(type) && strcmp(type->valuestring, read_types[k]) == 0 ? k : kind;
+        if (!mm->unlit)
+            MOTE__TRY(mote__specular(bl, m, at, kind, mm));
+        mm->max_lights = 4;
+        MOTE__TRY(mote__json_uint_member(bl->load, m, "maxSimultaneousLights", at, 1024, &mm->max_lights));
         static const char *const tex_keys[3] = {"diffuseTexture", "albedoTexture", "baseTexture"};
+        const cJSON *diffuse = NULL;
+        char at2[96] = "";
         for (int k = metal_rough ? 2 : 0; k < (metal_rough ? 3 : 2); k++) {
             const cJSON *t = mote__json_get(m, tex_keys[k]);
             if (!t)
                 continue;
-            char at2[96];
             snprintf(at2, sizeof at2, "%s.%s", at, tex_keys[k]);
             MOTE__TRY(mote__material_texture(bl, t, at2, mm));
+            diffuse = t;
             break;
         }
+        MOTE__TRY(mote__transparency(bl, m, diffuse, at, at2, mm));
+        MOTE__TRY(mote__material_layers(bl, m, at, mm));
     }
     return MOTE_OK;
 }

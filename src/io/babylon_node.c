@@ -169,6 +169,24 @@ static void mote__warn_separate_geometry(mote__babylon *bl, const char *where)
 }
 
 /* One entry of meshes[] or transformNodes[]. */
+/* Mesh.Parse's applyFog (true) and alphaIndex (unsaid: after every mesh
+ * that has one; the serialiser writes Number.MAX_VALUE, past a float) */
+static mote_result mote__mesh_draw_options(mote__babylon *bl, const cJSON *mesh, const char *where, mote__node *nd)
+{
+    bool fog = true;
+    MOTE__TRY(mote__json_flag(bl->load, mesh, "applyFog", where, &fog));
+    nd->no_fog = !fog;
+    const cJSON *index = mote__json_get(mesh, "alphaIndex");
+    if (cJSON_IsNumber(index)) {
+        const double v = index->valuedouble;
+        nd->alpha_index = v >= FLT_MAX ? FLT_MAX : v <= -FLT_MAX ? -FLT_MAX : (float)v;
+        nd->alpha_index_set = true;
+    } else if (index) {
+        MOTE__TRY(mote__json_number(bl->load, mesh, "alphaIndex", where, &nd->alpha_index));   /* says why not */
+    }
+    return MOTE_OK;
+}
+
 static mote_result mote__node_read(mote__babylon *bl, const cJSON *mesh, const char *where,
                                    mote__node *nd)
 {
@@ -178,6 +196,7 @@ static mote_result mote__node_read(mote__babylon *bl, const cJSON *mesh, const c
     MOTE__TRY(mote__babylon_number_text(bl, mesh, "materialUniqueId", where,
                                         &nd->material_unique_id));
     MOTE__TRY(mote__json_flag(bl->load, mesh, "isUnIndexed", where, &nd->unindexed));
+    MOTE__TRY(mote__mesh_draw_options(bl, mesh, where, nd));
     /* Mesh.Parse: overrideMaterialSideOrientation (older files; null: none),
      * then sideOrientation (Babylon.js 7's), each overriding the
      * material's (the glTF loader sets it on every mesh it makes) */
@@ -371,6 +390,9 @@ static mote_result mote__thin_instances(mote__babylon *bl, const cJSON *mesh, in
         t->material_unique_id = h->material_unique_id;
         t->legacy = h->legacy;
         t->side = h->side;
+        t->no_fog = h->no_fog;
+        t->alpha_index = h->alpha_index;
+        t->alpha_index_set = h->alpha_index_set;
         t->invisible = h->invisible;  /* drawn when the mesh is (its parent's flags do the rest) */
         mote__babylon_share_arrays(t, (mote__node *)h);
         t->subs = h->subs;
@@ -513,6 +535,9 @@ mote_result mote__babylon_nodes(mote__babylon *bl)
             in->material_unique_id = nd->material_unique_id;
             in->legacy = nd->legacy;
             in->side = nd->side;   /* drawn through its source mesh */
+            in->no_fog = nd->no_fog;
+            in->alpha_index = nd->alpha_index;
+            in->alpha_index_set = nd->alpha_index_set;
             in->undrawn = nd->undrawn;
             /* InstancedMesh's constructor: setPivotMatrix(source's matrix),
              * with the default postMultiplyPivotMatrix, so an instance
@@ -693,12 +718,21 @@ mote_result mote__babylon_build_meshes(mote__babylon *bl)
         return mote__oom(bl->load, "meshes");
     sc->mesh_count = (int)total;
     /* a byte per mesh and flag, so that mote_scene_draw_desc needs no search */
-    bool *two_sided = mote__store_alloc(bl->load->keep, 2 * total, sizeof *two_sided);
-    if (!two_sided)
+    bool *two_sided = mote__store_alloc(bl->load->keep, 5 * total, sizeof *two_sided);
+    float *alpha_index = mote__store_alloc(bl->load->keep, total, sizeof *alpha_index);
+    if (!two_sided || !alpha_index)
         return mote__oom(bl->load, "meshes");
-    bool *unlit = two_sided + total;
+    bool *unlit = two_sided + total, *no_depth_write = unlit + total, *no_fog = no_depth_write + total;
+    bool *depth_pre_pass = no_fog + total;
     sc->two_sided = two_sided;
     sc->unlit = unlit;
+    sc->no_depth_write = no_depth_write;
+    sc->no_fog = no_fog;
+    sc->depth_pre_pass = depth_pre_pass;
+    sc->alpha_index = alpha_index;
+    bl->max_lights = mote__store_alloc(&bl->load->tmp, total, sizeof *bl->max_lights);
+    if (!bl->max_lights)
+        return mote__oom(bl->load, "meshes");
     for (int i = 0; i < bl->node_count; i++) {
         mote__node *nd = &bl->nodes[i];
         for (int s = 0; s < nd->mesh_count; s++) {
@@ -723,13 +757,18 @@ mote_result mote__babylon_build_meshes(mote__babylon *bl)
             memcpy(m->scaling, nd->trs.scaling, sizeof m->scaling);
             m->parent = nd->parent >= 0 ? &sc->meshes[bl->nodes[nd->parent].first_mesh] : NULL;
             const mote__mat *mat = mote__babylon_resolve_material(bl, nd, material_index);
+            no_fog[nd->first_mesh + s] = nd->no_fog || (mat && mat->no_fog);
+            alpha_index[nd->first_mesh + s] = nd->alpha_index_set ? nd->alpha_index : FLT_MAX;
             if (mat) {
                 m->material = mat->material;
                 two_sided[nd->first_mesh + s] = mat->two_sided;
                 unlit[nd->first_mesh + s] = mat->unlit;
+                no_depth_write[nd->first_mesh + s] = mat->no_depth_write;
+                depth_pre_pass[nd->first_mesh + s] = mat->depth_pre_pass;
                 if (mat->uv2)
                     MOTE__TRY(mote__babylon_uv2_vertices(bl, nd, m));
             }
+            bl->max_lights[nd->first_mesh + s] = (uint8_t)(!mat ? 4u : mat->max_lights < 32u ? mat->max_lights : 32u);
             MOTE__TRY(mote__babylon_side_indices(bl, nd, s, mat, m));
             /* v = 0: the bottom row when the texture says invertY (what
              * Babylon.js does by default, and current exporters rely on),

@@ -185,6 +185,9 @@ static int mote__open_by_walk(int dirfd, const char *name, int flags)
         while (*after == '/')
             after++;
         bool last = *after == '\0';
+        /* "name/" names a folder, as the kernel reads it: a file there
+         * fails with ENOTDIR */
+        const int last_flags = flags | (after > p + len ? O_DIRECTORY : 0);
         char part[256];
         if (len == 0 || (len == 1 && p[0] == '.') || (len == 2 && p[0] == '.' && p[1] == '.')) {
             if (len == 2 && depth == 0) {
@@ -207,7 +210,7 @@ static int mote__open_by_walk(int dirfd, const char *name, int flags)
         memcpy(part, p, len);
         part[len] = '\0';
         int f = openat(held[depth], part,
-                       (last ? flags : O_RDONLY | O_DIRECTORY | O_CLOEXEC) | O_NOFOLLOW);
+                       (last ? last_flags : O_RDONLY | O_DIRECTORY | O_CLOEXEC) | O_NOFOLLOW);
         if (f >= 0 && last) {
             fd = f;
             break;
@@ -245,10 +248,14 @@ static int mote__open_by_walk(int dirfd, const char *name, int flags)
             errno = ENAMETOOLONG;
             break;
         }
-        /* the target, then what followed the link (after lies in rest) */
-        memmove(rest + tn + 1, after, an + 1);
+        /* the target, then what followed the link (after lies in rest);
+         * a slash only between them, or "link/" would stay a folder's name
+         * and "link" become one */
+        const size_t sep = an || after > p + len ? 1 : 0;
+        memmove(rest + tn + sep, after, an + 1);
         memcpy(rest, target, (size_t)tn);
-        rest[tn] = '/';
+        if (sep)
+            rest[tn] = '/';
         p = rest;
     }
     int err = errno;

@@ -27,14 +27,16 @@ mote_result mote__gltf_index(mote__gltf *gl, const cJSON *obj, const char *key,
     return MOTE_OK;
 }
 
-mote_result mote__gltf_item(mote__gltf *gl, const char *key, int n, const cJSON **out)
+mote_result mote__gltf_item(mote__gltf *gl, const char *key, int n, const cJSON **out,
+                            char *path)
 {
     const mote__gltf_list *l = NULL;
     for (int i = 0; i < gl->list_count && !l; i++)
         if (strcmp(gl->lists[i].key, key) == 0)
             l = &gl->lists[i];
-    char at[96];
-    snprintf(at, sizeof at, "%s[%d]", key, n);
+    char own[MOTE__GLTF_AT];
+    char *at = path ? path : own;
+    snprintf(at, MOTE__GLTF_AT, "%s[%d]", key, n);
     if (!l || n < 0 || n >= l->count)
         return mote__fail(gl->load, MOTE_ERR_RANGE, "%s: missing", at);
     MOTE__TRY(mote__json_object(gl->load, l->items[n], at));

@@ -6,7 +6,8 @@
  *                    chunks), the version, the extensions, the references
  *   gltf_buffer.c    buffers (GLB's BIN chunk, data: URIs, files beside
  *                    the scene), buffer views and accessors, sparse too
- *   gltf_mesh.c      primitives to vertices and triangles: modes, flat
+ *   gltf_mesh.c      primitives to vertices and triangles (or points and
+ *                    lines): modes, flat
  *                    normals, texture transforms, mirrored in z
  *   gltf_node.c      scenes and the node tree, the mote meshes made
  *   gltf_material.c  materials, textures, images and samplers
@@ -51,14 +52,18 @@ typedef struct mote__gltf_mat {
     mote_material material;
     bool two_sided;               /* doubleSided */
     bool unlit;                   /* KHR_materials_unlit */
+    bool cut_away;                /* MASK under its cut-off, untextured: not drawn */
+    mote_mip mip;                 /* its sampler's minFilter (mote_scene.mip_modes) */
     int tex_coord;                /* TEXCOORD_n the base colour texture samples */
     bool has_uv_transform;        /* KHR_texture_transform: uv' = M (u, v, 1) */
     float uv_transform[6];        /* column-major 2x3 */
 } mote__gltf_mat;
 
-/* A primitive as triangles: vertices and colours shared by every node
- * that draws its mesh. drawn false: no triangles (points, lines, or no
- * positions), a hidden mesh. */
+/* A primitive as mote draws it: vertices and colours shared by every
+ * node that draws its mesh, and triangles; or points (every vertex, no
+ * indices) or line segments (a, b) as triangles (a, b, b), drawn in mode.
+ * drawn false: nothing to draw (no positions, too few vertices), a
+ * hidden mesh. */
 typedef struct mote__gltf_prim {
     mote_vertex *verts;
     uint32_t nv;
@@ -66,6 +71,7 @@ typedef struct mote__gltf_prim {
     uint32_t *idx;
     uint32_t ni;
     int material;                 /* -1: the default material */
+    mote_mode mode;               /* DEFAULT, or POINTS or WIREFRAME (lines) */
     bool drawn;
 } mote__gltf_prim;
 
@@ -139,8 +145,12 @@ mote_result mote__gltf_load_glb(mote__loader *ld, const unsigned char *data, siz
  * things (what names them in messages): absent leaves *out as it is. */
 mote_result mote__gltf_index(mote__gltf *gl, const cJSON *obj, const char *key,
                              const char *where, int n, const char *what, int *out);
-/* The n-th element of the list key ("meshes"), an object, or an error. */
-mote_result mote__gltf_item(mote__gltf *gl, const char *key, int n, const cJSON **out);
+/* The n-th element of the list key ("meshes"), an object, or an error;
+ * path (may be NULL, else MOTE__GLTF_AT bytes): its JSON path for
+ * messages, "meshes[2]". */
+enum { MOTE__GLTF_AT = 64 };
+mote_result mote__gltf_item(mote__gltf *gl, const char *key, int n, const cJSON **out,
+                            char *path);
 /* Lists array (NULL: empty) as key for mote__gltf_item, its length held
  * to the mesh limit (each element may make meshes or textures). */
 mote_result mote__gltf_list_add(mote__gltf *gl, const char *key, const cJSON *array, int *n);

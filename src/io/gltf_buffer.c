@@ -152,9 +152,8 @@ typedef struct mote__gltf_view {
 static mote_result mote__gltf_view_get(mote__gltf *gl, int index, mote__gltf_view *out)
 {
     const cJSON *v;
-    MOTE__TRY(mote__gltf_item(gl, "bufferViews", index, &v));
-    char at[48];
-    snprintf(at, sizeof at, "bufferViews[%d]", index);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "bufferViews", index, &v, at));
     int buffer = -1;
     MOTE__TRY(mote__gltf_index(gl, v, "buffer", at, gl->buffer_count, "buffer", &buffer));
     if (buffer < 0)
@@ -297,9 +296,8 @@ mote_result mote__gltf_resolve(mote__gltf *gl, int index, const char *use,
         return mote__fail(gl->load, MOTE_ERR_RANGE, "%s: %d names no accessor (there are %d)",
                           use, index, gl->accessor_count);
     const cJSON *acc;
-    MOTE__TRY(mote__gltf_item(gl, "accessors", index, &acc));
-    char at[48];
-    snprintf(at, sizeof at, "accessors[%d]", index);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "accessors", index, &acc, at));
     uint32_t ctype = 0, count = 0, offset = 0;
     const char *type;
     if (!mote__json_get(acc, "componentType") || !mote__json_get(acc, "count"))

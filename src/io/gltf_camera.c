@@ -46,9 +46,8 @@ mote_result mote__gltf_camera(mote__gltf *gl)
         return MOTE_OK;           /* mote_scene_frame frames the scene */
     const mote__gltf_node *nd = &gl->nodes[gl->camera_node];
     const cJSON *cam;
-    MOTE__TRY(mote__gltf_item(gl, "cameras", nd->camera, &cam));
-    char at[48];
-    snprintf(at, sizeof at, "cameras[%d]", nd->camera);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "cameras", nd->camera, &cam, at));
     const char *type;
     MOTE__TRY(mote__json_string(gl->load, cam, "type", at, &type));
     bool ortho = type && strcmp(type, "orthographic") == 0;
@@ -56,7 +55,7 @@ mote_result mote__gltf_camera(mote__gltf *gl)
         return mote__fail(gl->load, MOTE_ERR_PARSE, "%s.type: expected \"perspective\" or "
                           "\"orthographic\"", at);
     const cJSON *p = mote__json_get(cam, type);
-    char pat[64];
+    char pat[MOTE__GLTF_AT + 16];
     snprintf(pat, sizeof pat, "%s.%s", at, type);
     if (!p)
         return mote__fail(gl->load, MOTE_ERR_PARSE, "%s: missing", pat);
@@ -128,9 +127,9 @@ static mote_result mote__gltf_light(mote__gltf *gl, int i, mote_light *L, bool *
 {
     const mote__gltf_node *nd = &gl->nodes[i];
     const cJSON *def;
-    MOTE__TRY(mote__gltf_item(gl, "extensions.KHR_lights_punctual.lights", nd->light, &def));
-    char at[64];
-    snprintf(at, sizeof at, "extensions.KHR_lights_punctual.lights[%d]", nd->light);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "extensions.KHR_lights_punctual.lights", nd->light, &def,
+                              at));
     const char *type;
     MOTE__TRY(mote__json_string(gl->load, def, "type", at, &type));
     memset(L, 0, sizeof *L);

@@ -51,9 +51,8 @@ static mote_result mote__gltf_image(mote__gltf *gl, int index, int *out)
         return MOTE_OK;
     }
     const cJSON *img;
-    MOTE__TRY(mote__gltf_item(gl, "images", index, &img));
-    char at[48];
-    snprintf(at, sizeof at, "images[%d]", index);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "images", index, &img, at));
     const char *uri;
     int view = -1;
     MOTE__TRY(mote__json_string(gl->load, img, "uri", at, &uri));
@@ -77,14 +76,15 @@ static mote_result mote__gltf_image(mote__gltf *gl, int index, int *out)
     return MOTE_OK;
 }
 
-/* samplers[index]'s wrap modes into m (its filters are the draw's:
- * mote_draw_desc.filter). */
-static mote_result mote__gltf_sampler(mote__gltf *gl, int index, mote_material *m)
+/* samplers[index]'s wrap modes into m, and the mip mode its minFilter
+ * asks for into *mip: between levels, nearest (9984, 9985) per-pixel
+ * levels, linear (9986, 9987) trilinear; else none said. Within a level
+ * the filter is the draw's (mote_draw_desc.filter). */
+static mote_result mote__gltf_sampler(mote__gltf *gl, int index, mote_material *m, mote_mip *mip)
 {
     const cJSON *s;
-    MOTE__TRY(mote__gltf_item(gl, "samplers", index, &s));
-    char at[48];
-    snprintf(at, sizeof at, "samplers[%d]", index);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "samplers", index, &s, at));
     static const char *const keys[2] = {"wrapS", "wrapT"};
     for (int k = 0; k < 2; k++) {
         uint32_t w = 10497;
@@ -99,6 +99,10 @@ static mote_result mote__gltf_sampler(mote__gltf *gl, int index, mote_material *
         else
             m->wrap_v = mode;
     }
+    uint32_t min = 0;
+    MOTE__TRY(mote__json_uint_member(gl->load, s, "minFilter", at, 65535, &min));
+    *mip = min == 9984 || min == 9985 ? MOTE_MIP_PIXEL : min == 9986 || min == 9987 ? MOTE_MIP_TRILINEAR
+                                                                                    : MOTE_MIP_DEFAULT;
     return MOTE_OK;
 }
 
@@ -147,16 +151,15 @@ static mote_result mote__gltf_texture_info(mote__gltf *gl, const cJSON *info, co
     mm->tex_coord = (int)tc;
     MOTE__TRY(mote__gltf_uv_transform(gl, info, at, mm));
     const cJSON *t;
-    MOTE__TRY(mote__gltf_item(gl, "textures", tex, &t));
-    char tat[48];
-    snprintf(tat, sizeof tat, "textures[%d]", tex);
+    char tat[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "textures", tex, &t, tat));
     int source = -1, sampler = -1;
     MOTE__TRY(mote__gltf_index(gl, t, "source", tat, gl->image_count, "image", &source));
     MOTE__TRY(mote__gltf_index(gl, t, "sampler", tat, gl->sampler_count, "sampler", &sampler));
     mote_material *m = &mm->material;
     m->wrap_u = m->wrap_v = MOTE_WRAP_REPEAT;
     if (sampler >= 0)
-        MOTE__TRY(mote__gltf_sampler(gl, sampler, m));
+        MOTE__TRY(mote__gltf_sampler(gl, sampler, m, &mm->mip));
     if (source < 0) {
         /* only an extension's image (KTX2, WebP), which is not read */
         mote__warn(gl->load, "%s: no \"source\" image mote reads (drawn untextured)", tat);
@@ -169,10 +172,12 @@ static mote_result mote__gltf_texture_info(mote__gltf *gl, const cJSON *info, co
     return MOTE_OK;
 }
 
-/* The emissive colour: emissiveFactor x KHR_materials_emissive_strength.
- * An emissive texture cannot be drawn (mote adds a colour, not a
- * texture's), and its factor alone would light the whole surface, so
- * neither is drawn then. */
+/* The emissive colour: emissiveFactor x KHR_materials_emissive_strength,
+ * or with an emissiveTexture an emissive texture layer (mote_layer) whose
+ * factor that is (sRGB-encoded as the texture is; above 1, by the power
+ * 1/2.2). The layer samples the base colour texture's uv set and
+ * transform (without a base colour texture, the mesh's uvs follow the
+ * emissive texture's); other ones are warned. */
 static mote_result mote__gltf_emissive(mote__gltf *gl, const cJSON *mat, const char *at,
                                        mote__gltf_mat *mm)
 {
@@ -186,32 +191,80 @@ static mote_result mote__gltf_emissive(mote__gltf *gl, const cJSON *mat, const c
         MOTE__TRY(mote__json_object(gl->load, x, at2));
         MOTE__TRY(mote__json_number(gl->load, x, "emissiveStrength", at2, &strength));
     }
-    if (mote__json_get(mat, "emissiveTexture")) {
-        mote__warn(gl->load, "%s.emissiveTexture: not drawn (mote adds no texture's light to "
-                   "a material), nor its emissiveFactor", at);
+    const cJSON *info = mote__json_get(mat, "emissiveTexture");
+    if (!info) {
+        mm->material.emissive.r = mote__gltf_srgb_byte(e[0] * strength);
+        mm->material.emissive.g = mote__gltf_srgb_byte(e[1] * strength);
+        mm->material.emissive.b = mote__gltf_srgb_byte(e[2] * strength);
         return MOTE_OK;
     }
-    mm->material.emissive.r = mote__gltf_srgb_byte(e[0] * strength);
-    mm->material.emissive.g = mote__gltf_srgb_byte(e[1] * strength);
-    mm->material.emissive.b = mote__gltf_srgb_byte(e[2] * strength);
+    char tat[112];
+    snprintf(tat, sizeof tat, "%s.emissiveTexture", at);
+    mote__gltf_mat glow;
+    memset(&glow, 0, sizeof glow);
+    MOTE__TRY(mote__gltf_texture_info(gl, info, tat, &glow));
+    if (!glow.material.texture || (e[0] == 0.0f && e[1] == 0.0f && e[2] == 0.0f))
+        return MOTE_OK;           /* unread, or black: no light */
+    if (!mm->material.texture) {  /* the mesh's uvs follow this texture */
+        mm->tex_coord = glow.tex_coord;
+        mm->has_uv_transform = glow.has_uv_transform;
+        memcpy(mm->uv_transform, glow.uv_transform, sizeof mm->uv_transform);
+    } else if (glow.tex_coord != mm->tex_coord || glow.has_uv_transform != mm->has_uv_transform
+               || memcmp(glow.uv_transform, mm->uv_transform, sizeof mm->uv_transform) != 0) {
+        mote__warn(gl->load, "%s: its uv set or KHR_texture_transform is not the base colour texture's, "
+                   "whose is drawn", tat);
+    }
+    mote_layer *l = mote__store_alloc(gl->load->keep, 1, sizeof *l);
+    if (!l)
+        return mote__oom(gl->load, tat);
+    memset(l, 0, sizeof *l);
+    l->role = MOTE_LAYER_EMISSIVE;
+    l->texture = glow.material.texture;
+    l->wrap_u = glow.material.wrap_u;
+    l->wrap_v = glow.material.wrap_v;
+    for (int k = 0; k < 3; k++) {
+        const float v = e[k] * strength;
+        l->factor[k] = v <= 1.0f ? (float)mote__gltf_srgb_byte(v) / 255.0f : (float)pow((double)v, 1.0 / 2.2);
+        l->factor[k] = l->factor[k] > 0.0f ? l->factor[k] : 1e-6f;   /* all 0 would read as white */
+    }
+    mm->material.layers = l;
+    mm->material.layer_count = 1;
     return MOTE_OK;
 }
 
-/* alphaMode: transparency is not drawn yet; said once per mode. */
-static mote_result mote__gltf_alpha(mote__gltf *gl, const cJSON *mat, const char *at)
+/* alphaMode onto mote's alpha: MASK an alpha test at alphaCutoff, BLEND a
+ * blend by the base colour's alpha a (x the texture's). The core tests
+ * the texel's alpha alone and cuts nothing untextured, so a divides the
+ * cut-off (texel x a < c is texel < c / a, and above 1 every texel is
+ * cut), and an untextured MASK material under its cut-off is cut whole
+ * (mm->cut_away: its meshes are hidden). A vertex colour's alpha is not
+ * drawn. */
+static mote_result mote__gltf_alpha(mote__gltf *gl, const cJSON *mat, const char *at, float a,
+                                    mote__gltf_mat *mm)
 {
     const char *mode;
     MOTE__TRY(mote__json_string(gl->load, mat, "alphaMode", at, &mode));
     float cutoff = 0.5f;
     MOTE__TRY(mote__json_number(gl->load, mat, "alphaCutoff", at, &cutoff));
-    if (!mode || strcmp(mode, "OPAQUE") == 0)
+    mote_material *m = &mm->material;
+    a = a > 0.0f ? (a < 1.0f ? a : 1.0f) : 0.0f;      /* NaN: 0 */
+    if (!mode || strcmp(mode, "OPAQUE") == 0) {
+        m->alpha_mode = MOTE_ALPHA_OPAQUE;
         return MOTE_OK;
+    }
     if (strcmp(mode, "MASK") == 0) {
-        mote__warn(gl->load, "alphaMode MASK: drawn opaque (mote does not test alpha yet)");
+        m->alpha_mode = MOTE_ALPHA_TEST;
+        /* 0 is the core's default cut-off (0.4): the smallest one cuts nothing either */
+        float c = a > 0.0f ? cutoff / a : 2.0f;
+        m->alpha_cutoff = c > 1e-6f ? c : 1e-6f;
+        mm->cut_away = !m->texture && a < cutoff;
         return MOTE_OK;
     }
     if (strcmp(mode, "BLEND") == 0) {
-        mote__warn(gl->load, "alphaMode BLEND: drawn opaque (mote does not blend yet)");
+        m->alpha_mode = MOTE_ALPHA_BLEND;
+        m->alpha = a;
+        m->alpha_set = true;
+        m->use_texture_alpha = m->texture != NULL;
         return MOTE_OK;
     }
     return mote__fail(gl->load, MOTE_ERR_PARSE, "%s.alphaMode: \"%s\", expected \"OPAQUE\", "
@@ -222,12 +275,11 @@ static mote_result mote__gltf_alpha(mote__gltf *gl, const cJSON *mat, const char
 static mote_result mote__gltf_material_read(mote__gltf *gl, int index)
 {
     const cJSON *mat;
-    MOTE__TRY(mote__gltf_item(gl, "materials", index, &mat));
-    char at[48];
-    snprintf(at, sizeof at, "materials[%d]", index);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "materials", index, &mat, at));
     mote__gltf_mat *mm = &gl->mats[index];
     const cJSON *pbr = mote__json_get(mat, "pbrMetallicRoughness");
-    char pat[80];
+    char pat[MOTE__GLTF_AT + 24];
     snprintf(pat, sizeof pat, "%s.pbrMetallicRoughness", at);
     if (pbr)
         MOTE__TRY(mote__json_object(gl->load, pbr, pat));
@@ -244,9 +296,20 @@ static mote_result mote__gltf_material_read(mote__gltf *gl, int index)
         MOTE__TRY(mote__gltf_texture_info(gl, info, tat, mm));
     }
     MOTE__TRY(mote__gltf_emissive(gl, mat, at, mm));
-    MOTE__TRY(mote__gltf_alpha(gl, mat, at));
+    MOTE__TRY(mote__gltf_alpha(gl, mat, at, base[3], mm));
     MOTE__TRY(mote__json_flag(gl->load, mat, "doubleSided", at, &mm->two_sided));
     mm->unlit = mote__json_get(mote__json_get(mat, "extensions"), "KHR_materials_unlit") != NULL;
+    if (!mm->unlit) {
+        /* as the .babylon loader's PBR materials: metallic 0 unless
+         * metallicFactor is written without a metallicRoughnessTexture
+         * (which scales the texture's, unread), as without an environment
+         * a metal shows only its highlights */
+        float metallic = 0.0f, roughness = 1.0f;
+        if (!mote__json_get(pbr, "metallicRoughnessTexture"))
+            MOTE__TRY(mote__json_number(gl->load, pbr, "metallicFactor", pat, &metallic));
+        MOTE__TRY(mote__json_number(gl->load, pbr, "roughnessFactor", pat, &roughness));
+        mote__metallic_roughness(m, metallic, roughness);
+    }
     return MOTE_OK;
 }
 

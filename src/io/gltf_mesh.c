@@ -1,8 +1,9 @@
 /*
  * gltf_mesh.c - a glTF mesh's primitives as mote draws them: vertices
  * (positions, normals, the uv set the material samples, COLOR_0) and a
- * triangle list made from any of the triangle modes, indexed or not;
- * flat normals where none are given; texture transforms applied to the
+ * triangle list made from any of the triangle modes, indexed or not (or
+ * points and line segments, drawn in the core's points and wireframe
+ * modes); flat normals where none are given; texture transforms applied to the
  * uvs; mirrored in z (matrix_fold.h).
  */
 #include "gltf.h"
@@ -20,9 +21,6 @@ enum {
     MOTE__INTS = MOTE__B | MOTE__B_N | MOTE__UB | MOTE__UB_N | MOTE__S | MOTE__S_N | MOTE__US |
                  MOTE__US_N,
 };
-
-static const char *const mote__gltf_mode_names[7] = {
-    "POINTS", "LINES", "LINE_LOOP", "LINE_STRIP", "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
 
 /* attributes[name] (or, with attrs NULL, the primitive's indices at
  * obj[name]) as an accessor of comps components (or comps_alt) and of a
@@ -65,53 +63,86 @@ static mote_result mote__gltf_finite(mote__gltf *gl, const mote__gltf_accessor *
     return MOTE_OK;
 }
 
-/* The primitive's triangles as corners into its vertices: from indices
- * (or 0, 1, 2, ...), by mode. *tri: the triangle count. */
-static mote_result mote__gltf_triangles(mote__gltf *gl, const mote__gltf_accessor *ia,
-                                        bool indexed, uint32_t nv, uint32_t mode, const char *at,
-                                        uint32_t **out, uint32_t *tri)
+/* Corners an element of a mode has, and how many elements n indices (or
+ * vertices) make: POINTS one corner each, the lines two, the triangles
+ * three. */
+static int mote__gltf_corners(uint32_t mode)
+{
+    return mode == 0 ? 1 : mode < 4 ? 2 : 3;
+}
+
+static size_t mote__gltf_elements(uint32_t mode, uint32_t n)
+{
+    switch (mode) {
+    case 0: return n;
+    case 1: return n / 2;
+    case 2: return n >= 2 ? n : 0;          /* LINE_LOOP: the last back to the first */
+    case 3: return n >= 2 ? n - 1 : 0;
+    case 4: return n / 3;
+    default: return n >= 3 ? n - 2 : 0;     /* strips and fans */
+    }
+}
+
+/* Which index (or vertex) corner j of element k of the mode reads. */
+static uint32_t mote__gltf_corner(uint32_t mode, uint32_t n, size_t k, int j)
+{
+    switch (mode) {
+    case 0: return (uint32_t)k;
+    case 1: return (uint32_t)(2 * k) + (uint32_t)j;
+    case 2: return j == 0 ? (uint32_t)k : (uint32_t)((k + 1) % n);
+    case 3: return (uint32_t)k + (uint32_t)j;
+    case 4: return (uint32_t)(3 * k) + (uint32_t)j;
+    case 5:                       /* odd triangles turned, so all keep one winding */
+        return j == 0 ? (uint32_t)k : (uint32_t)(k + (j == 1 ? 1 + k % 2 : 2 - k % 2));
+    default:                      /* fan: (k + 1, k + 2, 0), as the specification orders it */
+        return j == 2 ? 0 : (uint32_t)(k + 1) + (uint32_t)j;
+    }
+}
+
+/* The primitive's elements as corners into its vertices, from indices
+ * (or 0, 1, 2, ...), by mode: triangles three corners each; a line
+ * segment (a, b) the triangle (a, b, b), whose wireframe is the segment;
+ * a point one. *out_n: the corners. */
+static mote_result mote__gltf_elements_read(mote__gltf *gl, const mote__gltf_accessor *ia,
+                                            bool indexed, uint32_t nv, uint32_t mode,
+                                            const char *at, uint32_t **out, uint32_t *out_n)
 {
     uint32_t n = indexed ? ia->count : nv;
-    size_t t = mode == 4 ? n / 3 : n >= 3 ? n - 2 : 0;
-    if (mode == 4 && n % 3)
-        mote__warn(gl->load, "%s: %u %s, not a multiple of 3; the last %u are not drawn", at,
-                   (unsigned)n, indexed ? "indices" : "vertices", (unsigned)(n % 3));
-    MOTE__TRY(mote__check_count(gl->load, at, t * 3, "triangle corners",
+    int per = mote__gltf_corners(mode);
+    size_t t = mote__gltf_elements(mode, n);
+    if ((mode == 1 || mode == 4) && n % (uint32_t)per)
+        mote__warn(gl->load, "%s: %u %s, not a multiple of %d; the last %u are not drawn", at,
+                   (unsigned)n, indexed ? "indices" : "vertices", per, (unsigned)(n % (uint32_t)per));
+    size_t stored = mode == 0 ? t : t * 3;
+    MOTE__TRY(mote__check_count(gl->load, at, stored, mode == 0 ? "points" : "triangle corners",
                                 gl->load->lim.max_indices));
-    uint32_t *idx = mote__store_alloc(gl->load->keep, t * 3, sizeof *idx);
+    uint32_t *idx = mote__store_alloc(gl->load->keep, stored, sizeof *idx);
     if (!idx)
         return mote__oom(gl->load, at);
     for (size_t k = 0; k < t; k++) {
-        uint32_t c[3];
-        if (mode == 4) {
-            c[0] = (uint32_t)(3 * k), c[1] = c[0] + 1, c[2] = c[0] + 2;
-        } else if (mode == 5) {   /* odd triangles turned, so all keep one winding */
-            c[0] = (uint32_t)k;
-            c[1] = (uint32_t)(k + 1 + k % 2);
-            c[2] = (uint32_t)(k + 2 - k % 2);
-        } else {                  /* fan: (k + 1, k + 2, 0), as the specification orders it */
-            c[0] = (uint32_t)(k + 1), c[1] = (uint32_t)(k + 2), c[2] = 0;
-        }
-        for (int j = 0; j < 3; j++) {
-            uint32_t v = indexed ? mote__gltf_read_uint(ia, c[j]) : c[j];
+        uint32_t *e = idx + (mode == 0 ? k : 3 * k);
+        for (int j = 0; j < per; j++) {
+            uint32_t c = mote__gltf_corner(mode, n, k, j);
+            uint32_t v = indexed ? mote__gltf_read_uint(ia, c) : c;
             if (v >= nv)
                 return mote__fail(gl->load, MOTE_ERR_RANGE, "%s.indices[%u]: %u is out of range "
-                                  "(%u vertices)", at, (unsigned)c[j], (unsigned)v, (unsigned)nv);
-            idx[3 * k + (size_t)j] = v;
+                                  "(%u vertices)", at, (unsigned)c, (unsigned)v, (unsigned)nv);
+            e[j] = v;
         }
+        if (per == 2)
+            e[2] = e[1];
     }
     *out = idx;
-    *tri = (uint32_t)t;
+    *out_n = (uint32_t)stored;
     return MOTE_OK;
 }
 
-/* Unwelds the triangles (each its own three vertices) and gives each the
- * normal of its plane: the specification's flat normals for a primitive
- * without NORMAL. */
-static mote_result mote__gltf_flat_normals(mote__gltf *gl, mote__gltf_prim *p, const char *at)
+/* Each corner its own vertex (and colour), in the corners' order: what
+ * (for the limit's message) names why. */
+static mote_result mote__gltf_unweld(mote__gltf *gl, mote__gltf_prim *p, const char *at,
+                                     const char *what)
 {
-    MOTE__TRY(mote__check_count(gl->load, at, p->ni, "vertices (flat normals: three a triangle)",
-                                gl->load->lim.max_vertices));
+    MOTE__TRY(mote__check_count(gl->load, at, p->ni, what, gl->load->lim.max_vertices));
     mote_vertex *v = mote__store_alloc(gl->load->keep, p->ni, sizeof *v);
     mote_rgba *c = p->colors ? mote__store_alloc(gl->load->keep, p->ni, sizeof *c) : NULL;
     if (!v || (p->colors && !c))
@@ -121,6 +152,29 @@ static mote_result mote__gltf_flat_normals(mote__gltf *gl, mote__gltf_prim *p, c
         if (c)
             c[k] = p->colors[p->idx[k]];
     }
+    p->verts = v;
+    p->colors = c;
+    p->nv = p->ni;
+    return MOTE_OK;
+}
+
+/* The vertices the points name, in order, and no indices: the core
+ * draws a points mesh's every vertex. */
+static mote_result mote__gltf_point_vertices(mote__gltf *gl, mote__gltf_prim *p, const char *at)
+{
+    MOTE__TRY(mote__gltf_unweld(gl, p, at, "vertices (points)"));
+    p->idx = NULL;
+    p->ni = 0;
+    return MOTE_OK;
+}
+
+/* Unwelds the triangles (each its own three vertices) and gives each the
+ * normal of its plane: the specification's flat normals for a primitive
+ * without NORMAL. */
+static mote_result mote__gltf_flat_normals(mote__gltf *gl, mote__gltf_prim *p, const char *at)
+{
+    MOTE__TRY(mote__gltf_unweld(gl, p, at, "vertices (flat normals: three a triangle)"));
+    mote_vertex *v = p->verts;
     for (uint32_t k = 0; k + 2 < p->ni; k += 3) {
         double e1[3], e2[3], n[3];
         for (int j = 0; j < 3; j++) {
@@ -135,9 +189,6 @@ static mote_result mote__gltf_flat_normals(mote__gltf *gl, mote__gltf_prim *p, c
             v[k].normal[j] = v[k + 1].normal[j] = v[k + 2].normal[j] = (float)(n[j] / len);
         p->idx[k] = k, p->idx[k + 1] = k + 1, p->idx[k + 2] = k + 2;
     }
-    p->verts = v;
-    p->colors = c;
-    p->nv = p->ni;
     return MOTE_OK;
 }
 
@@ -151,14 +202,19 @@ static mote_result mote__gltf_vertices(mote__gltf *gl, const cJSON *attrs, const
     bool has_uv, has_col;
     char uv_name[24];
     snprintf(uv_name, sizeof uv_name, "TEXCOORD_%d", mm->tex_coord);
-    MOTE__TRY(mote__gltf_attribute(gl, attrs, "NORMAL", at, 3, 3,
+    char attr_at[MOTE__GLTF_AT + 40];
+    snprintf(attr_at, sizeof attr_at, "%s.attributes", at);
+    MOTE__TRY(mote__gltf_attribute(gl, attrs, "NORMAL", attr_at, 3, 3,
                                    MOTE__F | (q ? MOTE__B_N | MOTE__S_N : 0), p->nv,
-                                   "VEC3 of floats (5126)", &nrm, has_normals));
-    MOTE__TRY(mote__gltf_attribute(gl, attrs, uv_name, at, 2, 2,
+                                   q ? "VEC3 of floats or normalized bytes or shorts "
+                                       "(KHR_mesh_quantization)" : "VEC3 of floats (5126)",
+                                   &nrm, has_normals));
+    MOTE__TRY(mote__gltf_attribute(gl, attrs, uv_name, attr_at, 2, 2,
                                    MOTE__F | MOTE__UB_N | MOTE__US_N | q, p->nv,
-                                   "VEC2 of floats or normalized unsigned bytes or shorts",
+                                   q ? "VEC2 of floats or integers (KHR_mesh_quantization)"
+                                     : "VEC2 of floats or normalized unsigned bytes or shorts",
                                    &uv, &has_uv));
-    MOTE__TRY(mote__gltf_attribute(gl, attrs, "COLOR_0", at, 3, 4,
+    MOTE__TRY(mote__gltf_attribute(gl, attrs, "COLOR_0", attr_at, 3, 4,
                                    MOTE__F | MOTE__UB_N | MOTE__US_N, p->nv,
                                    "VEC3 or VEC4 of floats or normalized unsigned bytes or shorts",
                                    &col, &has_col));
@@ -166,8 +222,6 @@ static mote_result mote__gltf_vertices(mote__gltf *gl, const cJSON *attrs, const
     p->colors = has_col ? mote__store_alloc(gl->load->keep, p->nv, sizeof *p->colors) : NULL;
     if (!p->verts || (has_col && !p->colors))
         return mote__oom(gl->load, at);
-    char attr_at[96];
-    snprintf(attr_at, sizeof attr_at, "%s.attributes", at);
     const float *t = mm->uv_transform;
     for (uint32_t i = 0; i < p->nv; i++) {
         mote_vertex *v = &p->verts[i];
@@ -197,7 +251,7 @@ static mote_result mote__gltf_primitive(mote__gltf *gl, const cJSON *prim, const
 {
     MOTE__TRY(mote__json_object(gl->load, prim, at));
     const cJSON *attrs = mote__json_get(prim, "attributes");
-    char attr_at[96];
+    char attr_at[MOTE__GLTF_AT + 40];
     snprintf(attr_at, sizeof attr_at, "%s.attributes", at);
     if (!attrs)
         return mote__fail(gl->load, MOTE_ERR_PARSE, "%s: missing \"attributes\"", at);
@@ -209,11 +263,6 @@ static mote_result mote__gltf_primitive(mote__gltf *gl, const cJSON *prim, const
                                &p->material));
     if (mote__json_get(prim, "targets"))
         mote__warn(gl->load, "morph targets: not applied (meshes are drawn at rest)");
-    if (mode < 4) {
-        mote__warn(gl->load, "primitives of mode %s are not drawn (mote's scenes draw "
-                   "triangles)", mote__gltf_mode_names[mode]);
-        return MOTE_OK;
-    }
     mote__gltf_accessor pos, ia;
     bool has_pos, indexed;
     const unsigned q = gl->quantized ? MOTE__INTS : 0;
@@ -236,10 +285,12 @@ static mote_result mote__gltf_primitive(mote__gltf *gl, const cJSON *prim, const
     p->nv = pos.count;
     bool has_normals;
     MOTE__TRY(mote__gltf_vertices(gl, attrs, at, mm, &pos, p, &has_normals));
-    uint32_t tri = 0;
-    MOTE__TRY(mote__gltf_triangles(gl, &ia, indexed, p->nv, mode, at, &p->idx, &tri));
-    p->ni = tri * 3;
-    if (!has_normals)
+    MOTE__TRY(mote__gltf_elements_read(gl, &ia, indexed, p->nv, mode, at, &p->idx, &p->ni));
+    /* points and lines are drawn unlit, in the material colour: no normals */
+    p->mode = mode == 0 ? MOTE_MODE_POINTS : mode < 4 ? MOTE_MODE_WIREFRAME : MOTE_MODE_DEFAULT;
+    if (mode == 0)
+        MOTE__TRY(mote__gltf_point_vertices(gl, p, at));
+    else if (!has_normals && mode >= 4)
         MOTE__TRY(mote__gltf_flat_normals(gl, p, at));
     /* right-handed to mote's left-handed space (matrix_fold.h); the
      * mirror turns glTF's counter-clockwise fronts into mote's */
@@ -247,7 +298,7 @@ static mote_result mote__gltf_primitive(mote__gltf *gl, const cJSON *prim, const
         mote__mirror_point(p->verts[i].position);
         mote__mirror_point(p->verts[i].normal);
     }
-    p->drawn = p->ni > 0;
+    p->drawn = mode == 0 ? p->nv > 0 : p->ni > 0;
     return MOTE_OK;
 }
 
@@ -257,9 +308,8 @@ mote_result mote__gltf_mesh_read(mote__gltf *gl, int index)
     if (mesh->read)
         return MOTE_OK;
     const cJSON *obj;
-    MOTE__TRY(mote__gltf_item(gl, "meshes", index, &obj));
-    char at[48];
-    snprintf(at, sizeof at, "meshes[%d]", index);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "meshes", index, &obj, at));
     const cJSON *prims;
     MOTE__TRY(mote__json_array(gl->load, obj, "primitives", at, &prims));
     size_t n = mote__json_length(prims);
@@ -271,7 +321,7 @@ mote_result mote__gltf_mesh_read(mote__gltf *gl, int index)
         return mote__oom(gl->load, at);
     int k = 0;
     for (const cJSON *p = prims->child; p; p = p->next, k++) {
-        char pat[80];
+        char pat[MOTE__GLTF_AT + 24];
         snprintf(pat, sizeof pat, "%s.primitives[%d]", at, k);
         MOTE__TRY(mote__gltf_primitive(gl, p, pat, &mesh->prims[k]));
     }

@@ -95,7 +95,7 @@ static mote_result mote__gltf_walk(mote__gltf *gl, int i, int parent, int depth,
     nd->in_scene = true;
     nd->parent = parent;
     const cJSON *node;
-    MOTE__TRY(mote__gltf_item(gl, "nodes", i, &node));
+    MOTE__TRY(mote__gltf_item(gl, "nodes", i, &node, NULL));
     MOTE__TRY(mote__gltf_node_transform(gl, node, at, nd));
     nd->depth = depth + 1 + (nd->sheared ? 1 : 0);
     if (nd->depth - 1 > MOTE_MAX_PARENTS)
@@ -155,9 +155,8 @@ mote_result mote__gltf_scene_nodes(mote__gltf *gl)
         return MOTE_OK;
     }
     const cJSON *scene;
-    MOTE__TRY(mote__gltf_item(gl, "scenes", gl->scene, &scene));
-    char at[48];
-    snprintf(at, sizeof at, "scenes[%d]", gl->scene);
+    char at[MOTE__GLTF_AT];
+    MOTE__TRY(mote__gltf_item(gl, "scenes", gl->scene, &scene, at));
     const cJSON *roots;
     MOTE__TRY(mote__json_array(gl->load, scene, "nodes", at, &roots));
     snprintf(at, sizeof at, "scenes[%d].nodes", gl->scene);
@@ -166,7 +165,8 @@ mote_result mote__gltf_scene_nodes(mote__gltf *gl)
 
 /* The mote meshes made for nodes[i]: its helper, then its primitives or
  * one hidden mesh. */
-static void mote__gltf_fill_node(mote__gltf *gl, int i, bool *two_sided, bool *unlit)
+static void mote__gltf_fill_node(mote__gltf *gl, int i, bool *two_sided, bool *unlit,
+                                 mote_mode *modes, mote_mip *mips)
 {
     mote_scene *sc = gl->load->scene;
     const mote__gltf_node *nd = &gl->nodes[i];
@@ -204,9 +204,11 @@ static void mote__gltf_fill_node(mote__gltf *gl, int i, bool *two_sided, bool *u
         m->index_count = pr->ni;
         m->colors = pr->colors;
         m->material = mm->material;
-        m->hidden = !pr->drawn;
+        m->hidden = !pr->drawn || mm->cut_away;
         two_sided[k] = mm->two_sided;
         unlit[k] = mm->unlit;
+        modes[k] = pr->mode;
+        mips[k] = mm->mip;
         mote_mesh_update_bounds(m);
     }
 }
@@ -231,14 +233,18 @@ mote_result mote__gltf_build_meshes(mote__gltf *gl)
     /* one allocation, never moved: parents point into it */
     sc->meshes = mote__store_alloc(gl->load->keep, total, sizeof *sc->meshes);
     bool *flags = mote__store_alloc(gl->load->keep, 2 * total, sizeof *flags);
-    if (!sc->meshes || !flags)
+    mote_mode *modes = mote__store_alloc(gl->load->keep, total, sizeof *modes);
+    mote_mip *mips = mote__store_alloc(gl->load->keep, total, sizeof *mips);
+    if (!sc->meshes || !flags || !modes || !mips)
         return mote__oom(gl->load, "meshes");
+    sc->mip_modes = mips;
     sc->mesh_count = (int)total;
     sc->two_sided = flags;
     sc->unlit = flags + total;
+    sc->modes = modes;
     for (int i = 0; i < gl->node_count; i++)
         if (gl->nodes[i].in_scene)
-            mote__gltf_fill_node(gl, i, flags, flags + total);
+            mote__gltf_fill_node(gl, i, flags, flags + total, modes, mips);
     return MOTE_OK;
 }
 

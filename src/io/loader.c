@@ -281,3 +281,19 @@ mote_result mote__loader_end(mote__loader *ld, mote_result r)
         mote_scene_free(ld->scene);
     return r;
 }
+
+void mote__metallic_roughness(mote_material *mat, float metallic, float roughness)
+{
+    metallic = metallic > 0.0f ? (metallic < 1.0f ? metallic : 1.0f) : 0.0f;     /* NaN: 0 */
+    roughness = roughness > 0.05f ? (roughness < 1.0f ? roughness : 1.0f) : 0.05f;
+    for (int k = 0; k < 3; k++) {
+        const float albedo = mat->color_set ? (float)(&mat->color.r)[k] / 255.0f : 1.0f;
+        (&mat->specular.r)[k] = mote__unit_byte(0.04f * (1.0f - metallic) + albedo * metallic);
+        (&mat->color.r)[k] = mote__unit_byte(albedo * (1.0f - metallic));
+    }
+    mat->color.a = mat->specular.a = 255;
+    mat->color_set = true;
+    const float a2 = roughness * roughness * roughness * roughness;
+    const float power = 2.0f / a2 - 2.0f;
+    mat->specular_power = power > 1.0f ? (power < 4096.0f ? power : 4096.0f) : 1.0f;
+}

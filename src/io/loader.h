@@ -138,6 +138,14 @@ void mote__scene_bounds_add(mote_scene *sc, const mote_mesh *m, bool *any);
 /* A 0..1 colour channel as a byte, rounded, clamped (NaN: 0). */
 uint8_t mote__unit_byte(float c);
 
+/* A metallic-roughness material as mote approximates it, for every
+ * loader's PBR materials (docs/babylon.md): the colour (its bytes as
+ * given, white when unset) x (1 - metallic) lit diffusely, highlights of
+ * colour 0.04 (1 - metallic) + colour x metallic and the Blinn-Phong
+ * power 2 / roughness^4 - 2 of a GGX lobe that rough. metallic is
+ * clamped to [0, 1], roughness to [0.05, 1]. */
+void mote__metallic_roughness(mote_material *mat, float metallic, float roughness);
+
 /* ---- textures (scene_texture.c) ---------------------------------------- */
 
 /* Room for n textures in scene->textures, allocated once so that the

@@ -7,8 +7,10 @@
 #include "babylon.h"
 #include "gltf.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* ---- what the bytes are ------------------------------------------------ */
@@ -137,6 +139,35 @@ static void mote__first_bytes(const unsigned char *d, size_t n, char *out, size_
         used += (size_t)snprintf(out + used, out_size - used, "%s%02x", i ? " " : "", d[i]);
 }
 
+/* Every texture's mip chain, built once (mote_scene.mipmaps), and the
+ * materials pointed at them: a draw with mip MOTE_MIP_TRIANGLE samples
+ * them. */
+static mote_result mote__scene_mipmaps(mote__loader *ld)
+{
+    mote_scene *sc = ld->scene;
+    if (sc->texture_count <= 0)
+        return MOTE_OK;
+    mote_mipmaps *mips = mote__store_alloc(ld->keep, (size_t)sc->texture_count, sizeof *mips);
+    if (!mips)
+        return mote__oom(ld, "textures");
+    for (int i = 0; i < sc->texture_count; i++) {
+        size_t bytes = mote_mipmaps_bytes(&sc->textures[i]);
+        void *memory = bytes ? mote__store_alloc(ld->keep, bytes, 1) : NULL;
+        if (bytes && !memory)
+            return mote__oom(ld, "textures");
+        if (sc->textures[i].pixels && mote_mipmaps_build(&sc->textures[i], memory, bytes, &mips[i]) != MOTE_OK)
+            mips[i].count = 0;
+    }
+    sc->mipmaps = mips;
+    for (int m = 0; m < sc->mesh_count; m++) {
+        const mote_texture *t = sc->meshes[m].material.texture;
+        ptrdiff_t k = t ? t - sc->textures : -1;
+        if (k >= 0 && k < sc->texture_count && mips[k].count > 1)
+            sc->meshes[m].material.mipmaps = &mips[k];
+    }
+    return MOTE_OK;
+}
+
 /* The scene in data into ld->scene: a .babylon or glTF scene, or an
  * error that says what else the file is. */
 static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, size_t size)
@@ -193,6 +224,8 @@ mote_result mote_scene_load_memory(const char *data, size_t size, const char *na
                                        message_size);
     if (r == MOTE_OK)
         r = mote__scene_from_bytes(&ld, data ? data : "", size);
+    if (r == MOTE_OK)
+        r = mote__scene_mipmaps(&ld);
     return mote__loader_end(&ld, r);
 }
 
@@ -253,16 +286,108 @@ void mote_scene_draw_desc(const mote_scene *scene, int mesh, const mote_draw_des
         *out = *base;
     else
         memset(out, 0, sizeof *out);
-    /* Babylon.js draws both sides of a mesh whose material says
-     * backFaceCulling false: no culling, whatever the caller asked */
     if (!scene || mesh < 0 || mesh >= scene->mesh_count)
         return;
+    /* a mesh of points or lines has no triangles to fill, so a filled
+     * mode asked of the whole scene leaves it in its own */
+    mote_mode own = scene->modes ? scene->modes[mesh] : MOTE_MODE_DEFAULT;
+    if (own == MOTE_MODE_POINTS || (own == MOTE_MODE_WIREFRAME && out->mode != MOTE_MODE_POINTS))
+        out->mode = own;
+    if (own == MOTE_MODE_WIREFRAME)
+        out->cull = MOTE_CULL_NONE;
+    /* Babylon.js draws both sides of a mesh whose material says
+     * backFaceCulling false: no culling, whatever the caller asked */
     if (scene->two_sided && scene->two_sided[mesh])
         out->cull = MOTE_CULL_NONE;
+    if (scene->mip_modes && out->mip == MOTE_MIP_DEFAULT)
+        out->mip = scene->mip_modes[mesh];
     /* and without lights one whose material says disableLighting (its
      * colour is then the emissive one: mote__emissive) */
     if (scene->unlit && scene->unlit[mesh])
         out->unlit = true;
+    if (scene->no_depth_write && scene->no_depth_write[mesh])
+        out->no_depth_write = true;
+    if (scene->no_fog && scene->no_fog[mesh])
+        out->no_fog = true;
+    if (scene->lights_off)
+        out->lights_off |= scene->lights_off[mesh];
+}
+
+static bool mote__blended(const mote_mesh *m)
+{
+    return m->material.alpha_mode == MOTE_ALPHA_BLEND || m->material.alpha_mode == MOTE_ALPHA_TEST_AND_BLEND;
+}
+
+/* squared distance from p to the centre of m's bounding sphere, in world
+ * space (the origin of its own space when it has no bounds) */
+static double mote__centre_distance2(const mote_mesh *m, const float p[3])
+{
+    float w[16];
+    mote_mesh_world_matrix(m, w);
+    const float *c = m->bounds_center;
+    double d2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        double x = (double)w[k] * c[0] + (double)w[4 + k] * c[1] + (double)w[8 + k] * c[2] + w[12 + k] - p[k];
+        d2 += x * x;
+    }
+    return d2;
+}
+
+int mote_scene_draw_order(const mote_scene *scene, const mote_mesh *meshes, const mote_camera *camera, int *order)
+{
+    if (!scene || !meshes || !camera || !order || scene->mesh_count <= 0)
+        return 0;
+    const int n = scene->mesh_count;
+    double *dist = malloc((size_t)n * sizeof *dist);
+    if (!dist)
+        return 0;
+    int count = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < n; i++) {
+            const mote_alpha_mode a = meshes[i].material.alpha_mode;
+            if (!mote__blended(&meshes[i]) && (a == MOTE_ALPHA_TEST) == (pass == 1))
+                order[count++] = i;
+        }
+    const int first = count;
+    for (int i = 0; i < n; i++)
+        if (mote__blended(&meshes[i])) {
+            /* insertion sort, by alpha index then farthest first, stable:
+             * few meshes blend */
+            const double d = mote__centre_distance2(&meshes[i], camera->position);
+            const float ai = scene->alpha_index ? scene->alpha_index[i] : FLT_MAX;
+            int k = count++;
+            while (k > first) {
+                const float ak = scene->alpha_index ? scene->alpha_index[order[k - 1]] : FLT_MAX;
+                if (!(ak > ai || (ak == ai && dist[k - 1] < d)))
+                    break;
+                order[k] = order[k - 1];
+                dist[k] = dist[k - 1];
+                k--;
+            }
+            order[k] = i;
+            dist[k] = d;
+        }
+    free(dist);
+    return count;
+}
+
+mote_result mote_scene_draw(mote_device *dev, const mote_scene *scene, const mote_mesh *meshes, int mesh,
+                            const mote_draw_desc *base)
+{
+    if (!scene || !meshes || mesh < 0 || mesh >= scene->mesh_count)
+        return MOTE_ERR_INVALID_ARGUMENT;
+    mote_draw_desc d;
+    mote_scene_draw_desc(scene, mesh, base, &d);
+    /* a build without blending draws the mesh opaque, once */
+    if (MOTE_ENABLE_BLEND && scene->depth_pre_pass && scene->depth_pre_pass[mesh] && mote__blended(&meshes[mesh])) {
+        mote_draw_desc depth_only = d;
+        depth_only.no_color_write = true;
+        const mote_result r = mote_draw(dev, &meshes[mesh], &depth_only);
+        if (r != MOTE_OK)
+            return r;
+        d.depth_less_equal = true;
+    }
+    return mote_draw(dev, &meshes[mesh], &d);
 }
 
 int mote_scene_lod_level(const mote_scene *scene, int lod, const mote_mesh *meshes,
@@ -404,6 +529,7 @@ void mote_scene_frame(const mote_scene *scene, float aspect, mote_frame_desc *fr
         cam->fov = fov;
         mote__planes_for(dist, radius, cam);
     }
+    frame->fog = scene->fog;
     int n = scene->light_count;
     if (n > MOTE_MAX_LIGHTS)
         n = MOTE_MAX_LIGHTS;

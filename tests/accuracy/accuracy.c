@@ -48,11 +48,19 @@ static const mode modes[] = {
     {"textured bilinear, affine", MOTE_MODE_TEXTURED, MOTE_FILTER_BILINEAR, MOTE_PERSPECTIVE_AFFINE, 0, 8, MOTE_DEPTH_FORMAT_32, true},
 };
 
+/* `make accuracy` builds this twice: with the float vertex stage and with
+ * the integer one (MOTE_FIXED_VERTEX), whose rows say so */
+#if MOTE_FIXED_VERTEX
+#define STAGE ", integer vertex"
+#else
+#define STAGE ""
+#endif
+
 static void header(void)
 {
-    printf("%-30s %-38s %7s %8s %6s %4s %8s %7s %7s %9s\n", "scene", "mode", "drawn", "cov.miss",
+    printf("%-30s %-50s %7s %8s %6s %4s %8s %7s %7s %9s\n", "scene", "mode", "drawn", "cov.miss",
            "(off-", "max", "mean", "PSNR", ">1 LSB", "within 1");
-    printf("%-30s %-38s %7s %8s %6s %4s %8s %7s %7s %9s\n", "", "", "px", "px", "edge)", "err", "err",
+    printf("%-30s %-50s %7s %8s %6s %4s %8s %7s %7s %9s\n", "", "", "px", "px", "edge)", "err", "err",
            "dB", "px", "LSB %");
 }
 
@@ -67,9 +75,11 @@ static void row(const char *scene, const mode *m, const mote_frame_desc *frame, 
     d.subspan_log2 = m->subspan_log2;
     d.cull = cull;
     tu_vs_opts o = {W, H, m->bits, m->depth};
+    char name[64];
+    snprintf(name, sizeof name, "%s%s", m->name, STAGE);
     tu_vs_result r;
     if (!tu_vs_ref(&o, frame, meshes, n, &d, true, &r, NULL, NULL)) {
-        printf("%-30s %-38s (render failed)\n", scene, m->name);
+        printf("%-30s %-50s (render failed)\n", scene, name);
         return;
     }
     char psnr[16];
@@ -77,7 +87,7 @@ static void row(const char *scene, const mode *m, const mote_frame_desc *frame, 
         snprintf(psnr, sizeof psnr, "inf");
     else
         snprintf(psnr, sizeof psnr, "%.2f", r.m.psnr);
-    printf("%-30s %-38s %7ld %8ld %6ld %4d %8.4f %7s %7ld %9.3f\n", scene, m->name, r.m.covered_b,
+    printf("%-30s %-50s %7ld %8ld %6ld %4d %8.4f %7s %7ld %9.3f\n", scene, name, r.m.covered_b,
            r.m.coverage_mismatch, r.unexplained, r.m.max_err, r.m.mean_err, psnr, r.m.off_by_more_than_1,
            100.0 * r.m.within_1_fraction);
 }

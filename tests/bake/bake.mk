@@ -1,9 +1,10 @@
 # mote-bake against the loader: tests/bake/test_bake.c includes the headers
 # that mote-bake writes from tests/data/vertex_colors.babylon,
 # tests/data/bake_hidden.babylon and tests/data/ortho_camera.babylon (an
-# orthographic camera) and from assets/cube.babylon (textured) in each
-# texture format, and checks them against the same files loaded with
-# mote_scene_load, mesh by mesh and rendered; run by `make test`.
+# orthographic camera), from assets/cube.babylon (textured) in each
+# texture format and from gen_gltf's lines.gltf (points and lines), and
+# checks them against the same files loaded with mote_scene_load, mesh by
+# mesh and rendered; and the cube baked with --compact; run by `make test`.
 
 BAKE_TEST_DIR := $(BUILD)/tests/bake
 BAKE_SCENE    := tests/data/vertex_colors.babylon
@@ -29,11 +30,23 @@ $(BAKE_TEST_DIR)/cube_%.h: $(BAKE_CUBE) assets/checker.png $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
 	$(BIN)/mote-bake $(BAKE_CUBE) -o $@ --name cube_$* --format $* --size 64x48
 
+$(BAKE_TEST_DIR)/cube_compact.h: $(BAKE_CUBE) assets/checker.png $(BIN)/mote-bake
+	@mkdir -p $(dir $@)
+	$(BIN)/mote-bake $(BAKE_CUBE) -o $@ --name cube_compact --format rgba8888 --size 64x48 --compact
+
+# lines.gltf, written by gen_gltf with the glTF tests' scenes (tests/tests.mk)
+BAKE_LINES    := $(BUILD)/gltf/lines.gltf
+$(BAKE_TEST_DIR)/lines.h: $(BUILD)/gltf/.ok $(BIN)/mote-bake
+	@mkdir -p $(dir $@)
+	$(BIN)/mote-bake $(BAKE_LINES) -o $@ --name lines --format rgba8888 --size 64x48
+
 $(BAKE_TEST_DIR)/test_bake: tests/bake/test_bake.c $(BAKE_TEST_DIR)/baked.h $(BAKE_TEST_DIR)/ortho.h \
-        $(BAKE_TEST_DIR)/baked_hidden.h $(BAKE_CUBES) $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
+        $(BAKE_TEST_DIR)/baked_hidden.h $(BAKE_CUBES) $(BAKE_TEST_DIR)/cube_compact.h \
+        $(BAKE_TEST_DIR)/lines.h $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
 	$(CC) $(TEST_CFLAGS) -I$(BAKE_TEST_DIR) -DMOTE_BAKE_SCENE=\"$(CURDIR)/$(BAKE_SCENE)\" \
 	    -DMOTE_BAKE_CUBE=\"$(CURDIR)/$(BAKE_CUBE)\" \
-	    -DMOTE_BAKE_ORTHO=\"$(CURDIR)/$(BAKE_ORTHO)\" -DMOTE_BAKE_HIDDEN=\"$(CURDIR)/$(BAKE_HIDDEN)\" $< \
+	    -DMOTE_BAKE_ORTHO=\"$(CURDIR)/$(BAKE_ORTHO)\" -DMOTE_BAKE_HIDDEN=\"$(CURDIR)/$(BAKE_HIDDEN)\" \
+	    -DMOTE_BAKE_LINES=\"$(CURDIR)/$(BAKE_LINES)\" $< \
 	    $(BUILD)/tests/obj/unity.o $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
 test-build: $(BAKE_TEST_DIR)/test_bake

@@ -7,8 +7,9 @@
  * tests/data/bake_hidden.babylon, whose hidden meshes stay hidden and
  * whose disableLighting sign stays unlit; and a
  * scene seen by an orthographic camera (tests/data/ortho_camera.babylon),
- * baked as "ortho"; and the textured assets/cube.babylon in each texture
- * format ("cube_rgb565"...).
+ * baked as "ortho"; the textured assets/cube.babylon in each texture
+ * format ("cube_rgb565"...); and gen_gltf's lines.gltf, points and lines
+ * in their modes ("lines").
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -20,8 +21,11 @@
 #include "cube_rgb565.h"
 #include "cube_rgba8888.h"
 #include "cube_grey8.h"
+#include "cube_compact.h"
+#include "lines.h"
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define W BAKED_WIDTH
@@ -69,6 +73,20 @@ static void render(const mote_mesh *meshes, int n, const mote_frame_desc *frame,
     TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, frame));
     for (int i = 0; i < n; i++)
         TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[i], &d));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+}
+
+/* The same with each mesh's own draw options, descs[i]. */
+static void render_each(const mote_mesh *meshes, int n, const mote_frame_desc *frame,
+                        const mote_draw_desc *descs, uint8_t *out)
+{
+    static uint32_t depth[W * H];
+    static mote_device dev;
+    mote_device_desc desc = {.width = W, .height = H, .color = out, .depth = depth};
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &desc));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, frame));
+    for (int i = 0; i < n; i++)
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[i], &descs[i]));
     TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
 }
 
@@ -128,6 +146,42 @@ void baked_meshes_should_keep_which_are_two_sided(void)
         two += baked_two_sided[i];
     }
     TEST_ASSERT_TRUE(two > 0 && two < scene.mesh_count);
+}
+
+/* A glTF scene's points and lines keep their modes: drawn with the baked
+ * modes (lines without culling) they render as the loaded scene drawn
+ * through mote_scene_draw_desc. */
+void baked_points_and_lines_should_keep_their_modes(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_LINES, NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(s.mesh_count, LINES_MESH_COUNT);
+    int lines = 0, points = 0;
+    for (int i = 0; i < s.mesh_count; i++) {
+        TEST_ASSERT_EQUAL(s.modes[i], lines_modes[i]);
+        lines += lines_modes[i] == MOTE_MODE_WIREFRAME;
+        points += lines_modes[i] == MOTE_MODE_POINTS;
+    }
+    TEST_ASSERT_EQUAL(4, lines);
+    TEST_ASSERT_EQUAL(2, points);
+    mote_draw_desc as_loaded[LINES_MESH_COUNT], as_baked[LINES_MESH_COUNT];
+    for (int i = 0; i < s.mesh_count; i++) {
+        mote_scene_draw_desc(&s, i, NULL, &as_loaded[i]);
+        as_baked[i] = (mote_draw_desc){.mode = lines_modes[i]};
+        if (lines_modes[i] == MOTE_MODE_WIREFRAME)
+            as_baked[i].cull = MOTE_CULL_NONE;
+    }
+    static uint8_t loaded[W * H * 4], baked[W * H * 4];
+    mote_frame_desc frame;
+    mote_scene_frame(&s, (float)W / (float)H, &frame);
+    render_each(s.meshes, s.mesh_count, &frame, as_loaded, loaded);
+    render_each(lines_meshes, LINES_MESH_COUNT, &lines_frame, as_baked, baked);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
+    int green = 0;
+    for (int i = 0; i < W * H; i++)
+        green += baked[4 * i + 1] == 255;
+    TEST_ASSERT_TRUE(green > 20);
 }
 
 /* A mesh the loader hides (isVisible false, or under a disabled node) is
@@ -287,17 +341,59 @@ void a_textured_scene_baked_in_grey8_should_render_as_loaded(void)
                         sizeof cube_grey8_texture0.pixels, 1);
 }
 
+/* --compact: the cube's vertices as integers in under half the bytes,
+ * drawn within 2 LSB of the loaded cube but for the odd edge pixel. */
+void a_compact_bake_should_be_small_and_render_as_loaded(void)
+{
+    mote_scene cube;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_CUBE, NULL, &cube, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(cube.mesh_count, CUBE_COMPACT_MESH_COUNT);
+    const mote_mesh *m = &cube_compact_meshes[0];
+    TEST_ASSERT_NOT_NULL(m->compact);
+    TEST_ASSERT_NULL(m->vertices);
+    TEST_ASSERT_NULL(m->indices);
+    size_t compact = sizeof cube_compact_positions0 + sizeof cube_compact_normals0 + sizeof cube_compact_uvs0
+                   + sizeof cube_compact_indices0;
+    size_t floats = m->vertex_count * sizeof(mote_vertex) + m->index_count * sizeof(uint32_t);
+    snprintf(msg, sizeof msg, "compact %zu bytes, floats %zu", compact, floats);
+    TEST_ASSERT_TRUE_MESSAGE(2 * compact < floats, msg);
+    static uint8_t a[W * H * 4], b[W * H * 4];
+    mote_draw_desc d;
+    memset(&d, 0, sizeof d);
+    mote_frame_desc f;
+    mote_scene_frame(&cube, (float)W / (float)H, &f);
+    const mote_rgba clear = {0, 0, 0, 0};
+    render(cube.meshes, cube.mesh_count, &f, clear, d, a);
+    render(cube_compact_meshes, CUBE_COMPACT_MESH_COUNT, &cube_compact_frame, clear, d, b);
+    long drawn = 0, far = 0, cover = 0;
+    for (int p = 0; p < W * H; p++) {
+        bool da = a[4 * p + 3] != 0, db = b[4 * p + 3] != 0;
+        cover += da != db;
+        drawn += da && db;
+        for (int c = 0; c < 3 && da && db; c++)
+            if (abs(a[4 * p + c] - b[4 * p + c]) > 2) {
+                far++;
+                break;
+            }
+    }
+    snprintf(msg, sizeof msg, "%ld drawn, %ld more than 2 LSB apart, %ld drawn by one", drawn, far, cover);
+    TEST_ASSERT_TRUE_MESSAGE(drawn > 100 && far * 100 <= drawn && cover * 100 <= drawn, msg);
+    mote_scene_free(&cube);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(baked_meshes_should_hold_the_loaded_arrays_and_vertex_colours);
     RUN_TEST(a_baked_scene_should_render_the_same_bytes_as_the_loaded_one);
     RUN_TEST(baked_meshes_should_keep_which_are_two_sided);
+    RUN_TEST(baked_points_and_lines_should_keep_their_modes);
     RUN_TEST(a_baked_orthographic_camera_should_render_as_loaded);
     RUN_TEST(baked_meshes_should_keep_which_are_hidden);
     RUN_TEST(baked_meshes_should_keep_which_are_unlit_and_their_emissive_colours);
     RUN_TEST(a_textured_scene_baked_in_rgb565_should_render_as_loaded);
     RUN_TEST(a_textured_scene_baked_in_rgba8888_should_render_as_loaded);
     RUN_TEST(a_textured_scene_baked_in_grey8_should_render_as_loaded);
+    RUN_TEST(a_compact_bake_should_be_small_and_render_as_loaded);
     return UNITY_END();
 }

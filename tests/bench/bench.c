@@ -40,6 +40,9 @@
 #include <unistd.h>
 #ifdef __linux__
 #include <sched.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #endif
 
 #ifdef _OPENMP
@@ -62,7 +65,8 @@ static struct {
     bool dump;                    /* write the error frames as PPM */
     const char *scene;            /* only scenes whose name starts so (profiling) */
     const char *mode;             /* only this mode, mote only, no other section (profiling) */
-} opt = {"out/bench", NULL, 2.0, 100, 0, false, NULL, NULL};
+    const char *only;             /* only this section after the modes: threads, contention */
+} opt = {"out/bench", NULL, 2.0, 100, 0, false, NULL, NULL, NULL};
 
 /* The 1-minute load average: other work on the machine skews timings. */
 static double bench_load(void)
@@ -146,9 +150,34 @@ static int bench_cpus(int ids[], int max)
             ids[n++] = c;
     return n;
 }
+
+/* A process spinning on cpu, which dies with this one: another program
+ * busy on one of the cores. 0 when it could not be started. */
+static pid_t bench_busy_start(int cpu)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        bench_pin(cpu);
+        for (volatile unsigned long i = 0;; i++)
+            ;
+    }
+    return pid > 0 ? pid : 0;
+}
+
+static void bench_busy_stop(pid_t pid)
+{
+    if (pid > 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, NULL, 0);
+    }
+}
 #else
+static int pinned_cpu = -1;
 static void bench_pin(int cpu) { (void)cpu; }
 static int bench_cpus(int ids[], int max) { (void)ids; (void)max; return 0; }
+static pid_t bench_busy_start(int cpu) { (void)cpu; return 0; }
+static void bench_busy_stop(pid_t pid) { (void)pid; }
 #endif
 
 static void *bench_alloc(size_t n)
@@ -600,7 +629,8 @@ static void scene_fill(bench_scene *s, int w, int h)
 
 /* ---- devices, frames, timing ------------------------------------------- */
 
-typedef enum { RUN_SERIAL, RUN_OMP, RUN_DIRECT } run_kind;
+/* RUN_POOL: desc.parallel_for = mote_parallel_pool; RUN_OMP: mote_parallel_openmp */
+typedef enum { RUN_SERIAL, RUN_OMP, RUN_POOL, RUN_DIRECT } run_kind;
 
 typedef struct bench_dev {
     mote_device dev;
@@ -608,12 +638,15 @@ typedef struct bench_dev {
     void *depth;
     void *arena;
     int threads;                  /* mote_parallel_openmp's user int */
+    mote_pool *pool;
 } bench_dev;
 
 /* Binned devices clear only the tiles drawn into since their last clear
  * (desc.clear_drawn_tiles_only: the benchmark is the only writer of its
  * buffers), except while this is set: the saving's "without" runs. */
 static bool full_clear;
+/* Set for the coarse depth saving's "without" runs: desc.no_tile_depth. */
+static bool tile_depth_off;
 
 static void dev_init(bench_dev *bd, const bench_scene *s, const bench_mode *m, run_kind kind,
                      int threads)
@@ -643,11 +676,26 @@ static void dev_init(bench_dev *bd, const bench_scene *s, const bench_mode *m, r
         d.arena = bd->arena;
         d.arena_size = bytes;
         d.clear_drawn_tiles_only = !full_clear;
+        d.no_tile_depth = tile_depth_off;
     }
     if (kind == RUN_OMP) {
         bd->threads = threads;
         d.parallel_for = mote_parallel_openmp;
         d.parallel_user = &bd->threads;
+    }
+    if (kind == RUN_POOL) {
+        /* threads inherit the mask of the thread that starts them */
+        int pinned = pinned_cpu;
+        bench_pin(-1);
+        char msg[256];
+        mote_pool_desc pd = {threads, NULL, NULL};
+        if (mote_pool_create(&pd, &bd->pool, msg, sizeof msg) != MOTE_OK) {
+            fprintf(stderr, "bench: %s\n", msg);
+            exit(1);
+        }
+        bench_pin(pinned);
+        d.parallel_for = mote_parallel_pool;
+        d.parallel_user = bd->pool;
     }
     mote_result r = mote_device_init(&bd->dev, &d);
     if (r != MOTE_OK) {
@@ -658,6 +706,7 @@ static void dev_init(bench_dev *bd, const bench_scene *s, const bench_mode *m, r
 
 static void dev_free(bench_dev *bd)
 {
+    mote_pool_destroy(bd->pool);
     free(bd->color);
     free(bd->depth);
     free(bd->arena);
@@ -980,7 +1029,7 @@ static bench_row *run_mote(const char *section, bench_scene *s, const bench_mode
     mote_ctx c = {&bd, s, m, order};
     bench_time t = time_frames(mote_frame, &c, s->frames);
     mote_stats st = *mote_device_stats(&bd.dev);
-    bench_row *r = add_row(section, s, m->name, "mote", kind == RUN_OMP ? threads : 1, t);
+    bench_row *r = add_row(section, s, m->name, "mote", kind == RUN_OMP || kind == RUN_POOL ? threads : 1, t);
     r->tris = st.triangles_in;
     r->pixels = (double)st.pixels_written;
     if (st.arena_flushes)
@@ -1208,11 +1257,12 @@ static bench_table *section_llvmpipe(void)
  * the speed-up is the ratio of the two medians of that run. */
 static bench_table *section_threads(void)
 {
-    bench_table *t = tbl_new("thread scaling (binned with arena, desc.parallel_for = mote_parallel_openmp)",
+    bench_table *t = tbl_new("thread scaling (binned with arena, desc.parallel_for = mote_parallel_pool)",
                              "scene|mode|threads|frames|ms median|ms min|ms max|1 thread, same run|speed-up|cores allow|efficiency");
-    const char *names[] = {"monkey-1920", "torus-1920", "grid-1920", "fill-1920"};
+    const char *names[] = {"ll-suzanne-640", "ll-suzanne-1920", "ll-grid-1920", "monkey-1920", "torus-1920",
+                           "grid-1920", "fill-1920"};
     char a[32], b[32], c[32], d[32];
-    for (int j = 0; j < 4; j++) {
+    for (int j = 0; j < (int)(sizeof names / sizeof names[0]); j++) {
         bench_scene *s = scene_named(names[j]);
         if (!s)
             continue;
@@ -1222,7 +1272,7 @@ static bench_table *section_threads(void)
             /* one thread: the serial binned path, which does not pay for
              * cutting draws into pieces (as one thread through parallel_for would) */
             dev_init(&one, s, m, RUN_SERIAL, 1);
-            dev_init(&many, s, m, RUN_OMP, th);
+            dev_init(&many, s, m, RUN_POOL, th);
             mote_ctx c1 = {&one, s, m, 0}, c2 = {&many, s, m, 0};
             pinned_ctx p1 = {mote_frame, &c1, fast_cpu}, p2 = {mote_frame, &c2, -1};
             const frame_fn fns[2] = {pinned_frame, pinned_frame};
@@ -1253,6 +1303,56 @@ static bench_table *section_threads(void)
                 "in one run; speed-up: the ratio of their medians; cores allow: the sum of the speeds of that "
                 "many fastest cores, relative to the fastest (core check: %s); efficiency: speed-up over what "
                 "the cores allow; %d cores online.", BENCH_TURN, BENCH_TURN_WARM, cores_line, opt.max_threads);
+    return t;
+}
+
+/* Another process spins on one core (the one the single-thread runs do not
+ * prefer) while one thread, two on the pool and two on OpenMP take turns,
+ * none pinned: asking for two threads must not be slower than one. */
+static bench_table *section_contention(void)
+{
+    bench_table *t = tbl_new("contention: a busy loop on one core, 1 thread against 2 (pool and OpenMP), none pinned",
+                             "scene|mode|frames|1 thread ms median|max|pool 2 ms median|max|OpenMP 2 ms median|max|pool/1|OpenMP/1");
+    int ids[BENCH_MAX_CPUS], n = bench_cpus(ids, BENCH_MAX_CPUS);
+    if (n < 2 || opt.max_threads < 2) {
+        tbl_note(t, "skipped: %s", n < 2 ? "fewer than 2 cores, or no CPU affinity here" : "--threads 1");
+        return t;
+    }
+    int busy_cpu = ids[0] == fast_cpu ? ids[1] : ids[0];
+    const char *names[] = {"ll-suzanne-640", "ll-suzanne-1920", "ll-grid-1920", "grid-1920"};
+    char a[32], b[32], c[32], d[32], e[32], f[32];
+    bench_pin(-1);
+    for (int j = 0; j < (int)(sizeof names / sizeof names[0]); j++) {
+        bench_scene *s = scene_named(names[j]);
+        if (!s)
+            continue;
+        const bench_mode *m = &modes[MODE_TEX];
+        bench_dev one, pool, omp;
+        dev_init(&one, s, m, RUN_SERIAL, 1);
+        dev_init(&pool, s, m, RUN_POOL, 2);
+        dev_init(&omp, s, m, RUN_OMP, 2);
+        mote_ctx c1 = {&one, s, m, 0}, c2 = {&pool, s, m, 0}, c3 = {&omp, s, m, 0};
+        const frame_fn fns[3] = {mote_frame, mote_frame, mote_frame};
+        void *const ctxs[3] = {&c1, &c2, &c3};
+        bench_time tt[3];
+        pid_t busy = bench_busy_start(busy_cpu);
+        time_frames_paired(fns, ctxs, 3, s->frames, tt);
+        bench_busy_stop(busy);
+        dev_free(&one);
+        dev_free(&pool);
+        dev_free(&omp);
+        bench_row *r = add_row("contention", s, m->name, "mote-pool", 2, tt[1]);
+        r->paired_med = tt[0].med;
+        tbl_row(t, "%s|%s|%d|%s|%s|%s|%s|%s|%s|%.2fx|%.2fx", s->name, m->name, tt[0].frames, fmt_ms(tt[0].med, a),
+                fmt_ms(tt[0].max, b), fmt_ms(tt[1].med, c), fmt_ms(tt[1].max, d), fmt_ms(tt[2].med, e),
+                fmt_ms(tt[2].max, f), tt[0].med / tt[1].med, tt[0].med / tt[2].med);
+        fprintf(stderr, "  contention %s 1: %.3f pool 2: %.3f omp 2: %.3f ms\n", s->name, tt[0].med, tt[1].med,
+                tt[2].med);
+    }
+    tbl_note(t, "a process spinning on cpu%d throughout; the three devices timed in turns of %d frames (each "
+                "turn after %d frames drawn untimed), in one run; pool/1 and OpenMP/1: the 1-thread median over "
+                "the 2-thread one (above 1: two threads faster). max: the slowest frame.",
+             busy_cpu, BENCH_TURN, BENCH_TURN_WARM);
     return t;
 }
 
@@ -1349,6 +1449,25 @@ static bench_table *section_savings(void)
                 100.0 * (1.0 - with->t.med / without->t.med), (double)sw.pixels_written / area,
                 (double)so.pixels_written / area);
     }
+    /* the coarse depth per tile: triangles behind what a tile has drawn
+     * skipped before their edges are walked (the fill scene front to back) */
+    const char *depth_scenes[] = {"fill-1920", "ll-grid-1920", "grid-1920", "ll-suzanne-1920"};
+    for (int j = 0; j < 4; j++) {
+        bench_scene *s = scene_named(depth_scenes[j]);
+        if (!s)
+            continue;
+        const int order = j == 0;
+        bench_row *with = run_mote("savings", s, tex, RUN_SERIAL, 1, order, false, &sw);
+        snprintf(with->mode, sizeof with->mode, "tile-depth");
+        tile_depth_off = true;
+        bench_row *without = run_mote("savings", s, tex, RUN_SERIAL, 1, order, false, &so);
+        tile_depth_off = false;
+        snprintf(without->mode, sizeof without->mode, "no-tile-depth");
+        tbl_row(t, "coarse depth per tile|%s%s|%s|%s|%.0f%%|%u triangle visits to tiles skipped; pixels tested %.0f vs %.0f",
+                s->name, order ? " front to back" : "", fmt_ms(with->t.med, a), fmt_ms(without->t.med, b),
+                100.0 * (1.0 - with->t.med / without->t.med), sw.tile_triangles_behind,
+                (double)sw.pixels_tested, (double)so.pixels_tested);
+    }
     /* the clear of tiles still clear from the last frame */
     for (int i = 0; i < scene_count; i++) {
         bench_scene *s = &scenes[i];
@@ -1428,6 +1547,14 @@ static bench_table *section_goals(void)
         double sp = two->paired_med / two->t.med;
         tbl_row(t, "2 threads vs 1|%s|%s|-|%.2fx|>= 1.80x|%s", g[i].scene, fmt_ms(two->t.med, a), sp,
                 sp >= 1.8 ? "yes" : "NO");
+    }
+    for (int i = 0; i < 3; i++) {
+        const bench_row *two = find_row("contention", g[i].scene, "tex-nearest", "mote-pool", 2);
+        if (!two)
+            continue;
+        double sp = two->paired_med / two->t.med;
+        tbl_row(t, "2 threads vs 1, one core busy|%s|%s|-|%.2fx|>= 1.00x|%s", g[i].scene, fmt_ms(two->t.med, a),
+                sp, sp >= 1.0 ? "yes" : "NO");
     }
     tbl_note(t, "The like-for-like scenes are described in docs/performance.md so that other renderers "
                 "draw exactly the same work; the targets are half of TinyGL's time on them, stated as "
@@ -1575,9 +1702,15 @@ int main(int argc, char **argv)
             opt.scene = argv[++i];
         else if (!strcmp(argv[i], "--mode") && i + 1 < argc)
             opt.mode = argv[++i];
+        else if (!strcmp(argv[i], "--only") && i + 1 < argc)
+            opt.only = argv[++i];
+        else if (!strcmp(argv[i], "--no-tile-depth"))   /* profiling the coarse depth's cost */
+            tile_depth_off = true;
         else {
             fprintf(stderr, "usage: %s [--out DIR] [--assets DIR] [--cap SECONDS] [--frames N] [--threads N] [--dump]\n"
-                            "       [--scene PREFIX] [--mode NAME]   (profiling: that scene/mode only, no error, no other section)\n", argv[0]);
+                            "       [--scene PREFIX] [--mode NAME]   (profiling: that scene/mode only, no error, no other section)\n"
+                            "       [--only threads|contention|savings]   (that section alone, no other)\n"
+                            "       [--no-tile-depth]   (devices with desc.no_tile_depth)\n", argv[0]);
             return 2;
         }
     }
@@ -1675,8 +1808,22 @@ int main(int argc, char **argv)
     printf("  llvmpipe: %s\n", have_gl ? gl_name : gl_why);
     fflush(stdout);
 
-    bench_table *tabs[5];
+    bench_table *tabs[6];
     int ntab = 0;
+    if (opt.only) {
+        bench_table *one = !strcmp(opt.only, "threads") ? section_threads()
+                         : !strcmp(opt.only, "contention") ? section_contention()
+                         : !strcmp(opt.only, "savings") ? section_savings() : NULL;
+        if (one)
+            tbl_print(one, stdout, false);
+        else
+            fprintf(stderr, "bench: --only %s: not a section (threads, contention, savings)\n", opt.only);
+        free(one);
+        for (int i = 0; i < scene_count; i++)
+            scene_free(&scenes[i]);
+        scene_free(&offscreen);
+        return one ? 0 : 2;
+    }
     bench_pin(fast_cpu);
     tabs[ntab++] = section_modes();
     tbl_print(tabs[0], stdout, false);
@@ -1691,11 +1838,13 @@ int main(int argc, char **argv)
     tbl_print(tabs[1], stdout, false);
     tabs[ntab++] = section_threads();
     tbl_print(tabs[2], stdout, false);
+    tabs[ntab++] = section_contention();
+    tbl_print(tabs[3], stdout, false);
     bench_pin(fast_cpu);
     tabs[ntab++] = section_savings();
-    tbl_print(tabs[3], stdout, false);
-    tabs[ntab++] = section_goals();
     tbl_print(tabs[4], stdout, false);
+    tabs[ntab++] = section_goals();
+    tbl_print(tabs[5], stdout, false);
 
     double load1 = bench_load();
     printf("\nload average after: %.2f (before: %.2f)\n", load1, load0);

@@ -14,7 +14,7 @@
 function stage(f) {
     if (!(f in in_mote)) return ""
     if (f ~ /^mote__clear|^mote__fill_rows/) return "clear"
-    if (f ~ /^mote__(fill_|walk_|raster_|warm_tile)/) return "fills"
+    if (f ~ /^mote__(fill_|vfill_|walk_|raster_|warm_tile)/) return "fills"
     if (f ~ /^mote__setup/) return "setup"
     if (f ~ /^mote__(transform|finish|light|prepare_vertices|vertex|tint|shade|snap)/) return "vertex"
     if (f ~ /^mote_/) return "other"

@@ -51,7 +51,10 @@ static void make_textures(void)
 
 /* ---- scenes ------------------------------------------------------------- */
 
-enum { SC_TEXTURED, SC_GOURAUD, SC_DEPTH, SC_COLORS, SC_LIGHTS, SC_ORTHO, SC_COUNT };
+/* SC_ALPHA, past the scenes every mode draws: the textured scene with a
+ * cut-out and a blended mesh (the alpha/ configurations) */
+enum { SC_TEXTURED, SC_GOURAUD, SC_DEPTH, SC_COLORS, SC_LIGHTS, SC_ORTHO, SC_COUNT, SC_ALPHA = SC_COUNT, SC_LOOK,
+       SC_MIP };
 static const char *const scene_names[SC_COUNT] = {"textured", "gouraud", "depth", "colors", "lights", "ortho"};
 
 /* The Gouraud spheres under every light type, with ranges, a spot cone
@@ -70,9 +73,53 @@ static void lights_scene(tu_scene *s)
     s->meshes[1].material.emissive = (mote_rgba){30, 10, 0, 255};
 }
 
+/* The textured scene's texture with an alpha ramp, for the alpha scene. */
+static uint8_t texalpha_px[64 * 64 * 4];
+static mote_texture texalpha;
+
+static void alpha_scene(tu_scene *s)
+{
+    tu_scene_build(TU_SCENE_TEXTURED, MOTE_WRAP_REPEAT, s);
+    const uint8_t *px = (const uint8_t *)tu_scene_texture()->pixels;
+    for (int i = 0; i < 64 * 64; i++) {
+        memcpy(&texalpha_px[4 * i], &px[4 * i], 3);
+        texalpha_px[4 * i + 3] = (uint8_t)((i % 64) * 4 + (i / 64) % 3);
+    }
+    texalpha = (mote_texture){64, 64, MOTE_FORMAT_RGBA8888, 0, texalpha_px};
+    s->meshes[0].material.alpha_mode = MOTE_ALPHA_TEST;
+    s->meshes[1].material.alpha_mode = MOTE_ALPHA_TEST_AND_BLEND;
+    s->meshes[1].material.alpha = 0.6f;
+    s->meshes[1].material.alpha_set = true;
+    s->meshes[1].material.use_texture_alpha = true;
+}
+
+/* The textured scene with highlights and fog (SC_LOOK), or with its
+ * texture's mip chain (SC_MIP, the mip/ configurations). */
+static uint8_t mip_memory[64 * 64 * 4];
+static mote_mipmaps mips;
+
+static void look_scene(tu_scene *s, bool mip)
+{
+    tu_scene_build(TU_SCENE_TEXTURED, MOTE_WRAP_REPEAT, s);
+    for (int i = 0; i < s->mesh_count; i++) {
+        if (mip) {
+            mote_mipmaps_build(s->meshes[i].material.texture, mip_memory, sizeof mip_memory, &mips);
+            s->meshes[i].material.mipmaps = &mips;
+            continue;
+        }
+        s->meshes[i].material.specular = (mote_rgba){255, 230, 200, 255};
+        s->meshes[i].material.specular_power = 20.0f;
+    }
+    if (!mip)
+        s->frame.fog = (mote_fog){MOTE_FOG_EXP2, {0.5f, 0.6f, 0.7f}, 0.08f, 0, 0};
+}
+
 static void build_scene(int which, mote_wrap wrap, int texkind, tu_scene *s)
 {
     switch (which) {
+    case SC_ALPHA: alpha_scene(s); break;
+    case SC_LOOK: look_scene(s, false); break;
+    case SC_MIP: look_scene(s, true); break;
     case SC_GOURAUD: tu_scene_build(TU_SCENE_GOURAUD, wrap, s); break;
     case SC_DEPTH: tu_scene_build(TU_SCENE_DEPTH, wrap, s); break;
     case SC_COLORS: tu_scene_build(TU_SCENE_COLORS, wrap, s); break;
@@ -90,7 +137,8 @@ static void build_scene(int which, mote_wrap wrap, int texkind, tu_scene *s)
     }
     for (int i = 0; i < s->mesh_count; i++) {
         if (s->meshes[i].material.texture)
-            s->meshes[i].material.texture = &textures[texkind];
+            s->meshes[i].material.texture = which == SC_ALPHA ? &texalpha
+                                          : which >= SC_LOOK ? s->meshes[i].material.texture : &textures[texkind];
         mote_mesh_update_bounds(&s->meshes[i]);
     }
 }
@@ -283,6 +331,16 @@ int main(int argc, char **argv)
         {"no-depth-write/depth", SC_DEPTH, D(.mode = MOTE_MODE_GOURAUD, .no_depth_write = true)},
         {"points-color/lights", SC_LIGHTS, D(.mode = MOTE_MODE_POINTS, .point_color = {200, 100, 50, 255})},
         {"flat-affine/lights", SC_LIGHTS, D(.mode = MOTE_MODE_FLAT, .perspective = MOTE_PERSPECTIVE_AFFINE)},
+        {"alpha/nearest", SC_ALPHA, D(.mode = MOTE_MODE_TEXTURED)},
+        {"alpha/bilinear", SC_ALPHA, D(.mode = MOTE_MODE_TEXTURED, .filter = MOTE_FILTER_BILINEAR)},
+        {"alpha/gouraud", SC_ALPHA, D(.mode = MOTE_MODE_GOURAUD)},
+        {"look/textured", SC_LOOK, D(.mode = MOTE_MODE_TEXTURED)},
+        {"look/gouraud", SC_LOOK, D(.mode = MOTE_MODE_GOURAUD)},
+        {"look/flat", SC_LOOK, D(.mode = MOTE_MODE_FLAT)},
+        {"mip/triangle", SC_MIP, D(.mode = MOTE_MODE_TEXTURED, .mip = MOTE_MIP_TRIANGLE)},
+        {"mip/pixel", SC_MIP, D(.mode = MOTE_MODE_TEXTURED, .mip = MOTE_MIP_PIXEL)},
+        {"mip/pixel-bilinear", SC_MIP, D(.mode = MOTE_MODE_TEXTURED, .mip = MOTE_MIP_PIXEL,
+                                         .filter = MOTE_FILTER_BILINEAR)},
     };
     for (size_t i = 0; i < sizeof extra / sizeof extra[0]; i++)
         configs[n++] = (draw_config){extra[i].name, extra[i].scene, extra[i].d, TEX_RGBA, MOTE_WRAP_REPEAT};

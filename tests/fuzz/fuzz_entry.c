@@ -328,7 +328,11 @@ static void fz_mesh(fz_reader *r, fz_scene *s, int i)
 static void fz_draw_desc(fz_reader *r, mote_draw_desc *d)
 {
     memset(d, 0, sizeof *d);
-    d->mode = (mote_mode)(fz_u8(r) % (MOTE_MODE_COUNT + 1));
+    const uint8_t m = fz_u8(r);
+    d->mode = (mote_mode)(m % (MOTE_MODE_COUNT + 1));
+    /* the depth pre-pass's two halves, from bits the mode leaves over */
+    d->depth_less_equal = (m & 0x40) != 0;
+    d->no_color_write = (m & 0x80) != 0;
     uint8_t o = fz_u8(r);
     d->cull = (mote_cull)(o % (MOTE_CULL_COUNT + 1));
     d->front_face = (o & 0x08) ? MOTE_FRONT_CW : MOTE_FRONT_CCW;
@@ -1111,10 +1115,11 @@ static const char *fz_draw_scene(const mote_scene *sc)
             return "scene: device init failed";
         mote_begin(&dev, &f);
         bool ok = true;
-        /* band mode records at most MOTE_MAX_DRAWS draws */
-        int n = sc->mesh_count < MOTE_MAX_DRAWS ? sc->mesh_count : MOTE_MAX_DRAWS;
+        /* band mode records at most MOTE_MAX_DRAWS draws, and a mesh with
+         * a depth pre-pass takes two */
+        int n = sc->mesh_count < MOTE_MAX_DRAWS / 2 ? sc->mesh_count : MOTE_MAX_DRAWS / 2;
         for (int i = 0; i < n; i++)
-            if (mote_draw(&dev, &sc->meshes[i], NULL) != MOTE_OK)
+            if (mote_scene_draw(&dev, sc, sc->meshes, i, NULL) != MOTE_OK)
                 ok = false;
         if (mote_end(&dev) != MOTE_OK)
             ok = false;

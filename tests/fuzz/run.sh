@@ -3,7 +3,7 @@
 # each ran.   usage: tests/fuzz/run.sh DIR_WITH_BINARIES target...
 # Seeds: tests/fuzz/seeds/<target>/, tests/fuzz/regressions/<target>/, and
 # for the loaders the scenes and images of assets/, ../shared/assets/ (when
-# present) and tests/data/bad/. What the fuzzer learns is kept in
+# present), tests/data/ (the exporters' layouts too) and tests/data/bad/. What the fuzzer learns is kept in
 # $FUZZ_BUILD/corpus/<target>/, crashes go to $FUZZ_BUILD/crashes/<target>/.
 set -u
 bindir=$1
@@ -18,7 +18,7 @@ for t in "$@"; do
     seeds=$build/seeds/$t
     crashes=$build/crashes/$t
     mkdir -p "$corpus" "$seeds" "$crashes"
-    for f in assets/* ../shared/assets/* tests/data/bad/*; do
+    for f in assets/* ../shared/assets/* tests/data/bad/* tests/data/*.babylon tests/data/exporters/*; do
         [ -f "$f" ] || continue
         case "$t:$f" in
             scene:*.babylon|scene:*.json) cp "$f" "$seeds/" ;;

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/../.." || exit 1
 dir=${MOTE_BUILD:-build}/tests/options
 hash=$("$dir/test_options_full" | sed -n 's/^options: plain textured frame hash //p')
 tests=0; failures=0
-for v in full lines binning bilinear subspan vertex_colors falloff orthographic none; do
+for v in full lines binning bilinear subspan vertex_colors falloff orthographic emissive_map opacity_map specular_map none; do
     out=$(MOTE_OPTIONS_HASH=$hash "$dir/test_options_$v" 2>&1)
     echo "$out" | sed "s/^/[$v] /"
     line=$(echo "$out" | grep -E '^[0-9]+ Tests [0-9]+ Failures' | tail -n 1)

@@ -251,6 +251,30 @@ void ref_sample(const mote_texture *tex, mote_wrap wu, mote_wrap wv, bool biline
         out[k] = (a[k] * (1 - fu) + b[k] * fu) * (1 - fv) + (c[k] * (1 - fu) + d[k] * fu) * fv;
 }
 
+static double texel_alpha(const mote_texture *tex, int64_t x, int64_t y)
+{
+    if (tex->format != MOTE_FORMAT_RGBA8888)
+        return 255.0;
+    size_t stride = tex->stride ? (size_t)tex->stride : (size_t)tex->width * 4;
+    return ((const uint8_t *)tex->pixels)[(size_t)y * stride + (size_t)x * 4 + 3];
+}
+
+double ref_sample_alpha(const mote_texture *tex, mote_wrap wu, mote_wrap wv, bool bilinear, double u,
+                        double v)
+{
+    int64_t w = tex->width, h = tex->height;
+    if (!bilinear)
+        return texel_alpha(tex, wrap_index((int64_t)floor(u), w, wu), wrap_index((int64_t)floor(v), h, wv));
+    double uu = u - 0.5, vv = v - 0.5;
+    double fu0 = floor(uu), fv0 = floor(vv);
+    double fu = uu - fu0, fv = vv - fv0;
+    int64_t i0 = (int64_t)fu0, j0 = (int64_t)fv0;
+    int64_t a = wrap_index(i0, w, wu), b = wrap_index(i0 + 1, w, wu);
+    int64_t c = wrap_index(j0, h, wv), d = wrap_index(j0 + 1, h, wv);
+    return (texel_alpha(tex, a, c) * (1 - fu) + texel_alpha(tex, b, c) * fu) * (1 - fv)
+         + (texel_alpha(tex, a, d) * (1 - fu) + texel_alpha(tex, b, d) * fu) * fv;
+}
+
 /* ---- one triangle ------------------------------------------------------------ */
 
 typedef struct shade_ctx {
@@ -258,11 +282,123 @@ typedef struct shade_ctx {
     const ref_shading *sh;
     const ref_vert *v;
     long written;
+    /* mip selection: the triangle's level of detail, and the screen
+     * derivatives (per pixel) of the linear barycentrics */
+    double tri_lod, dlx[3], dly[3];
 } shade_ctx;
 
 static double clamp01(double x)
 {
     return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0;
+}
+
+static void ref_layer_sample(const ref_shading *sh, const mote_layer *l, const double muv[2], double e[3],
+                             double m[3], double *op)
+{
+    const mote_texture *tx = l->texture;
+    double u = muv[0] * (l->u_scale != 0.0f ? l->u_scale : 1.0) + l->u_offset;
+    double v = muv[1] * (l->v_scale != 0.0f ? l->v_scale : 1.0) + l->v_offset;
+    if (sh->v_bottom)
+        v = 1.0 - v;
+    u *= tx->width;
+    v *= tx->height;
+    mote_wrap wu = l->wrap_u > MOTE_WRAP_DEFAULT && l->wrap_u < MOTE_WRAP_COUNT ? l->wrap_u : MOTE_WRAP_REPEAT;
+    mote_wrap wv = l->wrap_v > MOTE_WRAP_DEFAULT && l->wrap_v < MOTE_WRAP_COUNT ? l->wrap_v : MOTE_WRAP_REPEAT;
+    double rgb[3];
+    ref_sample(tx, wu, wv, sh->bilinear, u, v, rgb);
+    bool white = l->factor[0] == 0.0f && l->factor[1] == 0.0f && l->factor[2] == 0.0f;
+    double f[3];
+    for (int k = 0; k < 3; k++)
+        f[k] = white ? 1.0 : fmin(64.0, fmax(0.0, l->factor[k]));
+    if (l->role == MOTE_LAYER_EMISSIVE) {
+        for (int k = 0; k < 3; k++)
+            e[k] += rgb[k] / 255.0 * f[k];
+    } else if (l->role == MOTE_LAYER_SPECULAR) {
+        for (int k = 0; k < 3; k++)
+            m[k] *= rgb[k] / 255.0 * f[k];
+    } else {
+        double a = l->from_rgb ? (54.0 * rgb[0] + 183.0 * rgb[1] + 19.0 * rgb[2]) / 256.0
+                               : ref_sample_alpha(tx, wu, wv, sh->bilinear, u, v);
+        *op *= fmin(255.0, a * f[0]) / 255.0;
+    }
+}
+
+/* The level of detail of a pixel with perspective barycentrics b: log2
+ * of the largest texel derivative, exactly (from the quotient rule on
+ * sum(lam_i u_i / w_i) / sum(lam_i / w_i)); the triangle's for
+ * MOTE_MIP_TRIANGLE. */
+static double pixel_lod(const shade_ctx *c, const double b[3])
+{
+    if (c->sh->mip == MOTE_MIP_TRIANGLE)
+        return c->tri_lod;
+    double u = 0.0, v = 0.0, q = 0.0, rho = 0.0;
+    for (int i = 0; i < 3; i++) {
+        u += b[i] * c->v[i].u;
+        v += b[i] * c->v[i].v;
+    }
+    double lw[3];
+    for (int i = 0; i < 3; i++) {
+        lw[i] = c->sh->affine ? 1.0 : 1.0 / c->v[i].w;
+        q += b[i] / lw[i];          /* sum b_i w_i = 1 / sum(lam_i / w_i) */
+    }
+    for (int axis = 0; axis < 2; axis++) {
+        const double *dl = axis ? c->dly : c->dlx;
+        double nu = 0.0, nv = 0.0, nq = 0.0;
+        for (int i = 0; i < 3; i++) {
+            nu += dl[i] * lw[i] * c->v[i].u;
+            nv += dl[i] * lw[i] * c->v[i].v;
+            nq += dl[i] * lw[i];
+        }
+        if (c->sh->mip_step) {
+            /* the next pixel's N / D less this one's: lam_i = b_i w_i q' */
+            double n = 0.0, su = 0.0, sv = 0.0;
+            for (int i = 0; i < 3; i++) {
+                const double l = (b[i] / lw[i] / q + dl[i]) * lw[i];
+                n += l;
+                su += l * c->v[i].u;
+                sv += l * c->v[i].v;
+            }
+            rho = fmax(rho, fmax(fabs(su / n - u), fabs(sv / n - v)));
+            continue;
+        }
+        /* d(N / D) = (dN - (N / D) dD) / D, D = sum lam_i / w_i = 1 / q */
+        rho = fmax(rho, fabs((nu - u * nq) * q));
+        rho = fmax(rho, fabs((nv - v * nq) * q));
+    }
+    return rho > 0.0 ? log2(rho) : -HUGE_VAL;
+}
+
+/* The texel (and its alpha) at level-0 texel coordinates (u, v) of a
+ * triangle with the mip chain sh->mips, at level of detail lod. */
+static void mip_sample(const ref_shading *sh, double lod, double u, double v, double out[3], double *alpha)
+{
+    const int last = sh->mips->count - 1;
+    int k0, k1 = -1;
+    double f = 0.0;
+    if (sh->mip == MOTE_MIP_TRILINEAR) {
+        k0 = lod < 0.0 ? 0 : lod >= last ? last : (int)floor(lod);
+        if (lod >= 0.0 && k0 < last) {
+            k1 = k0 + 1;
+            f = exp2(lod - k0) - 1.0;   /* the mantissa: log2's linear approximation */
+        }
+    } else {
+        const double r = floor(lod + 0.5);
+        k0 = r < 0.0 ? 0 : r > last ? last : (int)r;
+    }
+    const mote_texture *t0 = &sh->mips->level[k0];
+    ref_sample(t0, sh->wrap_u, sh->wrap_v, sh->bilinear, ldexp(u, -k0), ldexp(v, -k0), out);
+    if (alpha)
+        *alpha = ref_sample_alpha(t0, sh->wrap_u, sh->wrap_v, sh->bilinear, ldexp(u, -k0), ldexp(v, -k0));
+    if (k1 < 0)
+        return;
+    const mote_texture *t1 = &sh->mips->level[k1];
+    double next[3];
+    ref_sample(t1, sh->wrap_u, sh->wrap_v, sh->bilinear, ldexp(u, -k1), ldexp(v, -k1), next);
+    for (int k = 0; k < 3; k++)
+        out[k] = out[k] * (1.0 - f) + next[k] * f;
+    if (alpha)
+        *alpha = *alpha * (1.0 - f)
+               + ref_sample_alpha(t1, sh->wrap_u, sh->wrap_v, sh->bilinear, ldexp(u, -k1), ldexp(v, -k1)) * f;
 }
 
 static void shade_pixel(void *user, int px, int py, const int64_t e[3], int64_t area, const int perm[3])
@@ -301,18 +437,54 @@ static void shade_pixel(void *user, int px, int py, const int64_t e[3], int64_t 
             s[k] = b[0] * c->v[0].s[k] + b[1] * c->v[1].s[k] + b[2] * c->v[2].s[k];
         s[k] = clamp01(s[k]);
     }
+    /* texture layers: emissive shade, the highlights' scale, opacity */
+    double lay_e[3] = {0, 0, 0}, lay_m[3] = {1, 1, 1}, op = 1.0;
+    if (sh->layer_count) {
+        double muv[2];
+        for (int k = 0; k < 2; k++)
+            muv[k] = b[0] * c->v[0].muv[k] + b[1] * c->v[1].muv[k] + b[2] * c->v[2].muv[k];
+        for (int i = 0; i < sh->layer_count; i++)
+            ref_layer_sample(sh, sh->layers[i], muv, lay_e, lay_m, &op);
+        for (int k = 0; k < 3; k++)
+            s[k] = fmin(1.0, s[k] + lay_e[k]);
+    }
     uint8_t *out = &t->rgba[4 * idx];
+    double src[3], ta = 255.0;
+    if (sh->alpha_test && !sh->texture && ta * op < sh->cutoff * 255.0)
+        return;
     if (sh->texture) {
         double u = b[0] * c->v[0].u + b[1] * c->v[1].u + b[2] * c->v[2].u;
         double v = b[0] * c->v[0].v + b[1] * c->v[1].v + b[2] * c->v[2].v;
         double tx[3];
-        ref_sample(sh->texture, sh->wrap_u, sh->wrap_v, sh->bilinear, u, v, tx);
+        if (sh->mips) {
+            const double lod = pixel_lod(c, b);
+            mip_sample(sh, lod, u, v, tx, &ta);
+            if (t->lod)
+                t->lod[idx] = lod;
+        } else {
+            ref_sample(sh->texture, sh->wrap_u, sh->wrap_v, sh->bilinear, u, v, tx);
+            if (sh->texel_alpha || sh->alpha_test)
+                ta = ref_sample_alpha(sh->texture, sh->wrap_u, sh->wrap_v, sh->bilinear, u, v);
+        }
+        if (sh->alpha_test && ta * op < sh->cutoff * 255.0)
+            return;
         for (int k = 0; k < 3; k++)
-            out[k] = (uint8_t)floor(tx[k] * s[k] + 0.5);
+            src[k] = tx[k] * s[k];
     } else {
         for (int k = 0; k < 3; k++)
-            out[k] = (uint8_t)floor(s[k] * 255.0 + 0.5);
+            src[k] = s[k] * 255.0;
     }
+    for (int k = 0; k < 3; k++) {
+        double a = b[0] * c->v[0].a[k] + b[1] * c->v[1].a[k] + b[2] * c->v[2].a[k];
+        src[k] = fmin(255.0, src[k] + 255.0 * clamp01(a) * lay_m[k]);
+    }
+    if (sh->blend) {
+        double a = sh->alpha * (sh->texel_alpha ? ta / 255.0 : 1.0) * op;
+        for (int k = 0; k < 3; k++)
+            src[k] = src[k] * a + out[k] * (1.0 - a);
+    }
+    for (int k = 0; k < 3; k++)
+        out[k] = (uint8_t)floor(src[k] + 0.5);
     out[3] = 255;
     if (t->cov[idx] < 255)
         t->cov[idx]++;
@@ -324,7 +496,26 @@ static void shade_pixel(void *user, int px, int py, const int64_t e[3], int64_t 
 long ref_triangle(ref_target *t, const ref_shading *sh, const int32_t X[3], const int32_t Y[3],
                   const ref_vert v[3])
 {
-    shade_ctx c = {t, sh, v, 0};
+    shade_ctx c = {t, sh, v, 0, 0.0, {0, 0, 0}, {0, 0, 0}};
+    if (sh->mips) {
+        /* in pixels; lam_1 = ((x - x0) dy2 - dx2 (y - y0)) / a2 and so on */
+        double x[3], y[3];
+        for (int i = 0; i < 3; i++) {
+            x[i] = ldexp((double)X[i], -t->subpixel_bits);
+            y[i] = ldexp((double)Y[i], -t->subpixel_bits);
+        }
+        const double a2 = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+        if (a2 == 0.0)
+            return 0;
+        c.dlx[1] = (y[2] - y[0]) / a2;
+        c.dly[1] = -(x[2] - x[0]) / a2;
+        c.dlx[2] = -(y[1] - y[0]) / a2;
+        c.dly[2] = (x[1] - x[0]) / a2;
+        c.dlx[0] = -c.dlx[1] - c.dlx[2];
+        c.dly[0] = -c.dly[1] - c.dly[2];
+        const double texels = fabs((v[1].u - v[0].u) * (v[2].v - v[0].v) - (v[2].u - v[0].u) * (v[1].v - v[0].v));
+        c.tri_lod = texels > 0.0 ? 0.5 * log2(texels / fabs(a2)) : -HUGE_VAL;
+    }
     cover_each(X, Y, t->subpixel_bits, t->width, t->height, shade_pixel, &c);
     return c.written;
 }
@@ -465,6 +656,8 @@ void ref_begin(ref_target *t, const mote_frame_desc *frame, mote_rgba clear_colo
 typedef struct cvert {
     double p[4];                  /* clip x, y, z, w */
     double s[3], u, v;
+    double a[3];                  /* additive colour (highlights, fog) */
+    double muv[2];                /* the mesh's uv (texture layers) */
 } cvert;
 
 typedef struct draw_ctx {
@@ -473,6 +666,7 @@ typedef struct draw_ctx {
     double world[16], mvp[16], nrm[9];
     double color[3], emissive[3];
     bool lit, flat, textured;
+    bool smooth;                  /* Gouraud or textured: highlights and fog */
     mote_draw_desc d;
     ref_shading sh;
     double gx, gy;                /* guard band in NDC units */
@@ -515,6 +709,8 @@ static void light(const draw_ctx *c, const double p[3], const double nrm[3], dou
     double acc[3] = {f->ambient[0], f->ambient[1], f->ambient[2]};
     for (int i = 0; i < f->light_count; i++) {
         const mote_light *l = &f->lights[i];
+        if (c->d.lights_off >> i & 1)
+            continue;
         double col[3] = {l->color[0], l->color[1], l->color[2]};
         if (col[0] == 0.0 && col[1] == 0.0 && col[2] == 0.0)
             col[0] = col[1] = col[2] = 1.0;
@@ -551,6 +747,64 @@ static void light(const draw_ctx *c, const double p[3], const double nrm[3], dou
     }
 }
 
+/* Blinn-Phong highlights at world position p with unit normal nrm, as
+ * mote.h states them (mote_material.specular), in double. */
+static void specular(const draw_ctx *c, const double p[3], const double nrm[3], double out[3])
+{
+    const mote_frame_desc *f = &c->t->frame;
+    const mote_material *m = &c->mesh->material;
+    double power = m->specular_power != 0.0f ? m->specular_power : 64.0;
+    double V[3];
+    for (int j = 0; j < 3; j++) {
+        V[j] = (double)f->camera.position[j] - p[j];
+        out[j] = 0.0;
+    }
+    normalize3(V);
+    for (int i = 0; i < f->light_count; i++) {
+        const mote_light *l = &f->lights[i];
+        if (c->d.lights_off >> i & 1)
+            continue;
+        double L[3];
+        for (int j = 0; j < 3; j++)
+            L[j] = l->type == MOTE_LIGHT_POINT || l->type == MOTE_LIGHT_SPOT ? (double)l->position[j] - p[j]
+                 : l->type == MOTE_LIGHT_DIRECTIONAL                         ? -(double)l->direction[j]
+                                                                             : (double)l->direction[j];
+        if (l->type == MOTE_LIGHT_NONE || l->type >= MOTE_LIGHT_TYPE_COUNT)
+            continue;
+        double len = sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]), H[3];
+        for (int j = 0; j < 3; j++)
+            H[j] = L[j] / len + V[j];
+        normalize3(H);
+        double h = nrm[0] * H[0] + nrm[1] * H[1] + nrm[2] * H[2];
+        if (!(h > 0.0))
+            continue;
+        double k = (l->intensity != 0.0f ? l->intensity : 1.0) * pow(h, power > 1.0 ? power : 1.0)
+                 * falloff(l, L, len);
+        bool white = l->specular[0] == 0.0f && l->specular[1] == 0.0f && l->specular[2] == 0.0f;
+        for (int j = 0; j < 3; j++)
+            out[j] += k * (white ? 1.0 : l->specular[j]) * (&m->specular.r)[j] / 255.0;
+    }
+}
+
+/* The fog factor at world position p (mote_fog), in double. */
+static double fog_factor(const draw_ctx *c, const double p[3])
+{
+    const mote_frame_desc *f = &c->t->frame;
+    double d = 0.0;
+    for (int j = 0; j < 3; j++)
+        d += (p[j] - f->camera.position[j]) * (p[j] - f->camera.position[j]);
+    d = sqrt(d);
+    const mote_fog *fog = &f->fog;
+    double x = d * fog->density, v = 1.0;
+    if (fog->mode == MOTE_FOG_LINEAR)
+        v = (fog->end - d) / (fog->end - fog->start);
+    else if (fog->mode == MOTE_FOG_EXP)
+        v = exp(-x);
+    else if (fog->mode == MOTE_FOG_EXP2)
+        v = exp(-x * x);
+    return clamp01(v);
+}
+
 /* s x the mean colour of the n vertices listed (mote.h, mote_mesh.colors) */
 static void tint(const draw_ctx *c, const uint32_t *index, int n, double s[3])
 {
@@ -583,7 +837,25 @@ static bool vertex(const draw_ctx *c, uint32_t index, cvert *out, double wpos[3]
         memcpy(out->s, c->color, sizeof out->s);
     if (c->mesh->colors && !c->flat)
         tint(c, &index, 1, out->s);
+    out->a[0] = out->a[1] = out->a[2] = 0.0;
+    if (c->smooth && c->lit && MOTE_ENABLE_SPECULAR) {
+        const mote_rgba sp = c->mesh->material.specular;
+        if (sp.r | sp.g | sp.b)
+            specular(c, wpos, wnrm, out->a);
+    }
+    const mote_fog_mode fm = c->t->frame.fog.mode;
+    if (c->smooth && MOTE_ENABLE_FOG && fm > MOTE_FOG_NONE && fm < MOTE_FOG_COUNT && !c->d.no_fog) {
+        double f = fog_factor(c, wpos);
+        for (int k = 0; k < 3; k++) {
+            out->s[k] *= f;
+            out->a[k] = out->a[k] * f + c->t->frame.fog.color[k] * (1.0 - f);
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        out->a[k] = clamp01(out->a[k]);
     out->u = out->v = 0.0;
+    out->muv[0] = in->uv[0];
+    out->muv[1] = in->uv[1];
     if (c->textured) {
         const mote_material *m = &c->mesh->material;
         double u = (double)in->uv[0] * (m->u_scale != 0.0f ? m->u_scale : 1.0) + m->u_offset;
@@ -615,10 +887,14 @@ static void lerp(const cvert *a, const cvert *b, double s, cvert *out)
 {
     for (int k = 0; k < 4; k++)
         out->p[k] = a->p[k] + (b->p[k] - a->p[k]) * s;
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
         out->s[k] = a->s[k] + (b->s[k] - a->s[k]) * s;
+        out->a[k] = a->a[k] + (b->a[k] - a->a[k]) * s;
+    }
     out->u = a->u + (b->u - a->u) * s;
     out->v = a->v + (b->v - a->v) * s;
+    for (int k = 0; k < 2; k++)
+        out->muv[k] = a->muv[k] + (b->muv[k] - a->muv[k]) * s;
 }
 
 #define MAXPOLY 12
@@ -662,8 +938,10 @@ static void to_ref_vert(const cvert *c, ref_vert *r)
     r->z = z < 0.0 ? 0.0 : z > 1.0 ? 1.0 : z;
     r->w = c->p[3];
     memcpy(r->s, c->s, sizeof r->s);
+    memcpy(r->a, c->a, sizeof r->a);
     r->u = c->u;
     r->v = c->v;
+    memcpy(r->muv, c->muv, sizeof r->muv);
 }
 
 static void flat_shade(const draw_ctx *c, const uint32_t index[3], double wp[3][3], double wn[3][3],
@@ -699,6 +977,27 @@ static bool texture_ok(const mote_texture *t)
     return t && t->pixels && t->width > 0 && t->height > 0 && t->width <= 65536 && t->height <= 65536
         && (t->format == MOTE_FORMAT_RGBA8888 || t->format == MOTE_FORMAT_RGB565
             || t->format == MOTE_FORMAT_GREY8);
+}
+
+/* The material's layers that draw (mote.h, mote_layer). */
+static void select_layers(draw_ctx *c, const mote_material *mat, mote_mode mode)
+{
+    c->sh.layer_count = 0;
+    c->sh.v_bottom = mat->v_origin_bottom;
+    if (mode != MOTE_MODE_TEXTURED || !mat->layers)
+        return;
+    const mote_rgba sp = mat->specular;
+    const bool spec = c->smooth && c->lit && MOTE_ENABLE_SPECULAR && (sp.r | sp.g | sp.b);
+    const mote_fog_mode fm = c->t->frame.fog.mode;
+    const bool fog = c->smooth && MOTE_ENABLE_FOG && fm > MOTE_FOG_NONE && fm < MOTE_FOG_COUNT && !c->d.no_fog;
+    for (int i = 0; i < mat->layer_count && i < MOTE_MAX_LAYERS; i++) {
+        const mote_layer *l = &mat->layers[i];
+        bool built = (l->role == MOTE_LAYER_EMISSIVE && MOTE_ENABLE_EMISSIVE_MAP)
+                  || (l->role == MOTE_LAYER_OPACITY && MOTE_ENABLE_OPACITY_MAP)
+                  || (l->role == MOTE_LAYER_SPECULAR && MOTE_ENABLE_SPECULAR_MAP && spec && !fog);
+        if (built && texture_ok(l->texture))
+            c->sh.layers[c->sh.layer_count++] = l;
+    }
 }
 
 bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
@@ -746,6 +1045,7 @@ bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
         c.emissive[k] = MOTE_ENABLE_EMISSIVE ? (double)(&mat->emissive.r)[k] / 255.0 : 0.0;
     }
     c.lit = !c.d.unlit;
+    c.smooth = mode == MOTE_MODE_GOURAUD || mode == MOTE_MODE_TEXTURED;
     /* unlit flat is one colour per mesh, or per triangle with vertex colours */
     c.flat = mode == MOTE_MODE_FLAT && (c.lit || mesh->colors);
     c.textured = mode == MOTE_MODE_TEXTURED && texture_ok(mat->texture);
@@ -756,6 +1056,29 @@ bool ref_draw(ref_target *t, const mote_mesh *mesh, const mote_draw_desc *draw)
     c.sh.affine = false;         /* the reference is always perspective-correct */
     c.sh.depth_test = !c.d.no_depth_test;
     c.sh.depth_write = !c.d.no_depth_write;
+    /* alpha, as mote.h's mote_material states it */
+    mote_alpha_mode am = mat->alpha_mode;
+    bool texel_alpha = c.textured && mat->use_texture_alpha;
+    c.sh.alpha = mat->alpha_set ? floor(clamp01(mat->alpha) * 255.0 + 0.5) / 255.0 : 1.0;
+    c.sh.alpha_test = MOTE_ENABLE_ALPHA_TEST && c.textured && (am == MOTE_ALPHA_TEST || am == MOTE_ALPHA_TEST_AND_BLEND);
+    c.sh.cutoff = mat->alpha_cutoff != 0.0f ? mat->alpha_cutoff : 0.4;
+    c.sh.blend = MOTE_ENABLE_BLEND && (am == MOTE_ALPHA_BLEND || am == MOTE_ALPHA_TEST_AND_BLEND);
+    c.sh.texel_alpha = texel_alpha;
+    /* a mip chain of the draw's texture, as mote_draw takes one */
+    const mote_mipmaps *mm = mat->mipmaps;
+    if (MOTE_ENABLE_MIPMAPS && c.textured && c.d.mip >= MOTE_MIP_TRIANGLE && c.d.mip < MOTE_MIP_COUNT && mm
+        && mm->count > 1 && mm->count <= MOTE_MAX_MIPS && mm->level[0].pixels == mat->texture->pixels
+        && mm->level[0].width == mat->texture->width && mm->level[0].height == mat->texture->height) {
+        c.sh.mips = mm;
+        c.sh.mip = c.d.mip;
+        c.sh.mip_step = t->mip_step;
+    }
+    select_layers(&c, mat, mode);
+    bool opacity = false;
+    for (int i = 0; i < c.sh.layer_count; i++)
+        opacity = opacity || c.sh.layers[i]->role == MOTE_LAYER_OPACITY;
+    c.sh.alpha_test = c.sh.alpha_test || (MOTE_ENABLE_ALPHA_TEST && opacity
+                                          && (am == MOTE_ALPHA_TEST || am == MOTE_ALPHA_TEST_AND_BLEND));
     c.gx = (double)(1 << MOTE_GUARD_BITS) / (t->width * 0.5);
     c.gy = (double)(1 << MOTE_GUARD_BITS) / (t->height * 0.5);
 

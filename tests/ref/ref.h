@@ -14,7 +14,7 @@
  *              space compared in double, lighting and vertex colours in
  *              double, texture addressing and colour rounding as
  *              CONVENTIONS state them (bilinear with exact, not 1/256,
- *              weights).
+ *              weights), mip levels from exact texel derivatives.
  *   Metrics    coverage mismatches, max / mean channel error, PSNR and the
  *              count of pixels off by more than 1 LSB between two images.
  *
@@ -47,6 +47,9 @@ typedef struct ref_target {
     uint8_t *rgba;                /* width * height * 4, alpha 255 where drawn */
     uint8_t *cov;                 /* fragments written per pixel (saturating) */
     double *depth;                /* z/w of the nearest fragment; 1 = clear */
+    double *lod;                  /* NULL, or (the caller's, width * height) each written
+                                     fragment's exact level of detail log2 rho (mip draws) */
+    bool mip_step;                /* ref_draw: ref_shading.mip_step */
     /* set by ref_begin */
     mote_frame_desc frame;
     double view_proj[16];         /* column-major like mote's */
@@ -66,6 +69,9 @@ typedef struct ref_vert {
     double w;                     /* clip w (> 0) */
     double s[3];                  /* shade per channel in [0,1] (light x material x vertex colour) */
     double u, v;                  /* texture coordinates in texels */
+    double a[3];                  /* additive colour in [0,1] (highlights, fog): a pixel is
+                                     texel x s + 255 a, clamped */
+    double muv[2];                /* the mesh's own uv, for texture layers */
 } ref_vert;
 
 typedef struct ref_shading {
@@ -74,6 +80,34 @@ typedef struct ref_shading {
     bool bilinear;
     bool affine;                  /* screen-linear attributes (for comparisons only) */
     bool depth_test, depth_write;
+    /* alpha (mote_material.alpha_mode): the texel's alpha read (exactly
+     * filtered with bilinear), a pixel cut where it is below cutoff x 255,
+     * blended as src a + dst (1 - a) with a = alpha (x texel alpha / 255
+     * with texel_alpha) */
+    bool alpha_test, blend, texel_alpha;
+    double alpha, cutoff;
+    /* texture layers (mote_layer), as mote.h states them: each samples at
+     * the mesh's uv x its scale + offset (v flipped with v_bottom), with
+     * the draw's filter; emissive adds texel / 255 x factor to the
+     * clamped shade (at most 1), specular scales the additive colour by
+     * texel / 255 x factor, opacity multiplies the test's and the blend's
+     * alpha by min(255, texel alpha (or luminance, (54 r + 183 g + 19 b) /
+     * 256) x factor) / 255 */
+    const mote_layer *layers[MOTE_MAX_LAYERS];
+    int layer_count;
+    bool v_bottom;
+    /* mip selection (mote_draw_desc.mip) over mips, a chain whose level 0
+     * is texture; NULL: level 0 only. The level of detail L is log2 rho in
+     * level-0 texels per pixel, exactly: per triangle rho^2 the texel area
+     * over the pixel area; per pixel (and trilinear) rho the largest of
+     * |du/dx|, |dv/dx|, |du/dy|, |dv/dy|, the perspective-correct
+     * derivatives at the pixel centre. Nearest level: round(L) within the
+     * chain; trilinear: levels floor(L) and the next, the next weighed by
+     * rho / 2^floor(L) - 1 (exact, not in 1/256), each sampled at u / 2^k. */
+    const mote_mipmaps *mips;
+    mote_mip mip;
+    bool mip_step;                /* per pixel: rho from the texel steps to the next pixel
+                                     right and down (mote.h's words) instead */
 } ref_shading;
 
 /* Rasterises one triangle with snapped vertices X, Y (the target's
@@ -85,6 +119,9 @@ long ref_triangle(ref_target *t, const ref_shading *sh, const int32_t X[3],
  * (bilinear: exact weights, not rounded to 1/256; result not rounded). */
 void ref_sample(const mote_texture *tex, mote_wrap wu, mote_wrap wv, bool bilinear,
                 double u, double v, double out[3]);
+/* The same for the texel alpha (255 for textures without alpha). */
+double ref_sample_alpha(const mote_texture *tex, mote_wrap wu, mote_wrap wv, bool bilinear,
+                        double u, double v);
 
 /* ---- the whole pipeline ----------------------------------------------------- */
 

@@ -97,11 +97,13 @@ void io_render_scene(const mote_scene *s, uint8_t *rgba, int width, int height)
     mote_frame_desc frame;
     mote_scene_frame(s, (float)width / (float)height, &frame);
     TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
-    for (int i = 0; i < s->mesh_count; i++) {
-        mote_draw_desc d;
-        mote_scene_draw_desc(s, i, NULL, &d);
-        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &s->meshes[i], &d));
-    }
+    /* Babylon.js's order: opaque, alpha-tested, blended back to front */
+    int *order = malloc((size_t)(s->mesh_count > 0 ? s->mesh_count : 1) * sizeof *order);
+    TEST_ASSERT_NOT_NULL(order);
+    TEST_ASSERT_EQUAL_INT(s->mesh_count > 0 ? s->mesh_count : 0, mote_scene_draw_order(s, s->meshes, &frame.camera, order));
+    for (int k = 0; k < s->mesh_count; k++)
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_scene_draw(&dev, s, s->meshes, order[k], NULL));
     TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    free(order);
     free(depth);
 }

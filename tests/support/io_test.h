@@ -35,6 +35,23 @@
  * returns the allocations alive now, for a test to compare at its end. */
 long io_test_begin(void);
 
+/* The fixture of a loader's tests: live_before, the allocations alive
+ * when a test starts (to compare at its end), and msg, a loader message
+ * buffer emptied for each test; Unity's setUp and tearDown with failure
+ * injection off. At file scope, in a test file that needs no more. */
+#define IO_TEST_FIXTURE                                                  \
+    static long live_before;                                             \
+    static char msg[512];                                                \
+    void setUp(void)                                                     \
+    {                                                                    \
+        live_before = io_test_begin();                                   \
+        msg[0] = '\0';                                                   \
+    }                                                                    \
+    void tearDown(void)                                                  \
+    {                                                                    \
+        mote__io_set_alloc_failure_after(-1);                            \
+    }
+
 /* Loads a scene from JSON text with its textures in folder dir (NULL: no
  * folder, colours only), or fails the test with the loader's message. */
 void io_load_json_in(const char *json, const char *name, const char *dir, mote_scene *s);

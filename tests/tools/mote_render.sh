@@ -57,7 +57,7 @@ fi
 # file; with --allow-missing-textures the quad is drawn in the material's
 # red (no texture to modulate it), with the loader's warning.
 cat >"$tmp/missing.babylon" <<'JSON'
-{"materials":[{"id":"red","diffuse":[1,0,0],"diffuseTexture":{"name":"no-such-image.png"}}],
+{"materials":[{"id":"red","diffuse":[1,0,0],"specular":[0,0,0],"diffuseTexture":{"name":"no-such-image.png"}}],
  "cameras":[{"id":"c","position":[0,0,-3],"target":[0,0,0]}],
  "lights":[{"type":3,"id":"sky","direction":[0,0,-1],"groundColor":[1,1,1]}],
  "meshes":[{"id":"q","materialId":"red",
@@ -263,5 +263,16 @@ fails the_triangle_limit_should_be_named any "1936000 triangles in its 2000 mesh
     "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --size 160x120 --threads 1
 fails max_triangles_should_be_a_count any "\-\-max-triangles \"0\": expected a count" \
     "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --max-triangles 0
+
+# ---- threads --------------------------------------------------------------
+# The tiles on the pool's threads, the caller among them: the same bytes as
+# on the calling thread alone, and timed frames in between change nothing.
+name=threads_should_draw_the_bytes_of_one_thread
+if "$R" assets/demo.babylon -o "$tmp/t1.ppm" --size 200x150 --threads 1 >"$tmp/out" 2>&1 &&
+        "$R" assets/demo.babylon -o "$tmp/t3.ppm" --size 200x150 --threads 3 --frames 3 >>"$tmp/out" 2>&1; then
+    if cmp -s "$tmp/t1.ppm" "$tmp/t3.ppm"; then pass $name; else fail $name "the images differ"; fi
+else
+    fail $name "$(cat "$tmp/out")"
+fi
 
 summary

@@ -15,6 +15,10 @@
  * byte (colour, padding, depth) with the one-thread frame (parallel_for
  * NULL) of the same device.
  *
+ * The pthreads build also runs the tests on the library's own pool
+ * (mote_parallel_pool), whose claims synchronise the jobs they hand out:
+ * there it checks the pool itself, and the frames' bytes.
+ *
  * Built a second way (tsan.mk): with clang, -fopenmp and LLVM's Archer,
  * which tells ThreadSanitizer about the OpenMP runtime's synchronisation,
  * the same tests run through src/host/parallel.c's OpenMP loop
@@ -82,10 +86,11 @@ typedef enum order {
     ORDER_FRONT,                  /* a relaxed atomic counter from the front */
     ORDER_BACK,                   /* the same from the back */
     ORDER_OPENMP,                 /* mote_parallel_openmp (the TSAN_OPENMP build) */
+    ORDER_MOTE_POOL,              /* mote_parallel_pool */
     ORDER_COUNT
 } order;
 
-static const char *const order_names[ORDER_COUNT] = {"stride", "front", "back", "openmp"};
+static const char *const order_names[ORDER_COUNT] = {"stride", "front", "back", "openmp", "mote-pool"};
 
 typedef struct pool pool;
 
@@ -109,9 +114,8 @@ struct pool {
     int next;                     /* ORDER_FRONT/BACK: claims, relaxed */
     /* steps run, and steps whose jobs ran on two threads or more */
     long steps, shared_steps;
-#ifdef _OPENMP
-    int seen[MAX_THREADS];        /* ORDER_OPENMP: jobs per OpenMP thread in the step */
-#endif
+    int seen[MAX_THREADS];        /* ORDER_OPENMP, ORDER_MOTE_POOL: jobs per thread in the step */
+    mote_pool *mpool;             /* ORDER_MOTE_POOL */
 };
 
 static int claim(pool *p)
@@ -166,10 +170,40 @@ static void omp_job(void *arg, int index)
 }
 #endif
 
+/* ORDER_MOTE_POOL: the pool thread running a job (0: the caller), set as
+ * each wakes for a call; each thread counts its jobs in its own slot. */
+static __thread int mote_pool_thread;
+
+static void mote_pool_wake(void *user, int thread)
+{
+    (void)user;
+    mote_pool_thread = thread;
+}
+
+typedef struct mpool_step {
+    pool *p;
+    mote_task_fn fn;
+    void *arg;
+} mpool_step;
+
+static void mpool_job(void *arg, int index)
+{
+    mpool_step *s = (mpool_step *)arg;
+    s->p->seen[mote_pool_thread]++;
+    s->fn(s->arg, index);
+}
+
 /* The mote_parallel_for_fn: user is the pool. */
 static void pool_for(void *user, int count, mote_task_fn fn, void *arg)
 {
     pool *p = (pool *)user;
+    if (p->order == ORDER_MOTE_POOL) {
+        mpool_step s = {p, fn, arg};
+        memset(p->seen, 0, sizeof p->seen);
+        mote_parallel_pool(p->mpool, count, mpool_job, &s);
+        count_step(p, p->seen, MAX_THREADS);
+        return;
+    }
 #ifdef _OPENMP
     if (p->order == ORDER_OPENMP) {
         omp_step s = {p, fn, arg};
@@ -200,6 +234,11 @@ static void pool_start(pool *p, int threads, order o)
     p->order = o;
     if (o == ORDER_OPENMP)
         return;
+    if (o == ORDER_MOTE_POOL) {
+        mote_pool_desc d = {threads, mote_pool_wake, NULL};
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_pool_create(&d, &p->mpool, NULL, 0));
+        return;
+    }
     for (int k = 0; k < threads; k++) {
         worker *w = &p->w[k];
         w->p = p;
@@ -214,6 +253,10 @@ static void pool_stop(pool *p)
 {
     if (p->order == ORDER_OPENMP)
         return;
+    if (p->order == ORDER_MOTE_POOL) {
+        mote_pool_destroy(p->mpool);
+        return;
+    }
     p->quit = true;
     for (int k = 0; k < p->threads; k++)
         sem_post(&p->w[k].go);
@@ -233,7 +276,7 @@ typedef struct exec_spec {
 #ifdef _OPENMP
 #define EXECS(...) {{2, ORDER_OPENMP}, {3, ORDER_OPENMP}, {4, ORDER_OPENMP}}
 #else
-#define EXECS(...) {__VA_ARGS__}
+#define EXECS(...) {__VA_ARGS__, {2, ORDER_MOTE_POOL}, {3, ORDER_MOTE_POOL}}
 #endif
 
 /* ---- meshes and textures ------------------------------------------------ */

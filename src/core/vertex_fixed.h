@@ -1,0 +1,70 @@
+/*
+ * vertex_fixed.h - the integer vertex stage (MOTE_FIXED_VERTEX, see mote.h).
+ *
+ * draw.c builds a draw's context in float as always (matrices, bounds
+ * rejection, raster state), then hands the draw here when
+ * mote__fixed_handles says this stage can do all of it; the triangles come
+ * back through emit, snapped and in setup's units, as the float stage makes
+ * them. Number formats and error bounds: docs/accuracy.md.
+ */
+#ifndef MOTE_CORE_VERTEX_FIXED_H
+#define MOTE_CORE_VERTEX_FIXED_H
+
+#include "internal.h"
+
+#if MOTE_FIXED_VERTEX
+
+/* assemble.c: a triangle on to setup and the sink (its mote__emit), for
+ * the draw whose context is cx. A direct call, not a pointer: the stack
+ * bound (embedded/stack-usage.sh) follows it. */
+void mote__fixed_emit(void *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
+                      const mote__svert *const v[3]);
+
+/* assemble.c: whether triangle i misses the band being drawn (band bins,
+ * which the first band records through mote__fixed_emit). */
+bool mote__fixed_skip(void *cx, uint32_t i);
+
+/* What the float context of a draw gives this stage (draw.c's mote__ctx). */
+typedef struct mote__fixed_draw {
+    const float *mvp, *world;     /* column-major, camera-relative */
+    const float *nrm;             /* normal matrix, row-major 3x3 */
+    float uscale, vscale, uoff, voff;
+    bool lit, flat, cull_cw, cull_ccw;
+    const mote__raster_state *rs;
+    void *cx;                     /* mote__fixed_emit's */
+    uint32_t lights_off;          /* mote_draw_desc.lights_off */
+} mote__fixed_draw;
+
+/* Whether this stage draws the draw: triangles (points and wireframe stay
+ * on the float path), without vertex colours, specular highlights or fog,
+ * in a frame without spot lights or light ranges. A constant true in a build that leaves those out
+ * (the firmware profile), so that the float per-vertex code is not linked. */
+static inline bool mote__fixed_handles(const mote_device *dev, const mote_mesh *mesh, const mote_draw_desc *d)
+{
+    if (MOTE_ENABLE_LINES && (d->mode == MOTE_MODE_POINTS || d->mode == MOTE_MODE_WIREFRAME))
+        return false;
+    if (MOTE_ENABLE_VERTEX_COLORS && mesh->colors)
+        return false;
+    if (MOTE_ENABLE_SPECULAR && mesh->material.specular.r | mesh->material.specular.g | mesh->material.specular.b)
+        return false;
+    if (MOTE_ENABLE_FOG && dev->frame.fog.mode != MOTE_FOG_NONE && !d->no_fog)
+        return false;
+#if MOTE_ENABLE_LIGHT_FALLOFF
+    if (!d->unlit)
+        for (int i = 0; i < dev->frame.light_count && i < MOTE_MAX_LIGHTS; i++) {
+            const mote_light *l = &dev->frame.lights[i];
+            if (l->type == MOTE_LIGHT_SPOT || (l->type == MOTE_LIGHT_POINT && l->range > 0.0f))
+                return false;
+        }
+#else
+    (void)dev;
+#endif
+    return true;
+}
+
+/* Triangles [first, end) of the mesh through the integer stage. */
+void mote__fixed_triangles(mote_device *dev, const mote_mesh *mesh, const mote__fixed_draw *fd,
+                           uint32_t first, uint32_t end);
+
+#endif
+#endif
