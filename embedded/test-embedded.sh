@@ -61,8 +61,8 @@ for t in $targets; do
 done
 [ -n "$ready" ] || finish
 
-# A make of our own: not part of an outer make's job server.
-env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s --no-print-directory BUILD="$MOTE_BUILD" \
+# A make of our own (not part of an outer make's job server), on every core.
+env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s --no-print-directory -j"$(nproc 2>/dev/null || echo 1)" BUILD="$MOTE_BUILD" \
     fw-test-host insn-count-plugin $(for t in $ready; do echo "fw-test-$t"; done) || {
     fail firmware_should_build "building the firmware failed"
     finish

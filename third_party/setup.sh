@@ -7,6 +7,12 @@
 # Nothing is downloaded from anywhere else and nothing is committed.
 set -eu
 
+# A parallel make (-j) can start two of these at once: apt-get takes one.
+if [ -z "${MOTE_SETUP_LOCKED:-}" ] && command -v flock >/dev/null 2>&1; then
+    export MOTE_SETUP_LOCKED=1
+    exec flock "${TMPDIR:-/tmp}/mote-setup.lock" sh "$0" "$@"
+fi
+
 need=""
 cc=${CC:-cc}; cc=${cc%% *}
 if ! command -v "$cc" >/dev/null 2>&1; then

@@ -7,8 +7,9 @@
 
 FIXED_DIR   := $(BUILD)/fixed
 # The firmware's pixel loop too (MOTE_FIRMWARE_SPANS, span_fw.c; a size
-# build's default): test_spans holds it to the generic loop.
-FIXED_FLAG  := -DMOTE_FIXED_VERTEX=1 -DMOTE_FIRMWARE_SPANS=1
+# build's default), and no specialised loops, as in a size build:
+# test_spans holds it to the generic loop.
+FIXED_FLAG  := -DMOTE_FIXED_VERTEX=1 -DMOTE_FIRMWARE_SPANS=1 -DMOTE_SPECIALISE_SPANS=0
 FIXED_OBJ   := $(patsubst src/%.c,$(FIXED_DIR)/obj/%.o,$(CORE_SRC) $(IO_SRC))
 FIXED_LIB   := $(FIXED_DIR)/libmote.a
 FIXED_TESTS := core accuracy raster_rules clip stability formats_bands compact spans

@@ -5,7 +5,8 @@
 # every feature (the reference), run by
 # tests/options/run.sh as part of `make test`. The vector loops are left
 # out (MOTE_SIMD=0): they draw the scalar loops' bytes, and twelve copies
-# of them doubled the time these builds take.
+# of them doubled the time these builds take. So are span.c's specialised
+# loops (a minute of compiling each) except in the full and none builds.
 
 OPT_DIR      := $(BUILD)/tests/options
 OPT_VARIANTS := full lines binning bilinear subspan vertex_colors falloff orthographic emissive_map opacity_map \
@@ -31,7 +32,8 @@ OPT_BIN      := $(foreach v,$(OPT_VARIANTS),$(OPT_DIR)/test_options_$(v))
 $(OPT_DIR)/test_options_%: tests/options/test_options.c tests/support/scenes.c $(CORE_SRC) \
         $(BUILD)/tests/obj/unity.o $(wildcard include/mote/*.h src/core/*.h tests/support/*.h) | $(DEPS_OK)
 	@mkdir -p $(dir $@)
-	$(CC) $(TEST_CFLAGS) -DMOTE_SIMD=0 $(OPT_FLAGS.$*) tests/options/test_options.c tests/support/scenes.c \
+	$(CC) $(TEST_CFLAGS) -DMOTE_SIMD=0 $(if $(filter full none,$*),,-DMOTE_SPECIALISE_SPANS=0) \
+	    $(OPT_FLAGS.$*) tests/options/test_options.c tests/support/scenes.c \
 	    $(CORE_SRC) $(BUILD)/tests/obj/unity.o $(LDFLAGS) -lm -o $@
 
 test-build: $(OPT_BIN)

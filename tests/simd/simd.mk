@@ -10,4 +10,7 @@
 test-neon: | $(DEPS_OK)
 	@BUILD=$(BUILD) sh tests/run.sh tests/simd/neon.sh
 
+# Not in the sanitizer build (SAN=1): nothing of it is instrumented.
+ifneq ($(SAN),1)
 TEST_EXTRA += tests/simd/neon.sh
+endif
