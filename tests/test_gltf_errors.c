@@ -219,6 +219,46 @@ void node_trees_should_have_no_cycles_shared_children_or_bad_references(void)
     expect_json(json, MOTE_ERR_LIMIT, "more than 64 parents (MOTE_MAX_PARENTS)");
 }
 
+/* Two scenes, the second the file's default: the first shows one node,
+ * the second two (a node without a mesh is a hidden mesh). */
+void the_caller_should_choose_which_scene_to_load(void)
+{
+    static const char json[] = ASSET "\"scene\":1,\"nodes\":[{},{},{}],"
+                               "\"scenes\":[{\"nodes\":[0]},{\"nodes\":[1,2]}]}";
+    static const struct {
+        int choice;                 /* mote_limits.gltf_scene */
+        mote_result code;
+        int meshes;
+    } cases[] = {{0, MOTE_OK, 2}, {1, MOTE_OK, 1}, {2, MOTE_OK, 2}, {3, MOTE_ERR_RANGE, 0}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        mote_limits lim = mote_limits_default();
+        lim.gltf_scene = cases[i].choice;
+        mote_scene s;
+        mote_result r = mote_scene_load_memory(json, strlen(json), "two.gltf", NULL, &lim, &s, msg,
+                                               sizeof msg);
+        TEST_ASSERT_EQUAL_STRING(mote_result_string(cases[i].code), mote_result_string(r));
+        if (r == MOTE_OK) {
+            TEST_ASSERT_EQUAL_INT(cases[i].meshes, s.mesh_count);
+            mote_scene_free(&s);
+        } else {
+            TEST_ASSERT_NOT_NULL_MESSAGE(strstr(msg, "limits.gltf_scene: 3 asks for scenes[2], but "
+                                                     "the file has 2 scenes"), msg);
+            TEST_ASSERT_TRUE(scene_is_zeroed(&s));
+        }
+    }
+    /* a .babylon file holds one scene: a choice past it is warned */
+    static const char babylon[] = "{\"meshes\":[]}";
+    mote_limits lim = mote_limits_default();
+    lim.gltf_scene = 2;
+    mote_scene s;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_scene_load_memory(babylon, strlen(babylon), "one.babylon", NULL,
+                                                      &lim, &s, msg, sizeof msg));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(s.warning, "limits.gltf_scene 2: a .babylon file holds "
+                                                   "one scene"), s.warning);
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL(live_before, mote__io_live_allocations());
+}
+
 void primitives_should_name_what_is_wrong_with_them(void)
 {
     expect_json(ASSET BUF "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"

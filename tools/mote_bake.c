@@ -8,7 +8,7 @@
  *
  *   mote-bake SCENE -o scene.h [--format rgb565|rgba8888|grey8]
  *             [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]
- *             [--compact] [--normal-bits 8|16]
+ *             [--compact] [--normal-bits 8|16] [--scene I]
  *
  * Floats are written as C99 hexadecimal literals, so the baked scene is the
  * loaded one bit for bit. --size is the frame the camera's aspect is made
@@ -39,6 +39,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -71,13 +72,15 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: mote-bake SCENE -o OUT.h [--format rgb565|rgba8888|grey8]\n"
             "                 [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]\n"
-            "                 [--compact] [--normal-bits 8|16]\n"
+            "                 [--compact] [--normal-bits 8|16] [--scene I]\n"
             "Writes a C header with the scene's meshes, textures (in FORMAT, default\n"
             "rgb565), camera and lights as const mote structs (identifiers NAME_*,\n"
             "default scene) for a frame of WxH pixels (default 320x240), of at most\n"
             "N bytes (default %zu). --texture-size resamples every texture to WxH\n"
             "(a box filter). --compact writes int16 positions and uvs, int8 normals\n"
-            "(--normal-bits 16: int16) and 16-bit indices.\n", (size_t)DEFAULT_MAX_BYTES);
+            "(--normal-bits 16: int16) and 16-bit indices. --scene bakes a glTF file's\n"
+            "scene I, counted from 0 (default: the file's scene, else its first).\n",
+            (size_t)DEFAULT_MAX_BYTES);
 }
 
 /* Appends printf output to the header, up to b->max_bytes. */
@@ -834,6 +837,7 @@ int main(int argc, char **argv)
     size_t max_bytes = DEFAULT_MAX_BYTES;
     bool compact = false;
     int normal_bits = 8;
+    int gltf_scene = 0;           /* --scene I: I + 1; 0: the file's default */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         bool has_value = i + 1 < argc;
@@ -882,13 +886,23 @@ int main(int argc, char **argv)
                 return 2;
             }
             max_bytes = (size_t)m;
+        } else if (!strcmp(a, "--scene") && has_value) {
+            const char *v = argv[++i];
+            char *end;
+            errno = 0;
+            long k = strtol(v, &end, 10);
+            if (!isdigit((unsigned char)*v) || *end || errno || k >= INT_MAX) {
+                fprintf(stderr, "mote-bake: --scene wants a glTF scene's index from 0, got '%s'\n", v);
+                return 2;
+            }
+            gltf_scene = (int)k + 1;
         } else if (a[0] != '-' && !in) {
             in = a;
         } else {
             if (a[0] == '-' && !has_value && (!strcmp(a, "-o") || !strcmp(a, "--name")
                                               || !strcmp(a, "--format") || !strcmp(a, "--size")
                                               || !strcmp(a, "--texture-size") || !strcmp(a, "--max-bytes")
-                                              || !strcmp(a, "--normal-bits")))
+                                              || !strcmp(a, "--normal-bits") || !strcmp(a, "--scene")))
                 fprintf(stderr, "mote-bake: %s needs a value\n", a);
             else if (a[0] == '-')
                 fprintf(stderr, "mote-bake: unknown option %s\n", a);
@@ -911,6 +925,7 @@ int main(int argc, char **argv)
     /* textures that cannot fit in max_bytes are refused from their image
      * headers, before they are decoded */
     mote_limits limits = mote_limits_default();
+    limits.gltf_scene = gltf_scene;
     size_t texels = max_bytes / texel_chars(format);
     if (texels < limits.max_total_texture_bytes / 4)
         limits.max_total_texture_bytes = texels ? texels * 4 : 1;

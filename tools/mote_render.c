@@ -8,7 +8,7 @@
  *               [--perspective correct|affine|subspan] [--filter nearest|bilinear]
  *               [--mip none|triangle|pixel|trilinear]
  *               [--subpixel-bits N] [--full-clear] [--allow-missing-textures]
- *               [--near N] [--far F] [--max-triangles N] [--warnings|-v]
+ *               [--near N] [--far F] [--max-triangles N] [--scene I] [--warnings|-v]
  *
  * The device bins triangles into an arena and rasterises the tiles on a
  * pool of threads (mote_parallel_pool, the calling thread among them; with
@@ -59,6 +59,7 @@ typedef struct options {
     bool full_clear;              /* clear every tile, not only those drawn into */
     bool allow_missing_textures;  /* draw in the material's colour, warn */
     uint32_t max_triangles;       /* 0: the loader's default */
+    int gltf_scene;               /* --scene I: I + 1; 0: the file's default */
     float znear, zfar;            /* > 0: --near, --far */
     bool all_warnings;            /* --warnings: each on a line of its own */
 } options;
@@ -97,6 +98,8 @@ static void usage(FILE *out)
             "                          such a scene fails to load)\n"
             "  --max-triangles N       load scenes of up to N triangles, instances counted\n"
             "                          (default 1048576)\n"
+            "  --scene I               a glTF file's scene I, counted from 0 (default: the\n"
+            "                          file's scene, else its first)\n"
             "  --warnings, -v          print every warning of the loader, one a line (default:\n"
             "                          those that fit in a line, and how many more)\n"
             "  --help                  this text\n");
@@ -189,7 +192,7 @@ static int parse_args(int argc, char **argv, options *o)
     static const char *const valued[] = {"-o", "--size", "--mode", "--camera", "--fov", "--ortho",
                                          "--rotate", "--frames", "--threads", "--spin",
                                          "--perspective", "--filter", "--mip", "--max-triangles",
-                                         "--subpixel-bits", "--near", "--far", NULL};
+                                         "--subpixel-bits", "--near", "--far", "--scene", NULL};
 
     memset(o, 0, sizeof *o);
     o->width = 640;
@@ -285,6 +288,10 @@ static int parse_args(int argc, char **argv, options *o)
             if (!parse_int(v, 1, INT_MAX, &k))
                 return fail("--max-triangles \"%s\": expected a count from 1 to %d", v, INT_MAX);
             o->max_triangles = (uint32_t)k;
+        } else if (strcmp(a, "--scene") == 0) {
+            if (!parse_int(v, 0, INT_MAX - 1, &k))
+                return fail("--scene \"%s\": expected a scene's index from 0", v);
+            o->gltf_scene = k + 1;
         } else if (strcmp(a, "--subpixel-bits") == 0) {
             if (!parse_int(v, 4, 8, &o->subpixel_bits))
                 return fail("--subpixel-bits \"%s\": expected 4 to 8", v);
@@ -463,6 +470,7 @@ int main(int argc, char **argv)
     limits.missing_texture_is_warning = o.allow_missing_textures;
     if (o.max_triangles)
         limits.max_triangles = o.max_triangles;
+    limits.gltf_scene = o.gltf_scene;
     mote_result r = mote_scene_load(o.scene_path, &limits, &scene, message, sizeof message);
     if (r != MOTE_OK) {
         print_load_error(message[0] ? message : mote_result_string(r));

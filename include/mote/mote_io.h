@@ -49,6 +49,10 @@ typedef struct mote_limits {
     uint32_t max_triangles;
     bool allow_any_texture_path;  /* false: only inside the scene's folder */
     bool missing_texture_is_warning; /* true: render untextured, warn */
+    /* glTF: which of the file's scenes to load, counted from 1; 0 (the
+     * default): the file's `scene`, else its first. Past the last, the
+     * load fails (MOTE_ERR_RANGE); a .babylon file, one scene, warns. */
+    int gltf_scene;
 } mote_limits;
 
 mote_limits mote_limits_default(void);

@@ -124,6 +124,7 @@ mote_limits mote__io_limits(const mote_limits *limits)
     if (l.max_json_depth <= 0) l.max_json_depth = d.max_json_depth;
     if (l.max_json_bytes == 0) l.max_json_bytes = d.max_json_bytes;
     if (l.max_triangles == 0) l.max_triangles = d.max_triangles;
+    if (l.gltf_scene < 0) l.gltf_scene = 0;
     return l;
 }
 

@@ -150,6 +150,13 @@ mote_result mote__gltf_scene_nodes(mote__gltf *gl)
                               "%d)", (unsigned)s, scene_count);
         gl->scene = (int)s;
     }
+    const int chosen = gl->load->lim.gltf_scene;   /* counted from 1; 0: as above */
+    if (chosen > scene_count)
+        return mote__fail(gl->load, MOTE_ERR_RANGE, "limits.gltf_scene: %d asks for scenes[%d], "
+                          "but the file has %d scene%s", chosen, chosen - 1, scene_count,
+                          scene_count == 1 ? "" : "s");
+    if (chosen > 0)
+        gl->scene = chosen - 1;
     if (gl->scene < 0) {
         mote__warn(gl->load, "no scenes: nothing is drawn");
         return MOTE_OK;

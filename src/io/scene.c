@@ -200,8 +200,12 @@ static mote_result mote__scene_from_bytes(mote__loader *ld, const char *data, si
     const cJSON *gltf_version = mote__json_member(mote__json_member(root, "asset"), "version");
     if (gltf_version)
         r = mote__gltf_load_json(ld, root);
-    else
+    else {
+        if (ld->lim.gltf_scene > 1)
+            mote__warn(ld, "limits.gltf_scene %d: a .babylon file holds one scene, which is "
+                       "loaded", ld->lim.gltf_scene);
         r = mote__babylon_load(ld, root);
+    }
     cJSON_Delete(root);
     return r;
 }

@@ -26,6 +26,10 @@ fails size_past_int_should_be_refused 2 "--size wants WxH" "$B" "$scene" -o "$tm
 fails size_past_the_limit_should_be_refused 2 "--size wants WxH" "$B" "$scene" -o "$tmp/a.h" --size 4097x2
 fails a_missing_value_should_be_named 2 "--size needs a value" "$B" "$scene" -o "$tmp/a.h" --size
 fails an_unknown_option_should_be_named_as_unknown 2 "unknown option --bogus" "$B" "$scene" -o "$tmp/a.h" --bogus
+fails scene_should_be_an_index 2 "--scene wants a glTF scene's index" "$B" "$scene" -o "$tmp/a.h" --scene -1
+printf '{"asset":{"version":"2.0"},"scenes":[{"nodes":[]}]}' >"$tmp/one.gltf"
+fails a_scene_past_the_last_should_be_named 1 "limits.gltf_scene: 2 asks for scenes\[1\], but the file has 1 scene" \
+    "$B" "$tmp/one.gltf" -o "$tmp/a.h" --scene 1
 
 fails an_unwritable_output_should_say_why any "cannot create (a new file beside it): No such file or directory" \
     "$B" "$scene" -o "$tmp/no/such/folder.h"

@@ -264,6 +264,13 @@ fails the_triangle_limit_should_be_named any "1936000 triangles in its 2000 mesh
 fails max_triangles_should_be_a_count any "\-\-max-triangles \"0\": expected a count" \
     "$R" "$tmp/many.babylon" -o "$tmp/many.ppm" --max-triangles 0
 
+# ---- --scene ----------------------------------------------------------------
+printf '{"asset":{"version":"2.0"},"scenes":[{"nodes":[]},{"nodes":[]}]}' >"$tmp/two.gltf"
+fails a_scene_past_the_last_should_be_named any "limits.gltf_scene: 3 asks for scenes\[2\], but the file has 2 scenes" \
+    "$R" "$tmp/two.gltf" -o "$tmp/two.ppm" --scene 2
+fails scene_should_be_an_index any "\-\-scene \"x\": expected a scene's index from 0" \
+    "$R" "$tmp/two.gltf" -o "$tmp/two.ppm" --scene x
+
 # ---- threads --------------------------------------------------------------
 # The tiles on the pool's threads, the caller among them: the same bytes as
 # on the calling thread alone, and timed frames in between change nothing.
