@@ -1,9 +1,10 @@
 /*
- * mote-bake - turns a .babylon scene into a C header that firmware compiles
- * in: const vertex, vertex colour and index arrays, textures already in the
- * target pixel format, the meshes as mote_mesh (material.texture pointing at the baked
- * texture), which of them are drawn two-sided, the frame (camera, lights,
- * ambient) and the clear colour. The
+ * mote-bake - turns a .babylon or glTF scene into a C header that firmware
+ * compiles in: const vertex, vertex colour and index arrays, textures
+ * already in the target pixel format, the meshes as mote_mesh
+ * (material.texture pointing at the baked texture), each mesh's draw
+ * options and the order to draw them in, the frame (camera, lights,
+ * ambient, fog) and the clear colour. The
  * firmware then renders with no file system, no JSON and no heap.
  *
  *   mote-bake SCENE -o scene.h [--format rgb565|rgba8888|grey8]
@@ -527,6 +528,18 @@ static void write_mesh_flags(baker *b, const char *what, const char *comment, co
     put(b, "};\n\n");
 }
 
+/* A number per mesh as an array NAME_WHAT of TYPE */
+static void write_mesh_numbers(baker *b, const char *type, const char *what, const char *comment,
+                               const long long *values)
+{
+    const int n = b->scene->mesh_count;
+    put(b, "/* %s */\n", comment);
+    put(b, "static const %s %s_%s[%d] = {", type, b->name, what, n);
+    for (int i = 0; i < n; i++)
+        put(b, "%s%lld", i ? ", " : "", values[i]);
+    put(b, "};\n\n");
+}
+
 /* The scene's per-mesh draw modes as NAME_modes (all MOTE_MODE_DEFAULT,
  * triangles, when the scene has none) */
 static void write_mesh_modes(baker *b, const mote_mode *modes)
@@ -543,6 +556,43 @@ static void write_mesh_modes(baker *b, const mote_mode *modes)
         put(b, "%s%s", i ? ", " : "", names[m >= 0 && m < MOTE_MODE_COUNT ? m : 0]);
     }
     put(b, "};\n\n");
+}
+
+/* The draw options mote_scene_draw_desc and mote_scene_draw take from the
+ * scene, and the order to draw in for the baked camera (blended meshes
+ * back to front), so that firmware draws as mote_scene_draw would. */
+static void write_draw_options(baker *b, const mote_camera *camera)
+{
+    const mote_scene *s = b->scene;
+    const int n = s->mesh_count;
+    write_mesh_flags(b, "two_sided", "draw with cull = MOTE_CULL_NONE (backFaceCulling false)",
+                     s->two_sided);
+    write_mesh_flags(b, "unlit", "draw with unlit = true (disableLighting)", s->unlit);
+    write_mesh_modes(b, s->modes);
+    write_mesh_flags(b, "no_depth_write", "draw with no_depth_write = true (disableDepthWrite)",
+                     s->no_depth_write);
+    write_mesh_flags(b, "no_fog", "draw with no_fog = true (applyFog or fogEnabled false)", s->no_fog);
+    write_mesh_flags(b, "depth_pre_pass", "draw twice: with no_color_write = true, then with "
+                     "depth_less_equal = true (needDepthPrePass)", s->depth_pre_pass);
+    long long *values = malloc((size_t)n * sizeof *values);
+    int *order = malloc((size_t)n * sizeof *order);
+    if (!values || !order) {
+        b->out_of_memory = true;
+    } else {
+        for (int i = 0; i < n; i++)
+            values[i] = s->lights_off ? (long long)s->lights_off[i] : 0;
+        write_mesh_numbers(b, "uint32_t", "lights_off", "per mesh: draw with lights_off = this "
+                           "(a bit for each light that does not light it)", values);
+        if (mote_scene_draw_order(s, s->meshes, camera, order) != n)
+            b->out_of_memory = true;
+        for (int i = 0; i < n; i++)
+            values[i] = order[i];
+        write_mesh_numbers(b, "int", "draw_order", "the meshes in the order to draw them for the "
+                           "frame's camera: opaque, alpha-tested, then blended back to front",
+                           values);
+    }
+    free(values);
+    free(order);
 }
 
 static void write_frame(baker *b, const mote_frame_desc *fr)
@@ -658,6 +708,9 @@ static void bake(baker *b, int width, int height, const char *source)
     for (const char *c = b->name; *c && k < sizeof upper - 1; c++)
         upper[k++] = (char)toupper((unsigned char)*c);
     upper[k] = '\0';
+    mote_frame_desc frame;
+    memset(&frame, 0, sizeof frame);
+    mote_scene_frame(s, (float)width / (float)height, &frame);
 
     char *from = comment_text(source);
     if (!from) {
@@ -735,17 +788,10 @@ static void bake(baker *b, int width, int height, const char *source)
         for (int i = 0; i < s->mesh_count; i++)
             write_mesh(b, i);
         put(b, "};\n\n");
-        /* culling, lighting and modes are draw options, not mesh fields: the
-         * firmware reads these to draw a mesh as mote_scene_draw_desc would */
-        write_mesh_flags(b, "two_sided", "draw with cull = MOTE_CULL_NONE (backFaceCulling false)",
-                         s->two_sided);
-        write_mesh_flags(b, "unlit", "draw with unlit = true (disableLighting)", s->unlit);
-        write_mesh_modes(b, s->modes);
+        /* culling, lighting, modes, fog and the order are draw options, not
+         * mesh fields: the firmware reads these to draw as mote_scene_draw */
+        write_draw_options(b, &frame.camera);
     }
-
-    mote_frame_desc frame;
-    memset(&frame, 0, sizeof frame);
-    mote_scene_frame(s, (float)width / (float)height, &frame);
     write_frame(b, &frame);
     put(b, "static const mote_rgba %s_clear_color = {%u, %u, %u, %u};\n\n", b->name, s->clear_color.r,
             s->clear_color.g, s->clear_color.b, s->clear_color.a);

@@ -4,7 +4,9 @@
 # orthographic camera), from assets/cube.babylon (textured) in each
 # texture format and from gen_gltf's lines.gltf (points and lines), and
 # checks them against the same files loaded with mote_scene_load, mesh by
-# mesh and rendered; and the cube baked with --compact; run by `make test`.
+# mesh and rendered; the cube baked with --compact; and
+# tests/data/transparency.babylon and fog.babylon with their draw options
+# and order; run by `make test`.
 
 BAKE_TEST_DIR := $(BUILD)/tests/bake
 BAKE_SCENE    := tests/data/vertex_colors.babylon
@@ -40,13 +42,25 @@ $(BAKE_TEST_DIR)/lines.h: $(BUILD)/gltf/.ok $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
 	$(BIN)/mote-bake $(BAKE_LINES) -o $@ --name lines --format rgba8888 --size 64x48
 
+BAKE_GLASS    := tests/data/transparency.babylon
+BAKE_FOG      := tests/data/fog.babylon
+$(BAKE_TEST_DIR)/glass.h: $(BAKE_GLASS) $(BIN)/mote-bake
+	@mkdir -p $(dir $@)
+	$(BIN)/mote-bake $(BAKE_GLASS) -o $@ --name glass --format rgba8888 --size 64x48
+
+$(BAKE_TEST_DIR)/fogged.h: $(BAKE_FOG) $(BIN)/mote-bake
+	@mkdir -p $(dir $@)
+	$(BIN)/mote-bake $(BAKE_FOG) -o $@ --name fogged --format rgba8888 --size 64x48
+
 $(BAKE_TEST_DIR)/test_bake: tests/bake/test_bake.c $(BAKE_TEST_DIR)/baked.h $(BAKE_TEST_DIR)/ortho.h \
         $(BAKE_TEST_DIR)/baked_hidden.h $(BAKE_CUBES) $(BAKE_TEST_DIR)/cube_compact.h \
-        $(BAKE_TEST_DIR)/lines.h $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
+        $(BAKE_TEST_DIR)/lines.h $(BAKE_TEST_DIR)/glass.h $(BAKE_TEST_DIR)/fogged.h \
+        $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
 	$(CC) $(TEST_CFLAGS) -I$(BAKE_TEST_DIR) -DMOTE_BAKE_SCENE=\"$(CURDIR)/$(BAKE_SCENE)\" \
 	    -DMOTE_BAKE_CUBE=\"$(CURDIR)/$(BAKE_CUBE)\" \
 	    -DMOTE_BAKE_ORTHO=\"$(CURDIR)/$(BAKE_ORTHO)\" -DMOTE_BAKE_HIDDEN=\"$(CURDIR)/$(BAKE_HIDDEN)\" \
-	    -DMOTE_BAKE_LINES=\"$(CURDIR)/$(BAKE_LINES)\" $< \
+	    -DMOTE_BAKE_LINES=\"$(CURDIR)/$(BAKE_LINES)\" -DMOTE_BAKE_GLASS=\"$(CURDIR)/$(BAKE_GLASS)\" \
+	    -DMOTE_BAKE_FOG=\"$(CURDIR)/$(BAKE_FOG)\" $< \
 	    $(BUILD)/tests/obj/unity.o $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
 test-build: $(BAKE_TEST_DIR)/test_bake

@@ -8,8 +8,10 @@
  * whose disableLighting sign stays unlit; and a
  * scene seen by an orthographic camera (tests/data/ortho_camera.babylon),
  * baked as "ortho"; the textured assets/cube.babylon in each texture
- * format ("cube_rgb565"...); and gen_gltf's lines.gltf, points and lines
- * in their modes ("lines").
+ * format ("cube_rgb565"...); gen_gltf's lines.gltf, points and lines
+ * in their modes ("lines"); and tests/data/transparency.babylon and
+ * fog.babylon ("glass", "fogged"), whose draw options and order, drawn as
+ * firmware would, give mote_scene_draw's picture.
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -23,6 +25,8 @@
 #include "cube_grey8.h"
 #include "cube_compact.h"
 #include "lines.h"
+#include "glass.h"
+#include "fogged.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -381,6 +385,91 @@ void a_compact_bake_should_be_small_and_render_as_loaded(void)
     mote_scene_free(&cube);
 }
 
+/* A baked scene's draw options, as the header names them */
+typedef struct baked_options {
+    const bool *two_sided, *unlit, *no_depth_write, *no_fog, *depth_pre_pass;
+    const mote_mode *modes;
+    const uint32_t *lights_off;
+    const int *draw_order;
+} baked_options;
+#define BAKED_OPTIONS(name)                                                                     \
+    {name##_two_sided, name##_unlit,  name##_no_depth_write, name##_no_fog, name##_depth_pre_pass, \
+     name##_modes,     name##_lights_off, name##_draw_order}
+
+/* The baked options hold the loaded scene's, and the baked meshes drawn
+ * with them in their order, as firmware draws them (a pre-pass mesh
+ * twice), give the picture of the loaded scene drawn by mote_scene_draw
+ * in mote_scene_draw_order's order. */
+static void check_baked_draw_options(const char *path, const mote_mesh *meshes, int n,
+                                     const mote_frame_desc *frame_as_baked, baked_options o)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(path, NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(s.mesh_count, n);
+    mote_frame_desc frame;
+    mote_scene_frame(&s, (float)W / (float)H, &frame);
+    int order[64];
+    TEST_ASSERT_TRUE(n <= 64);
+    TEST_ASSERT_EQUAL(n, mote_scene_draw_order(&s, s.meshes, &frame.camera, order));
+    for (int i = 0; i < n; i++) {
+        TEST_ASSERT_EQUAL(s.no_depth_write && s.no_depth_write[i], o.no_depth_write[i]);
+        TEST_ASSERT_EQUAL(s.no_fog && s.no_fog[i], o.no_fog[i]);
+        TEST_ASSERT_EQUAL(s.depth_pre_pass && s.depth_pre_pass[i], o.depth_pre_pass[i]);
+        TEST_ASSERT_EQUAL_UINT32(s.lights_off ? s.lights_off[i] : 0, o.lights_off[i]);
+        TEST_ASSERT_EQUAL(order[i], o.draw_order[i]);
+    }
+    static uint8_t loaded[W * H * 4], baked[W * H * 4];
+    static uint32_t depth[W * H];
+    static mote_device dev;
+    mote_device_desc desc = {.width = W, .height = H, .color = loaded, .depth = depth,
+                             .clear_color = s.clear_color};
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &desc));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, &frame));
+    for (int k = 0; k < n; k++)
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_scene_draw(&dev, &s, s.meshes, order[k], NULL));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    desc.color = baked;
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_device_init(&dev, &desc));
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_begin(&dev, frame_as_baked));
+    for (int k = 0; k < n; k++) {
+        const int i = o.draw_order[k];
+        mote_draw_desc d = {.mode = o.modes[i], .unlit = o.unlit[i],
+                            .no_depth_write = o.no_depth_write[i], .no_fog = o.no_fog[i],
+                            .lights_off = o.lights_off[i]};
+        if (o.two_sided[i] || o.modes[i] == MOTE_MODE_WIREFRAME)
+            d.cull = MOTE_CULL_NONE;
+        if (o.depth_pre_pass[i]) {
+            mote_draw_desc depth_only = d;
+            depth_only.no_color_write = true;
+            TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[i], &depth_only));
+            d.depth_less_equal = true;
+        }
+        TEST_ASSERT_EQUAL(MOTE_OK, mote_draw(&dev, &meshes[i], &d));
+    }
+    TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
+    mote_scene_free(&s);
+    TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
+}
+
+/* Blended glass behind a cut-out fence: the order matters */
+void a_baked_transparent_scene_should_keep_its_draw_order(void)
+{
+    const baked_options o = BAKED_OPTIONS(glass);
+    check_baked_draw_options(MOTE_BAKE_GLASS, glass_meshes, GLASS_MESH_COUNT, &glass_frame, o);
+}
+
+/* Fog, and lights that light only some meshes */
+void a_baked_foggy_scene_should_keep_its_fog_and_light_lists(void)
+{
+    const baked_options o = BAKED_OPTIONS(fogged);
+    int lit_apart = 0;
+    for (int i = 0; i < FOGGED_MESH_COUNT; i++)
+        lit_apart += fogged_lights_off[i] != 0;
+    TEST_ASSERT_TRUE(lit_apart > 0);
+    TEST_ASSERT_TRUE(fogged_frame.fog.mode != MOTE_FOG_NONE);
+    check_baked_draw_options(MOTE_BAKE_FOG, fogged_meshes, FOGGED_MESH_COUNT, &fogged_frame, o);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -395,5 +484,7 @@ int main(void)
     RUN_TEST(a_textured_scene_baked_in_rgba8888_should_render_as_loaded);
     RUN_TEST(a_textured_scene_baked_in_grey8_should_render_as_loaded);
     RUN_TEST(a_compact_bake_should_be_small_and_render_as_loaded);
+    RUN_TEST(a_baked_transparent_scene_should_keep_its_draw_order);
+    RUN_TEST(a_baked_foggy_scene_should_keep_its_fog_and_light_lists);
     return UNITY_END();
 }

@@ -122,8 +122,9 @@ scene = {
              merge([quad([-6, 0, 6], [6, 0, 6], [6, 0, -6], [-6, 0, -6], [0, 1, 0])])),
         mesh("fence", "fence", [0, 0, 2.5],
              merge([quad([-4.5, 2, 0], [4.5, 2, 0], [4.5, 0, 0], [-4.5, 0, 0], [0, 0, -1], (3, 1))])),
-        mesh("red box", "red glass", [-0.7, 0.9, 0], box(1.8)),
+        # the nearer box first: drawn back to front, the blend reorders them
         mesh("blue box", "blue glass", [0.6, 0.7, -1.2], box(1.4)),
+        mesh("red box", "red glass", [-0.7, 0.9, 0], box(1.8)),
     ],
 }
 
