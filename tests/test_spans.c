@@ -129,7 +129,7 @@ static mote__raster_state generic_twin(const mote__raster_state *rs, uint8_t *ca
 void every_specialised_span_should_match_the_generic_span(void)
 {
 #if defined(MOTE_SPECIALISE_SPANS) && !MOTE_SPECIALISE_SPANS
-    TEST_IGNORE_MESSAGE("MOTE_SPECIALISE_SPANS is 0 in this build (make test runs it)");
+    TEST_IGNORE_MESSAGE("MOTE_SPECIALISE_SPANS is 0 in this build (the main build runs it)");
 #endif
     static uint8_t ca[W * H * 4], cb[W * H * 4];
     static uint32_t da[W * H], db[W * H];
