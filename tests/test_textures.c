@@ -692,7 +692,7 @@ void textures_should_draw_indices_past_a_short_palette_black(void)
 /* stb_image's 16-bit conversions size their buffers in int or unsigned
  * arithmetic: a grey 16-bit PNG of 23171 x 23171 asked for 4 channels
  * wraps 4 x 23171^2 x 2 to 194,632 bytes, written 4 GiB past (upstream
- * issue #1860). Whatever the limits allow, mote refuses such a size from
+ * nothings/stb#1860). Whatever the limits allow, mote refuses such a size from
  * the header. */
 void textures_should_refuse_more_pixels_than_stb_image_converts_safely(void)
 {

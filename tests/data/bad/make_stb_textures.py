@@ -105,7 +105,7 @@ write('stb_progressive_no_dc.jpg',
       SOI + dqt() + sof(0xc2, 8, 8, GREY) + dht(1, 0, ONE, [0]) + sos([(1, 0, 0)], 1, 63) +
       b'\0' * 2 + EOI)
 # DC differences of +32767 summed in an int and multiplied by a 16-bit
-# quantisation step of 65535: signed overflow (issue #1533)
+# quantisation step of 65535: signed overflow (nothings/stb#1533)
 write('stb_dc_overflow.jpg',
       SOI + dqt(0, 65535, True) + sof(0xc0, 8, 32, GREY) + dht(0, 0, ONE, [15]) +
       dht(1, 0, ONE, [0]) + sos([(1, 0, 0)]) + bits([(0, 1), (0x7fff, 15), (0, 1)] * 4) + EOI)
@@ -179,7 +179,7 @@ idat = struct.pack('>I', 0x7ffffff0) + b'IDAT' + zlib.compress(b'\0' * 17)
 write('stb_idat_2gib.png',
       b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', 4, 4, 8, 0, 0, 0, 0)) + idat)
 # a palette of 2 entries and indices 0..15: stb_image looks 2..15 up in an
-# uninitialised stack array (issue #1861); mote pads the palette with black
+# uninitialised stack array (nothings/stb#1861); mote pads the palette with black
 write('stb_short_palette.png',
       png(16, 1, 8, 3, zlib.compress(b'\0' + bytes(range(16))),
           chunk(b'PLTE', bytes([255, 0, 0, 0, 255, 0]))))
@@ -197,7 +197,7 @@ def bmp8(w, rows, palette, offset=None):
     return body + b'\0' * max(0, off - len(body)) + data
 
 
-# 2 palette entries, indices 0..15 (issue #1929): padded with black too
+# 2 palette entries, indices 0..15 (nothings/stb#1929): padded with black too
 write('stb_short_palette.bmp', bmp8(16, [range(16)], [(255, 0, 0), (0, 255, 0)]))
 # pixels at byte 10, inside the header: stb_image counts -11 palette
 # entries, fills none, and looks every index up
