@@ -178,6 +178,7 @@ int main(void)
     fw_puts(FW_LCD ? " RGB565_SWAPPED" : " RGB565");
     fw_put_uint(" depth16, bands of ", ROWS, 10);
     fw_put_uint(" rows, triangles drawn ", mote_device_stats(&fw_device)->triangles_drawn, 10);
+    fw_put_uint(", pixels written ", (uint32_t)mote_device_stats(&fw_device)->pixels_written, 10);
     fw_puts("\n");
     size_t buffers = mote_band_bytes(W, ROWS, FORMAT, MOTE_DEPTH_FORMAT_16);
 #if FW_LCD

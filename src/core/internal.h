@@ -282,10 +282,12 @@ typedef struct mote__svert {
 
 /* Cores without a 32x32->64-bit multiply (ARMv6-M: no UMULL), where C's
  * 64-bit product is a call into libgcc of some 40 instructions. */
+#ifndef MOTE__NO_UMULL
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_8M_BASE__)
 #define MOTE__NO_UMULL 1
 #else
 #define MOTE__NO_UMULL 0
+#endif
 #endif
 
 /* Cores with 32-bit registers, where each 64-bit operation is several
@@ -317,6 +319,14 @@ MOTE__SHARED uint64_t mote__umul64(uint32_t a, uint32_t b)
 #else
 uint64_t mote__umul64(uint32_t a, uint32_t b);
 #endif
+
+/* a b, exact, for b < 2^16: two 16x16-bit products (the pixel loops'
+ * steps from a plane's origin, which stay within the guard band) */
+static inline uint64_t mote__umul64_short(uint32_t a, uint32_t b)
+{
+    const uint32_t ll = (a & 0xffffu) * b, hl = (a >> 16) * b, lo = ll + (hl << 16);
+    return ((uint64_t)((hl >> 16) + (lo < ll)) << 32) | lo;
+}
 
 /* Number of significant bits of a 32-bit v (0 for 0). */
 static inline int mote__bitlen32(uint32_t v)

@@ -48,7 +48,10 @@ MOTE__PLANE_FN int64_t mote__plane_at(int64_t base, int64_t step, int32_t d)
 #else
     const uint32_t ad = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
     const uint64_t s = (uint64_t)step;
-    uint64_t p = mote__umul64((uint32_t)s, ad) + ((uint64_t)((uint32_t)(s >> 32) * ad) << 32);
+    /* without a long multiply, the usual step from the origin (within
+     * the guard band: below 2^16) takes two 16x16-bit products */
+    uint64_t p = MOTE__NO_UMULL && ad >> 16 == 0 ? mote__umul64_short((uint32_t)s, ad) : mote__umul64((uint32_t)s, ad);
+    p += (uint64_t)((uint32_t)(s >> 32) * ad) << 32;
     if (d < 0)
         p = 0u - p;
     return (int64_t)((uint64_t)base + p);

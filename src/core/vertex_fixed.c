@@ -253,10 +253,14 @@ static int32_t mote__fx_byte_shade(uint32_t c)
 #define MOTE__FX_PLIM ((1 << MOTE__FX_PBITS) + (1 << (MOTE__FX_PBITS - 2)))
 
 /* Rows of a matrix for out_r = b_r + floor(sum_k A_rk P_k / 2^pbits),
- * |A| < 2^27 and |b| < 2^28, so |out| < 2^29.5: each product is 64-bit
- * (four 16x16 ones on ARMv6-M), the sum exact. */
+ * |A| < 2^27 and |b| < 2^28, so |out| < 2^29.5: each product is 64-bit,
+ * the sum exact (on ARMv6-M from 16-bit halves, mote__fx_dot3_halves). */
 typedef struct mote__fx_rows {
     int32_t a[4][3], b[4];
+#if MOTE__NO_UMULL
+    int32_t ah[4][3];             /* a's 16-bit halves (mote__fx_dot3_halves) */
+    uint32_t al[4][3];
+#endif
     int pbits;
 } mote__fx_rows;
 
@@ -278,8 +282,13 @@ static void mote__fx_rows_init(mote__fx_rows *o, const float m[16], int n, int e
 {
     o->pbits = pbits;
     for (int r = 0; r < n; r++) {
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++) {
             o->a[r][k] = mote__fx_round_sat(m[k * 4 + r], e + pbits, (1 << 27) - 1);
+#if MOTE__NO_UMULL
+            o->al[r][k] = (uint32_t)o->a[r][k] & 0xffffu;
+            o->ah[r][k] = mote__floor_shift32(o->a[r][k], 16);
+#endif
+        }
         o->b[r] = mote__fx_round_sat(m[12 + r], e, (1 << 28) - 1);
     }
 }
@@ -292,10 +301,25 @@ static int mote__fx_scale(int ea, int eb, int pbits)
     return MOTE__MAX(MOTE__MIN(e, 120), -120);
 }
 
-static inline int32_t mote__fx_row(const mote__fx_rows *o, int r, const int32_t P[3])
+/* out_r for rows [0, n) */
+static inline void mote__fx_rows_apply(const mote__fx_rows *o, int n, const int32_t P[3], int32_t *out)
 {
-    int64_t v = mote__fx_smul(o->a[r][0], P[0]) + mote__fx_smul(o->a[r][1], P[1]) + mote__fx_smul(o->a[r][2], P[2]);
-    return o->b[r] + (int32_t)mote__floor_shift64(v, o->pbits);
+#if MOTE__NO_UMULL
+    int32_t ph[3];
+    uint32_t pl[3];
+    for (int k = 0; k < 3; k++) {
+        pl[k] = (uint32_t)P[k] & 0xffffu;
+        ph[k] = mote__floor_shift32(P[k], 16);
+    }
+    for (int r = 0; r < n; r++)
+        out[r] = o->b[r] + mote__fx_dot3_halves(o->ah[r], o->al[r], ph, pl, o->pbits);
+#else
+    for (int r = 0; r < n; r++) {
+        int64_t v = mote__fx_smul(o->a[r][0], P[0]) + mote__fx_smul(o->a[r][1], P[1])
+                  + mote__fx_smul(o->a[r][2], P[2]);
+        out[r] = o->b[r] + (int32_t)mote__floor_shift64(v, o->pbits);
+    }
+#endif
 }
 
 /* A light as the integer lighting reads it. */
@@ -501,8 +525,7 @@ static void mote__fx_transform(const mote__fx *f, uint32_t index, mote__fvert *v
     int32_t P[3];
     if (!mote__fx_position(f, index, P))
         return;
-    for (int r = 0; r < 4; r++)
-        v->c[r] = mote__fx_row(&f->clip, r, P);
+    mote__fx_rows_apply(&f->clip, 4, P, v->c);
     v->sv.texel[0] = v->sv.texel[1] = 0;
     if (f->textured) {
         const mote_compact *c = f->mesh->compact;
@@ -587,8 +610,7 @@ static void mote__fx_world(const mote__fx *f, uint32_t index, int32_t wp[3])
     int32_t P[3];
     if (!mote__fx_position(f, index, P))          /* a valid vertex's is */
         P[0] = P[1] = P[2] = 0;
-    for (int r = 0; r < 3; r++)
-        wp[r] = mote__fx_row(&f->world, r, P);
+    mote__fx_rows_apply(&f->world, 3, P, wp);
 }
 
 /* the vertex's unit world normal, Q14 */

@@ -12,6 +12,28 @@
 
 #include "internal.h"
 
+/* floor(sum_k a_k p_k / 2^s) modulo 2^32 (0 < s <= 32) from the 16-bit
+ * halves of each factor, x = xh 2^16 + xl with xl in [0, 2^16): four
+ * 16x16-bit products a term and 32-bit sums, where a 32x32->64-bit
+ * product is a call (ARMv6-M). Exact for |a_k| < 2^27 and |p_k| < 2^24:
+ * every partial sum then fits in 31 bits. */
+static inline int32_t mote__fx_dot3_halves(const int32_t ah[3], const uint32_t al[3], const int32_t ph[3],
+                                           const uint32_t pl[3], int s)
+{
+    /* in separate sums, which keep ARMv6-M's eight registers enough */
+    const int32_t hh = ah[0] * ph[0] + ah[1] * ph[1] + ah[2] * ph[2];
+    const int32_t mid = ah[0] * (int32_t)pl[0] + ah[1] * (int32_t)pl[1] + ah[2] * (int32_t)pl[2]
+                      + (int32_t)al[0] * ph[0] + (int32_t)al[1] * ph[1] + (int32_t)al[2] * ph[2];
+    const uint32_t l0 = al[0] * pl[0], l1 = al[1] * pl[1], l2 = al[2] * pl[2];
+    const uint32_t llo = (l0 & 0xffffu) + (l1 & 0xffffu) + (l2 & 0xffffu);
+    /* the sum is hh 2^32 + t 2^16 + (llo mod 2^16), the last below 2^16 */
+    const int32_t t = (int32_t)((uint32_t)mid + (l0 >> 16) + (l1 >> 16) + (l2 >> 16) + (llo >> 16));
+    const uint32_t high = (uint32_t)hh << (32 - s);
+    if (s >= 16)
+        return (int32_t)(high + (uint32_t)mote__floor_shift32(t, s - 16));
+    return (int32_t)(high + ((uint32_t)t << (16 - s)) + ((llo & 0xffffu) >> s));
+}
+
 #if MOTE_FIXED_VERTEX
 
 /* assemble.c: a triangle on to setup and the sink (its mote__emit), for
