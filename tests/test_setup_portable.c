@@ -6,15 +6,20 @@
  * (every microcontroller) take a portable one built from 32-bit halves,
  * which only the emulated-board check (make test-embedded) ran before.
  * This file compiles setup.c a second time with MOTE_NO_INT128 (and the
- * 32-bit cores' MOTE__CORE32 paths) and holds
- * the two to the same bits: the products on edge values, and whole
- * triangles from a pixel's sliver to the guard band's size, compared
+ * 32-bit cores' MOTE__CORE32 paths, with ARMv6-M's MOTE__NO_UMULL ones:
+ * products from 16-bit halves, the depth plane's division by a
+ * reciprocal) and holds
+ * the two to the same bits: the products on edge values, the division
+ * against C's at multiples of the divisor and either side of them, and
+ * whole triangles from a pixel's sliver to the guard band's size, compared
  * field by field with the library's setup.
  *
- * Thresholds: 0 differing products and 0 differing triangles over 300,000
+ * Thresholds: 0 differing products, 0 differing quotients (some 2,000
+ * divisors, 380 dividends each) and 0 differing triangles over 300,000
  * seeded random triangles (affine and perspective-correct).
  */
 #define MOTE__CORE32 1              /* before any header: setup's 32-bit paths too */
+#define MOTE__NO_UMULL 1            /* and ARMv6-M's: 16-bit products, divisions by a reciprocal */
 #include "core/internal.h"          /* declares the library's mote__setup */
 #define MOTE_NO_INT128 1
 #define mote__setup mote__setup_portable
@@ -59,6 +64,49 @@ static void test_portable_product_should_match_int128_on_edge_values(void)
 #else
     TEST_IGNORE_MESSAGE("no __int128 on this host: the library's setup is the portable one");
 #endif
+}
+
+/* floor(a / d), by C's truncating division */
+static int64_t floor_div(int64_t a, int64_t d)
+{
+    int64_t q = a / d;
+    return q - (a % d != 0 && (a < 0) != (d < 0));
+}
+
+/* the depth plane's division by a reciprocal (mote__div_by) against a
+ * division: quotients exact at multiples of the divisor and one either
+ * side (where its correction decides), at every divisor size and up to
+ * the dividends it accepts (|a| 2^s < 2^62), which it refuses beyond */
+static void test_reciprocal_division_should_match_a_division(void)
+{
+    const int64_t divisors[] = {1, 2, 3, 7, 255, 65535, 65536, 65537, 1000003, ((int64_t)1 << 30) - 1,
+                                (int64_t)1 << 30, ((int64_t)1 << 30) + 1, ((int64_t)1 << 31) - 1};
+    rng = tu_rng_seed(62);
+    int misses = 0, refused = 0, accepted_past = 0;
+    for (int i = 0; i < (int)(sizeof divisors / sizeof divisors[0]) + 2000; i++) {
+        const int64_t d = i < (int)(sizeof divisors / sizeof divisors[0]) ? divisors[i]
+                        : (int64_t)tu_rand_int(&rng, 1, ((int64_t)1 << 31) - 1);
+        const mote__divisor dv = mote__divisor_of((uint32_t)d);
+        const int64_t most = (((int64_t)1 << 62) - 1) >> dv.s;    /* the largest |a| accepted */
+        for (int j = 0; j < 64; j++) {
+            int64_t q = j < 8 ? (int64_t)j : j < 16 ? most / d - (j - 8) : tu_rand_int(&rng, 0, most / d);
+            for (int e = -1; e <= 1; e++)
+                for (int sign = -1; sign <= 1; sign += 2) {
+                    int64_t a = sign * (q * d + e), got;
+                    if (a > most || a < -most)
+                        continue;
+                    if (!mote__div_by(a, &dv, &got))
+                        refused++;
+                    else
+                        misses += got != floor_div(a, d);
+                }
+        }
+        int64_t got;
+        accepted_past += mote__div_by(most + 1, &dv, &got);
+    }
+    TEST_ASSERT_EQUAL_INT(0, refused);
+    TEST_ASSERT_EQUAL_INT(0, accepted_past);
+    TEST_ASSERT_EQUAL_INT(0, misses);
 }
 
 static void test_portable_setup_should_match_the_library_bit_for_bit(void)
@@ -120,6 +168,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_portable_product_should_match_int128_on_edge_values);
+    RUN_TEST(test_reciprocal_division_should_match_a_division);
     RUN_TEST(test_portable_setup_should_match_the_library_bit_for_bit);
     return UNITY_END();
 }

@@ -121,11 +121,73 @@ MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
     return q - ((r != 0) & ((r < 0) != (b < 0)));
 }
 
+/* A divisor d in [1, 2^31) as cores without a divide instruction
+ * (ARMv6-M, where MOTE__NO_UMULL is set) divide by it: m = d 2^s in
+ * [2^30, 2^31) and r = floor(2^61 / m), exact (recip.c). The depth
+ * plane's three divisions share one. Cores that divide in hardware gain
+ * nothing from it (Cortex-M4F, `make bench-embedded`). */
+typedef struct mote__divisor {
+    uint32_t m, r;
+    int s;
+} mote__divisor;
+
+#define MOTE__DIVIDE_BY_RECIP (MOTE__CORE32 && MOTE__NO_UMULL)
+
+#if MOTE__DIVIDE_BY_RECIP
+static mote__divisor mote__divisor_of(uint32_t d)
+{
+    mote__divisor v;
+    v.s = 31 - mote__bitlen32(d);
+    v.m = d << v.s;
+    v.r = mote__recip_lookup(v.m);
+    return v;
+}
+
+/* floor(a / d) by the divisor's reciprocal, where a 64-bit division is a
+ * libgcc routine (some 400 instructions on Cortex-M0+): with x = |a| 2^s
+ * below 2^62, floor(x r / 2^61) is floor(x / m) or up to two less (r is
+ * below 2^61 / m by under one), and the remainder corrects it; a
+ * negative a's floor is minus the ceiling. false when x would reach 2^62
+ * (the caller divides). */
+static bool mote__div_by(int64_t a, const mote__divisor *v, int64_t *out)
+{
+    const uint64_t u = a < 0 ? 0u - (uint64_t)a : (uint64_t)a;
+    const uint32_t ul = (uint32_t)u, uh = (uint32_t)(u >> 32);
+    const int s = v->s;           /* 0..30 */
+    if (uh >> (30 - s) != 0)
+        return false;
+    /* x in 32-bit halves: a variable 64-bit shift is a libgcc call too */
+    const uint32_t xl = ul << s, xh = s ? uh << s | ul >> (32 - s) : uh;
+    const uint64_t lo = mote__umul64(xl, v->r), hi = mote__umul64(xh, v->r);
+    uint32_t q = (uint32_t)((hi + (lo >> 32)) >> 29);
+    uint64_t rem = (((uint64_t)xh << 32) | xl) - mote__umul64(q, v->m);
+    while (rem >= v->m) {
+        q++;
+        rem -= v->m;
+    }
+    *out = a >= 0 ? (int64_t)q : -(int64_t)q - (rem != 0);
+    return true;
+}
+#endif
+
+/* floor(a / d) for d > 0; dv, when not NULL, is d's mote__divisor */
+static inline int64_t mote__depth_div(int64_t a, int64_t d, const mote__divisor *dv)
+{
+#if MOTE__DIVIDE_BY_RECIP
+    int64_t q;
+    if (dv && mote__div_by(a, dv, &q))
+        return q;
+#else
+    (void)dv;
+#endif
+    return mote__floor_div_pos(a, d);
+}
+
 /* round(n * 2^16 / d) for |n| < 2^58 and 0 < d < 2^47; beyond +-2^44
  * (16x the whole depth range per pixel: only slivers far thinner than a
  * pixel reach that) it sets *huge and returns 0, so that stepping can
  * never overflow. */
-static inline int64_t mote__scaled_div(int64_t n, int64_t d, bool *huge)
+static inline int64_t mote__scaled_div(int64_t n, int64_t d, const mote__divisor *dv, bool *huge)
 {
     const int64_t cap = (int64_t)1 << 44, big = (int64_t)1 << 46;
     int64_t q = 0;
@@ -137,7 +199,7 @@ static inline int64_t mote__scaled_div(int64_t n, int64_t d, bool *huge)
         }
         n -= q * d;               /* now in [0, d) */
     }
-    int64_t v = q * 65536 + mote__floor_div_pos(n * 65536 + (d >> 1), d);   /* d > 0 */
+    int64_t v = q * 65536 + mote__depth_div(n * 65536 + (d >> 1), d, dv);   /* d > 0 */
     if (v > cap || v < -cap) {
         *huge = true;
         return 0;
@@ -578,6 +640,15 @@ MOTE__SETUP_INLINE mote__setup_result mote__setup_f(mote__tri *t, const mote__ra
         int64_t dz1 = d[1] - d[0], dz2 = d[2] - d[0];
         int64_t zp[3];
         bool huge = false;
+        /* cores without a divide: a2's reciprocal for the three divisions */
+        const mote__divisor *dv = NULL;
+#if MOTE__DIVIDE_BY_RECIP
+        mote__divisor dv_own;
+        if (a2 < ((int64_t)1 << 31)) {
+            dv_own = mote__divisor_of((uint32_t)a2);
+            dv = &dv_own;
+        }
+#endif
 #if MOTE__SETUP_FAST
         /* |n| <= lim (2^46 - 1, or (2^28 - 1) d where d < 2^18) keeps
          * n 2^16 in range and the rounded quotient within 2^44: then
@@ -588,11 +659,11 @@ MOTE__SETUP_INLINE mote__setup_result mote__setup_f(mote__tri *t, const mote__ra
             int64_t n = ed[3 * j + 1] * dz1 + ed[3 * j + 2] * dz2;
 #if MOTE__SETUP_FAST
             if ((uint64_t)(n + lim) <= 2 * (uint64_t)lim) {
-                zp[j] = mote__floor_div_pos(n * 65536 + (a2 >> 1), a2);
+                zp[j] = mote__depth_div(n * 65536 + (a2 >> 1), a2, dv);
                 continue;
             }
 #endif
-            zp[j] = mote__scaled_div(n, a2, &huge);
+            zp[j] = mote__scaled_div(n, a2, dv, &huge);
         }
         /* such a sliver has no usable plane (a clamped gradient would be
          * wrong by far some pixels along it): it takes vertex 0's depth,
