@@ -59,11 +59,11 @@ static void mote__count_setup(mote_device *dev, mote__setup_result set, bool bla
 
 /* A band's early end for a triangle with no row of pixels in it (there is
  * no y test in setup): counted as setup would count it, which the first
- * band's figures, the frame's, need. Setup calls a triangle black when its
- * shade is zero at every vertex, or at its first when it is not Gouraud,
- * and then every vertex has the same shade (flat, or unlit): zero at all
- * nine is the same test. */
-static bool mote__band_rejects(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], const mote__svert *const v[3])
+ * band's figures, the frame's, need; whether it is black is counted by
+ * the band that holds its first row (mote__emit_setup), so that a band
+ * that does not draw the triangle needs no shade: the integer vertex
+ * stage lights its vertices only after this test. */
+static bool mote__band_rejects(mote__ctx *cx, const int32_t X[3], const int32_t Y[3])
 {
     mote_device *dev = cx->dev;
     const mote__rect *band = &cx->sink->region;
@@ -71,15 +71,14 @@ static bool mote__band_rejects(mote__ctx *cx, const int32_t X[3], const int32_t 
     mote__setup_result set = mote__setup_box(X, Y, dev->desc.subpixel_bits, dev->desc.width, dev->desc.height, box);
     if (set == MOTE__SETUP_DRAWN && box[3] >= band->y0 && box[1] < band->y1)
         return false;
-    int32_t shade = 0;
-    for (int k = 0; k < 3; k++)
-        shade |= v[k]->s[0] | v[k]->s[1] | v[k]->s[2];
-    mote__count_setup(dev, set, set == MOTE__SETUP_DRAWN && shade == 0);
+    mote__count_setup(dev, set, false);
     return true;
 }
 
-static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
-                       const mote__svert *const v[3])
+/* What every triangle meets before its shades are needed: its band range
+ * noted (band bins), the hook, and in band mode the band's test. true
+ * when that ends it. */
+static bool mote__emit_begin(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], const mote__svert *const v[3])
 {
     mote_device *dev = cx->dev;
     if (cx->band_range)
@@ -89,9 +88,15 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
         float w[3] = {v[0]->w, v[1]->w, v[2]->w};
         dev->desc.triangle_hook(dev->desc.triangle_hook_user, X, Y, z, w);
     }
+    return mote__band_mode(dev) && mote__band_rejects(cx, X, Y);
+}
+
+/* Setup, counted, and on to the sink. */
+static void mote__emit_setup(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
+                             const mote__svert *const v[3])
+{
+    mote_device *dev = cx->dev;
     mote__sink *sink = cx->sink;
-    if (mote__band_mode(dev) && mote__band_rejects(cx, X, Y, v))
-        return;
     mote__tri local, *t = MOTE_ENABLE_BINNING && sink->place ? sink->place(sink) : NULL;
     if (!t)
         t = &local;
@@ -99,13 +104,24 @@ static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], in
     const mote__raster_state *rs = MOTE_ENABLE_BINNING && sink->rs ? sink->rs : cx->rs;
     mote__setup_result set = mote__setup(t, rs, X, Y, area2, v, dev->desc.subpixel_bits,
                                          dev->desc.width, dev->desc.height);
-    mote__count_setup(dev, set, set == MOTE__SETUP_DRAWN && t->shade == MOTE__SHADE_BLACK);
+    bool black = set == MOTE__SETUP_DRAWN && t->shade == MOTE__SHADE_BLACK;
+    /* in bands, black once: by the band holding the triangle's first row */
+    if (black && mote__band_mode(dev))
+        black = t->ymin >= sink->region.y0;
+    mote__count_setup(dev, set, black);
     if (set != MOTE__SETUP_DRAWN)
         return;
     if (MOTE_ENABLE_BINNING && sink->triangle)
         sink->triangle(sink, t);
     else
         mote__raster_tri(t, sink->tg, sink->region, dev->desc.subpixel_bits);
+}
+
+static void mote__emit(mote__ctx *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
+                       const mote__svert *const v[3])
+{
+    if (!mote__emit_begin(cx, X, Y, v))
+        mote__emit_setup(cx, X, Y, area2, v);
 }
 
 
@@ -435,9 +451,14 @@ bool mote__fixed_skip(void *cx, uint32_t i)
     return c->band_bins && mote__band_skip(c, i);
 }
 
+bool mote__fixed_emit_begin(void *cx, const int32_t X[3], const int32_t Y[3], const mote__svert *const v[3])
+{
+    return mote__emit_begin((mote__ctx *)cx, X, Y, v);
+}
+
 void mote__fixed_emit(void *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
                       const mote__svert *const v[3])
 {
-    mote__emit((mote__ctx *)cx, X, Y, area2, v);
+    mote__emit_setup((mote__ctx *)cx, X, Y, area2, v);
 }
 #endif

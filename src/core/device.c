@@ -350,6 +350,7 @@ static mote_result mote__draw_bands(mote_device *dev)
             first_band = dev->stats;
         first_band.pixels_tested = dev->stats.pixels_tested;
         first_band.pixels_written = dev->stats.pixels_written;
+        first_band.triangles_black = dev->stats.triangles_black;   /* by each first row's band */
         dev->stats = first_band;
         bb->in_flight[d->color_back ? (k & 1) : 0] = true;
         d->flush(d->flush_user, y0, y1 - y0, tg.color, d->color_stride);

@@ -713,8 +713,9 @@ static void mote__fx_emit(const mote__fx *f, mote__fvert *const tv[3], const mot
                           const int32_t X[3], const int32_t Y[3])
 {
     int64_t area = mote__fx_facing(f, X, Y);
-    if (area == 0)
+    if (area == 0 || mote__fixed_emit_begin(f->fd->cx, X, Y, v))
         return;
+    /* lit only now: a band that does not draw the triangle needs no shade */
     for (int k = 0; k < 3; k++)
         mote__fx_finish(f, tv[k]);
     if (f->fd->flat && f->fd->lit) {

@@ -36,9 +36,11 @@ static inline int32_t mote__fx_dot3_halves(const int32_t ah[3], const uint32_t a
 
 #if MOTE_FIXED_VERTEX
 
-/* assemble.c: a triangle on to setup and the sink (its mote__emit), for
- * the draw whose context is cx. A direct call, not a pointer: the stack
- * bound (embedded/stack-usage.sh) follows it. */
+/* assemble.c: a triangle of the draw whose context is cx, in two steps
+ * (its mote__emit): what needs no shade (band range, hook, the band's
+ * test; true when that ends it), then setup and the sink. Direct calls,
+ * not pointers: the stack bound (embedded/stack-usage.sh) follows them. */
+bool mote__fixed_emit_begin(void *cx, const int32_t X[3], const int32_t Y[3], const mote__svert *const v[3]);
 void mote__fixed_emit(void *cx, const int32_t X[3], const int32_t Y[3], int64_t area2,
                       const mote__svert *const v[3]);
 
