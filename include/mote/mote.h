@@ -58,7 +58,7 @@
  *                   (twice the colour part with desc.color_back)
  *     band bins     mote_band_bins_bytes(height, band_height, triangles)
  *     device        sizeof(mote_device): mostly MOTE_MAX_DRAWS recorded draws
- *     stack         about 8.5 KB at worst on 32-bit cores, 5.4 KB of it the
+ *     stack         about 9 KB at worst on 32-bit cores, 5.5 KB of it the
  *                   vertex cache of MOTE_VERTEX_CACHE entries (`make cross`
  *                   prints the bound, embedded/stack-usage.sh)
  *
