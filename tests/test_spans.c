@@ -199,8 +199,8 @@ void every_specialised_span_should_match_the_generic_span(void)
 }
 
 /* The firmware's pixel loop (span_fw.c, MOTE_FIRMWARE_SPANS: the fixed
- * build's suites, tests/fixed/) against the generic one: Gouraud, nearest
- * RGB565 texels or none, RGB565 and its byte-swapped form, 16-bit depth,
+ * build's suites, tests/fixed/) against the generic one: Gouraud, flat and
+ * black triangles, nearest RGB565 texels or none, RGB565 and its byte-swapped form, 16-bit depth,
  * texel ranges narrow and wide, binned records. */
 void firmware_span_should_match_the_generic_span(void)
 {
@@ -215,7 +215,7 @@ void firmware_span_should_match_the_generic_span(void)
     for (int wide = 0; wide < 2; wide++)
     for (int fmt = 0; fmt < 2; fmt++)
     for (int texk = 0; texk < 2; texk++)
-    for (int sk = MOTE__SHADE_MONO; sk <= MOTE__SHADE_RGB; sk++) {
+    for (int sk = MOTE__SHADE_FLAT; sk <= MOTE__SHADE_BLACK; sk++) {
         const mote_format format = fmt ? MOTE_FORMAT_RGB565_SWAPPED : MOTE_FORMAT_RGB565;
         mote__raster_state rs = texture_state((mote__tex_kind)texk, &tex, MOTE_WRAP_REPEAT);
         rs.gouraud = true;

@@ -1210,7 +1210,8 @@ void mote__fill_select_isa(mote__raster_state *rs, mote_format format, mote_dept
     }
 #if MOTE_FIRMWARE_SPANS
     if (mote__fill_fw_fits(rs, format, depth_format))
-        rs->fill[MOTE__SHADE_MONO] = rs->fill[MOTE__SHADE_RGB] = mote__fill_firmware;
+        for (int s = MOTE__SHADE_FLAT; s <= MOTE__SHADE_BLACK; s++)
+            rs->fill[s] = mote__fill_firmware;
 #endif
     if (isa != MOTE__ISA_SCALAR)
         mote__simd_select(rs, format, depth_format, isa);

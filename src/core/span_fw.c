@@ -1,6 +1,7 @@
 /*
  * span_fw.c - the firmware's pixel loop (MOTE_FIRMWARE_SPANS): the draws a
- * firmware makes most, Gouraud-shaded, textured by nearest texels of a
+ * firmware makes most, Gouraud-shaded or flat (black included: the faces a
+ * light does not reach, with no ambient), textured by nearest texels of a
  * repeating power-of-two RGB565 texture or untextured, perspective-correct,
  * into RGB565 (or byte-swapped) with a 16-bit depth buffer tested and
  * written. The same bytes as span.c's generic loop, which stays the
@@ -29,7 +30,12 @@ void mote__fill_fw(const mote__tri *t, const mote__target *tg, mote__rect r, int
     if (!mote__walk_begin(&w, t, r, F))
         return;
     const mote__raster_state *rs = t->rs;
-    const bool tex = rs->tex != MOTE__TEX_NONE, rgb = t->shade == MOTE__SHADE_RGB;
+    /* a black triangle is filled untextured; a flat or black one has one
+     * shade, vertex 0's, and no shade planes */
+    const bool tex = rs->tex != MOTE__TEX_NONE && t->shade != MOTE__SHADE_BLACK, rgb = t->shade == MOTE__SHADE_RGB;
+    const bool flat = t->shade == MOTE__SHADE_FLAT || t->shade == MOTE__SHADE_BLACK;
+    const uint32_t flat_s[3] = {mote__clamp_shade((int32_t)t->a0[MOTE__A_R]), mote__clamp_shade((int32_t)t->a0[MOTE__A_G]),
+                                mote__clamp_shade((int32_t)t->a0[MOTE__A_B])};
     const bool swapped = tg->format == MOTE_FORMAT_RGB565_SWAPPED;
     const int d = t->q_drop, nsh = d + t->n_extra, k = t->rbits, ash = MOTE__MAX(k - 20 - t->n_extra, 0);
     const int tb = t->texel_bits, planes = mote__plane_count(t->shade, tex);
@@ -66,7 +72,8 @@ void mote__fill_fw(const mote__tri *t, const mote__target *tg, mote__rect r, int
                 const int32_t to = MOTE__MIN(bx + 64, x1), dx = bx - t->ox;
                 const uint32_t off = (uint32_t)(from - bx);
                 uint64_t z = (uint64_t)mote__plane_at(zr, t->zdx, dx + (int32_t)off);
-                uint32_t q = (uint32_t)mote__to32(mote__plane_at(qr, t->qdx, dx), d) + qdx * off;
+                /* Q only where a plane divides by it */
+                uint32_t q = flat && !tex ? 0u : (uint32_t)mote__to32(mote__plane_at(qr, t->qdx, dx), d) + qdx * off;
                 uint32_t n[MOTE__ATTRS] = {0};
                 for (int a = 0; a < planes; a++)
                     n[a] = (uint32_t)mote__to32(mote__plane_at(nrow[a], t->n[a][1], dx), nsh) + ndx[a] * off;
@@ -80,12 +87,14 @@ void mote__fill_fw(const mote__tri *t, const mote__target *tg, mote__rect r, int
                     if (depth >= zrow[x]) {
                         rejected++;
                     } else {
-                        const int32_t rr = mote__recip_k((int32_t)q, k);
-                        const uint32_t sr = mote__clamp_shade(mote__attr(a0[MOTE__A_R], (int32_t)n[MOTE__A_R], rr, ash));
-                        uint32_t sg = sr, sb = sr;
-                        if (rgb) {
-                            sg = mote__clamp_shade(mote__attr(a0[MOTE__A_G], (int32_t)n[MOTE__A_G], rr, ash));
-                            sb = mote__clamp_shade(mote__attr(a0[MOTE__A_B], (int32_t)n[MOTE__A_B], rr, ash));
+                        const int32_t rr = flat && !tex ? 0 : mote__recip_k((int32_t)q, k);
+                        uint32_t sr = flat_s[0], sg = flat_s[1], sb = flat_s[2];
+                        if (!flat) {
+                            sr = sg = sb = mote__clamp_shade(mote__attr(a0[MOTE__A_R], (int32_t)n[MOTE__A_R], rr, ash));
+                            if (rgb) {
+                                sg = mote__clamp_shade(mote__attr(a0[MOTE__A_G], (int32_t)n[MOTE__A_G], rr, ash));
+                                sb = mote__clamp_shade(mote__attr(a0[MOTE__A_B], (int32_t)n[MOTE__A_B], rr, ash));
+                            }
                         }
                         uint32_t c[3] = {255, 255, 255};
                         if (tex) {
