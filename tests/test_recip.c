@@ -1,7 +1,8 @@
 /*
  * test_recip.c - the reciprocals of src/core/recip.c: the table, the first
  * guess, the exact lookup over every mantissa, the pixel loop's reciprocal
- * by table against a division, and 1/w as mantissa and exponent.
+ * by table against a division, 1/w as mantissa and exponent, and division
+ * by a reciprocal (mote__divide).
  *
  * This file takes the table path of mote__recip_k (MOTE_RECIP_BY_TABLE 1),
  * which 32-bit cores run; 64-bit hosts divide, and the division is the
@@ -110,6 +111,45 @@ static void inverse_w_should_give_one_over_w(void)
     }
 }
 
+/* mote__divide against a division: exact at multiples of the divisor and
+ * one either side (where its correction decides), for divisors of every
+ * size up to 2^32 - 1 and quotients up to 2^32 - 2^8, which it must
+ * accept; quotients of 2^32 and more it must refuse. */
+static void divide_should_be_the_floor_and_refuse_past_32_bits(void)
+{
+    const uint32_t divisors[] = {1, 2, 3, 7, 255, 65535, 65536, 65537, 1000003, (1u << 31) - 1, 1u << 31,
+                                 (1u << 31) + 1, 0xfffffffeu, 0xffffffffu};
+    const int named = (int)(sizeof divisors / sizeof divisors[0]);
+    const uint64_t most = ((uint64_t)1 << 32) - 257;   /* the largest quotient it must accept */
+    tu_rng rng = tu_rng_seed(32);
+    int misses = 0, refused = 0, accepted_past = 0;
+    for (int i = 0; i < named + 4000; i++) {
+        const uint32_t d = i < named ? divisors[i] : (uint32_t)tu_rand_int(&rng, 1, 0xffffffffLL >> tu_rand_int(&rng, 0, 31));
+        mote__divisor dv;
+        mote__divisor_init(&dv, d);
+        for (int j = 0; j < 48; j++) {
+            const uint64_t q = j < 8 ? (uint64_t)j : j < 16 ? most - (uint64_t)(j - 8) : (uint64_t)tu_rand_int(&rng, 0, (int64_t)most);
+            for (int e = -1; e <= 1; e++) {
+                if ((q == 0 && e < 0) || (q == most && e > 0 && d == 1))
+                    continue;
+                const uint64_t n = q * d + (uint64_t)(int64_t)e;
+                uint32_t got;
+                if (!mote__divide(n, &dv, &got))
+                    refused++;
+                else
+                    misses += got != n / d;
+            }
+        }
+        uint32_t got;
+        const uint64_t past[] = {((uint64_t)1 << 32) * d, ((uint64_t)1 << 32) * d + d - 1, UINT64_MAX};
+        for (int k = 0; k < 3; k++)
+            accepted_past += past[k] / d >= ((uint64_t)1 << 32) && mote__divide(past[k], &dv, &got);
+    }
+    TEST_ASSERT_EQUAL_INT(0, refused);
+    TEST_ASSERT_EQUAL_INT(0, accepted_past);
+    TEST_ASSERT_EQUAL_INT(0, misses);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -118,5 +158,6 @@ int main(void)
     RUN_TEST(lookup_should_be_the_exact_floor_for_every_mantissa);
     RUN_TEST(recip_by_table_should_equal_recip_by_divide);
     RUN_TEST(inverse_w_should_give_one_over_w);
+    RUN_TEST(divide_should_be_the_floor_and_refuse_past_32_bits);
     return UNITY_END();
 }

@@ -74,27 +74,27 @@ static int64_t floor_div(int64_t a, int64_t d)
 }
 
 /* the depth plane's division by a reciprocal (mote__div_by) against a
- * division: quotients exact at multiples of the divisor and one either
- * side (where its correction decides), at every divisor size and up to
- * the dividends it accepts (|a| 2^s < 2^62), which it refuses beyond */
+ * division: floors of either sign exact at multiples of the divisor and
+ * one either side, at every divisor size, for quotients up to 2^32 - 2^8
+ * (it must accept them: recip.c's mote__divide is tested there), and
+ * refused from 2^32 */
 static void test_reciprocal_division_should_match_a_division(void)
 {
-    const int64_t divisors[] = {1, 2, 3, 7, 255, 65535, 65536, 65537, 1000003, ((int64_t)1 << 30) - 1,
-                                (int64_t)1 << 30, ((int64_t)1 << 30) + 1, ((int64_t)1 << 31) - 1};
+    const int64_t divisors[] = {1, 2, 3, 7, 255, 65535, 65536, 65537, 1000003, ((int64_t)1 << 31) - 1,
+                                (int64_t)1 << 31, ((int64_t)1 << 32) - 1};
+    const int named = (int)(sizeof divisors / sizeof divisors[0]);
+    const int64_t most = ((int64_t)1 << 32) - 258;   /* |quotient| + 1 <= 2^32 - 2^8: accepted */
     rng = tu_rng_seed(62);
     int misses = 0, refused = 0, accepted_past = 0;
-    for (int i = 0; i < (int)(sizeof divisors / sizeof divisors[0]) + 2000; i++) {
-        const int64_t d = i < (int)(sizeof divisors / sizeof divisors[0]) ? divisors[i]
-                        : (int64_t)tu_rand_int(&rng, 1, ((int64_t)1 << 31) - 1);
-        const mote__divisor dv = mote__divisor_of((uint32_t)d);
-        const int64_t most = (((int64_t)1 << 62) - 1) >> dv.s;    /* the largest |a| accepted */
+    for (int i = 0; i < named + 2000; i++) {
+        const int64_t d = i < named ? divisors[i] : tu_rand_int(&rng, 1, ((int64_t)1 << 32) - 1);
+        mote__divisor dv;
+        mote__divisor_init(&dv, (uint32_t)d);
         for (int j = 0; j < 64; j++) {
-            int64_t q = j < 8 ? (int64_t)j : j < 16 ? most / d - (j - 8) : tu_rand_int(&rng, 0, most / d);
+            int64_t q = j < 8 ? (int64_t)j : j < 16 ? most - (j - 8) : tu_rand_int(&rng, 0, most);
             for (int e = -1; e <= 1; e++)
                 for (int sign = -1; sign <= 1; sign += 2) {
                     int64_t a = sign * (q * d + e), got;
-                    if (a > most || a < -most)
-                        continue;
                     if (!mote__div_by(a, &dv, &got))
                         refused++;
                     else
@@ -102,7 +102,9 @@ static void test_reciprocal_division_should_match_a_division(void)
                 }
         }
         int64_t got;
-        accepted_past += mote__div_by(most + 1, &dv, &got);
+        if (d < ((int64_t)1 << 30))
+            accepted_past += mote__div_by(((int64_t)1 << 32) * d, &dv, &got)
+                           + mote__div_by(-((int64_t)1 << 32) * d - 1, &dv, &got);
     }
     TEST_ASSERT_EQUAL_INT(0, refused);
     TEST_ASSERT_EQUAL_INT(0, accepted_past);

@@ -368,6 +368,19 @@ uint32_t mote__recip_lookup(uint32_t m);
 /* out->qm and out->qe from w (> 0, finite; any other w gives some value) */
 void mote__inverse_w(float w, mote__svert *out);
 
+/* A divisor d > 0 with its reciprocal, for dividing where a 64-bit
+ * division is a libgcc routine (a few hundred instructions on a
+ * Cortex-M0+): r is within a few units of 2^63 / (d 2^sh), d 2^sh in
+ * [2^31, 2^32). */
+typedef struct mote__divisor {
+    uint32_t d, r;
+    int sh;
+} mote__divisor;
+void mote__divisor_init(mote__divisor *v, uint32_t d);
+/* floor(n / d), exact; false (divide another way) when it is 2^32 or
+ * more, and perhaps within 2^8 below that */
+bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q);
+
 /* Number of significant bits of v (0 for 0). */
 #if MOTE__SHARED_BODIES
 MOTE__SHARED int mote__bitlen(uint64_t v)

@@ -1,7 +1,9 @@
 /*
  * recip.c - reciprocals without a divide: the perspective weight 1/w of
- * each vertex (mote__inverse_w), and the pixel loop's reciprocal on cores
- * with no 64-bit divide (MOTE_RECIP_BY_TABLE, internal.h).
+ * each vertex (mote__inverse_w), the pixel loop's reciprocal on cores
+ * with no 64-bit divide (MOTE_RECIP_BY_TABLE, internal.h), and division
+ * by a reciprocal (mote__divide) for the integer vertex stage and, on
+ * cores without a divide instruction, setup's depth plane.
  *
  * mote__recip_lookup(m) is floor(2^61 / m) for m in [2^30, 2^31), exactly:
  * a first guess interpolated in a table of 257 values, one Newton step and
@@ -81,4 +83,50 @@ void mote__inverse_w(float w, mote__svert *out)
     const uint32_t bits = mote__float_bits(w);
     out->qm = mote__recip_lookup(((bits & 0x7fffffu) | 0x800000u) << 7);
     out->qe = (int32_t)((bits >> 23) & 0xff);
+}
+
+void mote__divisor_init(mote__divisor *v, uint32_t d)
+{
+    v->d = d;
+    v->sh = 32 - mote__bitlen32(d);
+    /* 2^63 / dn = 2 (2^61 / (dn / 2)), the exact reciprocal of dn's top
+     * 31 bits: within 4 units */
+    const uint32_t r = mote__recip_lookup((d << v->sh) >> 1);
+    v->r = r >> 31 ? 0xffffffffu : r << 1;
+}
+
+bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q)
+{
+    /* n / d = n 2^sh r / 2^63 from n's top 32 bits, n' = n / 2^k: within
+     * 2^-28 of it, so a few units, which the remainder then corrects. All
+     * shifts are of 32-bit halves: a variable 64-bit shift is a libgcc
+     * call on 32-bit cores. */
+    const uint32_t lo = (uint32_t)n, hi = (uint32_t)(n >> 32);
+    const int k = mote__bitlen32(hi), s = 63 - v->sh - k;
+    if (s < 0)
+        return false;
+    const uint32_t top = k == 0 ? lo : k == 32 ? hi : lo >> k | hi << (32 - k);
+    const uint64_t p = mote__umul64(top, v->r);
+    const uint32_t pl = (uint32_t)p, ph = (uint32_t)(p >> 32);
+    uint32_t e;
+    if (s >= 32) {
+        e = ph >> (s - 32);
+    } else {
+        if (ph >> s != 0)
+            return false;
+        e = s == 0 ? pl : pl >> s | ph << (32 - s);
+    }
+    uint64_t m = mote__umul64(e, v->d);
+    while (m > n) {
+        e--;
+        m -= v->d;
+    }
+    while (n - m >= v->d) {
+        if (e == 0xffffffffu)
+            return false;
+        e++;
+        m += v->d;
+    }
+    *q = e;
+    return true;
 }

@@ -121,51 +121,24 @@ MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
     return q - ((r != 0) & ((r < 0) != (b < 0)));
 }
 
-/* A divisor d in [1, 2^31) as cores without a divide instruction
- * (ARMv6-M, where MOTE__NO_UMULL is set) divide by it: m = d 2^s in
- * [2^30, 2^31) and r = floor(2^61 / m), exact (recip.c). The depth
- * plane's three divisions share one. Cores that divide in hardware gain
- * nothing from it (Cortex-M4F, `make bench-embedded`). */
-typedef struct mote__divisor {
-    uint32_t m, r;
-    int s;
-} mote__divisor;
-
+/* Cores without a divide instruction (ARMv6-M, where MOTE__NO_UMULL is
+ * set) divide the depth plane's three numerators by one reciprocal of
+ * twice the area (recip.c). Cores that divide in hardware gain nothing
+ * from it (Cortex-M4F, `make bench-embedded`). */
 #define MOTE__DIVIDE_BY_RECIP (MOTE__CORE32 && MOTE__NO_UMULL)
 
 #if MOTE__DIVIDE_BY_RECIP
-static mote__divisor mote__divisor_of(uint32_t d)
-{
-    mote__divisor v;
-    v.s = 31 - mote__bitlen32(d);
-    v.m = d << v.s;
-    v.r = mote__recip_lookup(v.m);
-    return v;
-}
-
 /* floor(a / d) by the divisor's reciprocal, where a 64-bit division is a
- * libgcc routine (some 400 instructions on Cortex-M0+): with x = |a| 2^s
- * below 2^62, floor(x r / 2^61) is floor(x / m) or up to two less (r is
- * below 2^61 / m by under one), and the remainder corrects it; a
- * negative a's floor is minus the ceiling. false when x would reach 2^62
- * (the caller divides). */
+ * libgcc routine (some 400 instructions on Cortex-M0+): a negative a's
+ * floor is minus the ceiling of |a| / d. false: the quotient is too
+ * large for it, the caller divides. */
 static bool mote__div_by(int64_t a, const mote__divisor *v, int64_t *out)
 {
     const uint64_t u = a < 0 ? 0u - (uint64_t)a : (uint64_t)a;
-    const uint32_t ul = (uint32_t)u, uh = (uint32_t)(u >> 32);
-    const int s = v->s;           /* 0..30 */
-    if (uh >> (30 - s) != 0)
+    uint32_t q;
+    if (!mote__divide(a < 0 ? u + v->d - 1 : u, v, &q))
         return false;
-    /* x in 32-bit halves: a variable 64-bit shift is a libgcc call too */
-    const uint32_t xl = ul << s, xh = s ? uh << s | ul >> (32 - s) : uh;
-    const uint64_t lo = mote__umul64(xl, v->r), hi = mote__umul64(xh, v->r);
-    uint32_t q = (uint32_t)((hi + (lo >> 32)) >> 29);
-    uint64_t rem = (((uint64_t)xh << 32) | xl) - mote__umul64(q, v->m);
-    while (rem >= v->m) {
-        q++;
-        rem -= v->m;
-    }
-    *out = a >= 0 ? (int64_t)q : -(int64_t)q - (rem != 0);
+    *out = a < 0 ? -(int64_t)q : (int64_t)q;
     return true;
 }
 #endif
@@ -644,8 +617,8 @@ MOTE__SETUP_INLINE mote__setup_result mote__setup_f(mote__tri *t, const mote__ra
         const mote__divisor *dv = NULL;
 #if MOTE__DIVIDE_BY_RECIP
         mote__divisor dv_own;
-        if (a2 < ((int64_t)1 << 31)) {
-            dv_own = mote__divisor_of((uint32_t)a2);
+        if (a2 < ((int64_t)1 << 32)) {
+            mote__divisor_init(&dv_own, (uint32_t)a2);
             dv = &dv_own;
         }
 #endif

@@ -62,47 +62,11 @@ static inline int32_t mote__fx_shl(int32_t x, int s)
     return (int32_t)((uint32_t)x << s);
 }
 
-/* A divisor d with its reciprocal: r within a few units of 2^63 / (d 2^sh),
- * d 2^sh in [2^31, 2^32). */
-typedef struct mote__fx_div {
-    uint32_t d, r;
-    int sh;
-} mote__fx_div;
-
-static void mote__fx_div_init(mote__fx_div *v, uint32_t d)   /* d > 0 */
+/* floor(n / d) (recip.c); false when it is 2^31 or more */
+static bool mote__fx_udiv(uint64_t n, const mote__divisor *v, uint32_t *out)
 {
-    v->d = d;
-    v->sh = mote__fx_clz(d);
-    /* 2^63 / dn = 2 (2^61 / (dn / 2)): recip.c's exact reciprocal of dn's
-     * top 31 bits, within 4 units */
-    const uint32_t r = mote__recip_lookup((d << v->sh) >> 1);
-    v->r = r >> 31 ? 0xffffffffu : r << 1;
-}
-
-/* floor(n / d); false when it is 2^31 or more */
-static bool mote__fx_udiv(uint64_t n, const mote__fx_div *v, uint32_t *out)
-{
-    /* n / d = n 2^sh r / 2^63, from n's top 32 bits: within a few units,
-     * then exact from the remainder */
-    uint32_t hi = (uint32_t)(n >> 32);
-    int k = hi ? 32 - mote__fx_clz(hi) : 0;
-    int s = 63 - v->sh - k;
-    if (s < 0)
-        return false;
-    uint64_t est = s < 64 ? mote__umul64((uint32_t)(n >> k), v->r) >> s : 0;
-    if (est >= ((uint64_t)1 << 31) + 64)
-        return false;
-    uint32_t q = (uint32_t)est;
-    uint64_t p = mote__umul64(q, v->d);
-    while (p > n) {
-        q--;
-        p -= v->d;
-    }
-    while (n - p >= v->d) {
-        q++;
-        p += v->d;
-    }
-    if (q >= 0x80000000u)
+    uint32_t q;
+    if (!mote__divide(n, v, &q) || q >> 31)
         return false;
     *out = q;
     return true;
@@ -110,7 +74,7 @@ static bool mote__fx_udiv(uint64_t n, const mote__fx_div *v, uint32_t *out)
 
 /* floor(a / d + 1/2) for a divisor d2 = 2 d: round half up, as the float
  * stage's snap rounds */
-static bool mote__fx_round_div(int64_t a, uint32_t d, const mote__fx_div *d2, int32_t *out)
+static bool mote__fx_round_div(int64_t a, uint32_t d, const mote__divisor *d2, int32_t *out)
 {
     int64_t num = 2 * a + (int64_t)d;
     uint32_t q;
@@ -340,7 +304,7 @@ typedef struct mote__fx {
     int32_t width, height;        /* the device's */
     int F;
     int32_t hw, hh, lim;          /* snap: half the size in sub-pixels, the limit */
-    mote__fx_div wdiv, hdiv;      /* width, height (clipping onto the guard band) */
+    mote__divisor wdiv, hdiv;     /* width, height (clipping onto the guard band) */
     int ep;                       /* positions: P = round(p 2^ep) - C */
     int pbits;                    /* P's bits: MOTE__FX_PBITS, or 15 for a compact mesh */
     int32_t C[3];
@@ -428,8 +392,8 @@ static bool mote__fx_project(const mote__fx *f, const int32_t c[4], int32_t *X, 
     if (c[3] <= 0)
         return false;
     uint32_t w = (uint32_t)c[3];
-    mote__fx_div w2;
-    mote__fx_div_init(&w2, 2 * w);
+    mote__divisor w2;
+    mote__divisor_init(&w2, 2 * w);
     int32_t qx, qy;
     if (!mote__fx_round_div(mote__fx_smul(c[0], f->hw), w, &w2, &qx)
         || !mote__fx_round_div(mote__fx_smul(-c[1], f->hh), w, &w2, &qy))
@@ -673,7 +637,7 @@ static int64_t mote__fx_facing(const mote__fx *f, const int32_t X[3], const int3
 /* floor(s / 3) */
 static int32_t mote__fx_third(int64_t s)
 {
-    static const mote__fx_div three = {3, 0xaaaaaaabu, 30};   /* 2^63 / 3 2^30, rounded up */
+    static const mote__divisor three = {3, 0xaaaaaaabu, 30};   /* 2^63 / 3 2^30, rounded up */
     uint32_t q = 0;
     if (s >= 0) {
         mote__fx_udiv((uint64_t)s, &three, &q);
@@ -756,8 +720,8 @@ static void mote__fx_intersect(const mote__fx *f, const mote__fx_cvert *a, const
         num >>= 1;
         den >>= 1;
     }
-    mote__fx_div dv;
-    mote__fx_div_init(&dv, (uint32_t)den);
+    mote__divisor dv;
+    mote__divisor_init(&dv, (uint32_t)den);
     uint32_t t = 0;
     mote__fx_udiv(num << 30, &dv, &t);            /* <= 2^30 */
     for (int k = 0; k < 4; k++)
@@ -976,8 +940,8 @@ void mote__fixed_triangles(mote_device *dev, const mote_mesh *mesh, const mote__
     f.hw = f.width << (f.F - 1);
     f.hh = f.height << (f.F - 1);
     f.lim = (int32_t)1 << (MOTE_GUARD_BITS + 1 + f.F);
-    mote__fx_div_init(&f.wdiv, (uint32_t)f.width);
-    mote__fx_div_init(&f.hdiv, (uint32_t)f.height);
+    mote__divisor_init(&f.wdiv, (uint32_t)f.width);
+    mote__divisor_init(&f.hdiv, (uint32_t)f.height);
 
     /* positions, then the clip rows with them folded in */
     f.pbits = MOTE__FX_PBITS;
