@@ -376,7 +376,8 @@ typedef struct mote__divisor {
     uint32_t d, r;
     int sh;
 } mote__divisor;
-void mote__divisor_init(mote__divisor *v, uint32_t d);
+/* returns the reciprocal it took: floor(2^61 / m), m = d 2^sh / 2 */
+uint32_t mote__divisor_init(mote__divisor *v, uint32_t d);
 /* floor(n / d), exact; false (divide another way) when it is 2^32 or
  * more, and perhaps within 2^8 below that */
 bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q);

@@ -85,7 +85,7 @@ void mote__inverse_w(float w, mote__svert *out)
     out->qe = (int32_t)((bits >> 23) & 0xff);
 }
 
-void mote__divisor_init(mote__divisor *v, uint32_t d)
+uint32_t mote__divisor_init(mote__divisor *v, uint32_t d)
 {
     v->d = d;
     v->sh = 32 - mote__bitlen32(d);
@@ -93,6 +93,7 @@ void mote__divisor_init(mote__divisor *v, uint32_t d)
      * 31 bits: within 4 units */
     const uint32_t r = mote__recip_lookup((d << v->sh) >> 1);
     v->r = r >> 31 ? 0xffffffffu : r << 1;
+    return r;
 }
 
 bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q)

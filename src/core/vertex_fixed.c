@@ -220,11 +220,13 @@ static int32_t mote__fx_byte_shade(uint32_t c)
  * |A| < 2^27 and |b| < 2^28, so |out| < 2^29.5: each product is 64-bit,
  * the sum exact (on ARMv6-M from 16-bit halves, mote__fx_dot3_halves). */
 typedef struct mote__fx_rows {
-    int32_t a[4][3], b[4];
 #if MOTE__NO_UMULL
-    int32_t ah[4][3];             /* a's 16-bit halves (mote__fx_dot3_halves) */
+    int32_t ah[4][3];             /* A's 16-bit halves (mote__fx_dot3_halves) */
     uint32_t al[4][3];
+#else
+    int32_t a[4][3];
 #endif
+    int32_t b[4];
     int pbits;
 } mote__fx_rows;
 
@@ -247,10 +249,12 @@ static void mote__fx_rows_init(mote__fx_rows *o, const float m[16], int n, int e
     o->pbits = pbits;
     for (int r = 0; r < n; r++) {
         for (int k = 0; k < 3; k++) {
-            o->a[r][k] = mote__fx_round_sat(m[k * 4 + r], e + pbits, (1 << 27) - 1);
+            const int32_t a = mote__fx_round_sat(m[k * 4 + r], e + pbits, (1 << 27) - 1);
 #if MOTE__NO_UMULL
-            o->al[r][k] = (uint32_t)o->a[r][k] & 0xffffu;
-            o->ah[r][k] = mote__floor_shift32(o->a[r][k], 16);
+            o->al[r][k] = (uint32_t)a & 0xffffu;
+            o->ah[r][k] = mote__floor_shift32(a, 16);
+#else
+            o->a[r][k] = a;
 #endif
         }
         o->b[r] = mote__fx_round_sat(m[12 + r], e, (1 << 28) - 1);
@@ -393,7 +397,11 @@ static bool mote__fx_project(const mote__fx *f, const int32_t c[4], int32_t *X, 
         return false;
     uint32_t w = (uint32_t)c[3];
     mote__divisor w2;
-    mote__divisor_init(&w2, 2 * w);
+    /* setup's 1/w (mote__svert.qm, qe) from all of w's bits: with
+     * m = 2 w 2^sh / 2 = w 2^sh in [2^30, 2^31), w 2^-eo is
+     * 1/w = (2^61 / m) 2^(eo + sh - 61), the reciprocal 2w's divisor took */
+    sv->qm = mote__divisor_init(&w2, 2 * w);
+    sv->qe = 157 - f->eo - w2.sh;
     int32_t qx, qy;
     if (!mote__fx_round_div(mote__fx_smul(c[0], f->hw), w, &w2, &qx)
         || !mote__fx_round_div(mote__fx_smul(-c[1], f->hh), w, &w2, &qy))
@@ -415,11 +423,6 @@ static bool mote__fx_project(const mote__fx *f, const int32_t c[4], int32_t *X, 
      * there, none per vertex otherwise */
     sv->depth = f->dev->desc.triangle_hook ? (float)z / (float)MOTE__DEPTH_MAX : 0.0f;
     sv->w = f->dev->desc.triangle_hook ? mote__fx_to_float(w, f->eo) : 0.0f;
-    /* setup's 1/w (mote__svert.qm, qe) from all of w's bits: w 2^-eo with
-     * m = w 2^s in [2^30, 2^31) is 1/w = (2^61 / m) 2^(eo + s - 61) */
-    const int s = mote__fx_clz(w) - 1;
-    sv->qm = mote__recip_lookup(w << s);
-    sv->qe = 157 - f->eo - s;
     return true;
 }
 
