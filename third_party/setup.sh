@@ -2,7 +2,9 @@
 # Installs what mote builds against, from Debian packages, when missing:
 #   a C compiler (gcc, when $CC, cc by default, is not found) and the C
 #   library's headers (libc6-dev, which gcc only recommends), pkg-config,
-#   cglm (libcglm-dev), cJSON (libcjson-dev), stb (libstb-dev).
+#   cglm (libcglm-dev), cJSON (libcjson-dev), stb (libstb-dev), and
+#   meshoptimizer (libmeshoptimizer-dev, for mote-bake; it has no
+#   pkg-config file: its header is looked for).
 # Extra packages can be asked for with MOTE_EXTRA_PACKAGES="pkg ...".
 # Nothing is downloaded from anywhere else and nothing is committed.
 set -eu
@@ -19,6 +21,7 @@ if ! command -v "$cc" >/dev/null 2>&1; then
     case $cc in *clang*) need="$need clang" ;; *) need="$need gcc" ;; esac
 fi
 [ -f /usr/include/stdio.h ] || need="$need libc6-dev"
+[ -f /usr/include/meshoptimizer.h ] || need="$need libmeshoptimizer-dev"
 command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 for pair in cglm:libcglm-dev libcjson:libcjson-dev stb:libstb-dev; do
     mod=${pair%%:*}; pkg=${pair#*:}

@@ -9,11 +9,18 @@
  *
  *   mote-bake SCENE -o scene.h [--format rgb565|rgba8888|grey8]
  *             [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]
- *             [--compact] [--normal-bits 8|16] [--scene I]
+ *             [--compact] [--normal-bits 8|16] [--scene I] [--keep-order]
  *
- * Floats are written as C99 hexadecimal literals, so the baked scene is the
- * loaded one bit for bit. --size is the frame the camera's aspect is made
- * for (default 320x240); the header repeats it as NAME_WIDTH/NAME_HEIGHT.
+ * Floats are written as C99 hexadecimal literals, so the baked values are
+ * the loaded ones bit for bit. Each mesh's triangles, and its vertices
+ * where no other index array shares them, are reordered by meshoptimizer
+ * so that the firmware's direct-mapped vertex cache transforms fewer
+ * vertices (the header's comment above each mesh says how many); a mesh
+ * it would not help keeps the file's order, as do points, lines and
+ * meshes without indices. --keep-order keeps the file's order throughout,
+ * so that the baked scene is the loaded one bit for bit. --size is the
+ * frame the camera's aspect is made for (default 320x240); the header
+ * repeats it as NAME_WIDTH/NAME_HEIGHT.
  * A mesh with levels of detail is baked at the level chosen for the baked
  * camera (the others hidden), with a warning: the header has no camera
  * of its own to choose by. --texture-size resamples every texture to WxH
@@ -38,6 +45,8 @@
 #include <mote/mote.h>
 #include <mote/mote_io.h>
 
+#include <meshoptimizer.h>
+
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
@@ -60,12 +69,17 @@ typedef struct baker {
     mote_format format;           /* of the baked textures */
     int texture_width, texture_height; /* --texture-size; 0: as loaded */
     const mote_scene *scene;
+    const mote_mesh *meshes;      /* written: the scene's, or copies with reordered arrays */
     int *texture_slot;            /* per scene texture: index in the baked array, or -1 */
     int *vertex_array;            /* per mesh: which vertices array it uses, or -1 */
     int *index_array;             /* per mesh: which indices array it uses, or -1 */
     int *color_array;             /* per mesh: which colors array it uses, or -1 */
     bool compact;                 /* --compact */
     int normal_bits;              /* --normal-bits: 8 or 16 */
+    /* per mesh whose triangles were reordered: the vertices a direct-mapped
+     * cache of 32 and of 16 entries transforms, in the file's order and
+     * after (0: not reordered) */
+    uint32_t (*transforms)[4];
 } baker;
 
 static void usage(FILE *out)
@@ -73,14 +87,16 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: mote-bake SCENE -o OUT.h [--format rgb565|rgba8888|grey8]\n"
             "                 [--name NAME] [--size WxH] [--texture-size WxH] [--max-bytes N]\n"
-            "                 [--compact] [--normal-bits 8|16] [--scene I]\n"
+            "                 [--compact] [--normal-bits 8|16] [--scene I] [--keep-order]\n"
             "Writes a C header with the scene's meshes, textures (in FORMAT, default\n"
             "rgb565), camera and lights as const mote structs (identifiers NAME_*,\n"
             "default scene) for a frame of WxH pixels (default 320x240), of at most\n"
             "N bytes (default %zu). --texture-size resamples every texture to WxH\n"
             "(a box filter). --compact writes int16 positions and uvs, int8 normals\n"
             "(--normal-bits 16: int16) and 16-bit indices. --scene bakes a glTF file's\n"
-            "scene I, counted from 0 (default: the file's scene, else its first).\n",
+            "scene I, counted from 0 (default: the file's scene, else its first).\n"
+            "Triangles and vertices are reordered for the firmware's vertex cache;\n"
+            "--keep-order keeps the file's order.\n",
             (size_t)DEFAULT_MAX_BYTES);
 }
 
@@ -409,7 +425,7 @@ static void write_compact_vertices(baker *b, const mote_mesh *m, int array)
  * fit, its indices in 16 bits. */
 static void write_compact(baker *b, int i)
 {
-    const mote_mesh *m = &b->scene->meshes[i];
+    const mote_mesh *m = &b->meshes[i];
     int va = b->vertex_array[i], ia = b->index_array[i];
     put(b, "static const mote_compact %s_compact%d = {\n    .positions = %s_positions%d,\n"
            "    .normals%d = %s_normals%d,\n    .uvs = %s_uvs%d,\n", b->name, i, b->name, va,
@@ -446,10 +462,17 @@ static void write_indices(baker *b, const mote_mesh *m, int array)
 static void write_mesh(baker *b, int i)
 {
     const mote_scene *s = b->scene;
-    const mote_mesh *m = &s->meshes[i];
+    const mote_mesh *m = &b->meshes[i];   /* a copy: its parent is the scene's mesh */
     const mote_material *mat = &m->material;
     char buf[40];
     const bool compact = b->vertex_array[i] >= 0 && compactable(b, m);
+    const uint32_t *tr = b->transforms[i];
+    if (tr[1]) {
+        const double tris = (double)(m->index_count / 3);
+        put(b, "    /* vertex cache: %.2f -> %.2f transforms a triangle (direct-mapped, 32 entries: "
+               "%u -> %u vertices; 16 entries: %u -> %u) */\n", tr[0] / tris, tr[1] / tris,
+            (unsigned)tr[0], (unsigned)tr[1], (unsigned)tr[2], (unsigned)tr[3]);
+    }
     put(b, "    { /* %d */\n", i);
     if (compact)
         put(b, "        .compact = &%s_compact%d,\n", b->name, i);
@@ -574,7 +597,8 @@ static void write_draw_options(baker *b, const mote_camera *camera)
     write_mesh_flags(b, "no_fog", "draw with no_fog = true (applyFog or fogEnabled false)", s->no_fog);
     write_mesh_flags(b, "depth_pre_pass", "draw twice: with no_color_write = true, then with "
                      "depth_less_equal = true (needDepthPrePass)", s->depth_pre_pass);
-    long long *values = malloc((size_t)n * sizeof *values);
+    /* calloc: under -fsanitize GCC warns that malloc's values may be read unset */
+    long long *values = calloc((size_t)n, sizeof *values);
     int *order = malloc((size_t)n * sizeof *order);
     if (!values || !order) {
         b->out_of_memory = true;
@@ -658,17 +682,17 @@ static const void *mesh_array(const mote_mesh *m, array_kind kind, uint32_t *cou
 
 /* Meshes split from one file share vertex, colour and index arrays: bake
  * each array once. Returns the number of distinct arrays. */
-static int share_arrays(const mote_scene *s, int *which, array_kind kind)
+static int share_arrays(const mote_mesh *meshes, int mesh_count, int *which, array_kind kind)
 {
     int n = 0;
-    for (int i = 0; i < s->mesh_count; i++) {
+    for (int i = 0; i < mesh_count; i++) {
         uint32_t count, cj;
-        const void *p = mesh_array(&s->meshes[i], kind, &count);
+        const void *p = mesh_array(&meshes[i], kind, &count);
         which[i] = -1;
         if (!p || count == 0)
             continue;
         for (int j = 0; j < i && which[i] < 0; j++) {
-            const void *q = mesh_array(&s->meshes[j], kind, &cj);
+            const void *q = mesh_array(&meshes[j], kind, &cj);
             if (q == p && cj == count)
                 which[i] = which[j];
         }
@@ -676,6 +700,203 @@ static int share_arrays(const mote_scene *s, int *which, array_kind kind)
             which[i] = n++;
     }
     return n;
+}
+
+/* The vertices a direct-mapped vertex cache of `entries` (a power of two,
+ * at most 32) transforms drawing these indices, as the core's integer
+ * vertex stage keeps it (vertex_fixed.c): slot index & (entries - 1),
+ * empty at the start of a draw. */
+static uint32_t cache_transforms(const uint32_t *indices, uint32_t count, uint32_t entries)
+{
+    uint32_t tag[32], n = 0;
+    for (uint32_t k = 0; k < entries; k++)
+        tag[k] = UINT32_MAX;
+    for (uint32_t i = 0; i < count; i++) {
+        uint32_t *t = &tag[indices[i] & (entries - 1)];
+        if (*t != indices[i]) {
+            *t = indices[i];
+            n++;
+        }
+    }
+    return n;
+}
+
+/* The meshes a header is written from: copies of the scene's, pointing
+ * at the scene's arrays or at reordered ones owned here. */
+typedef struct reordered {
+    mote_mesh *meshes;
+    void **owned;                 /* the arrays allocated for them */
+    int owned_count;
+    uint32_t (*transforms)[4];    /* baker.transforms */
+} reordered;
+
+static void *own(reordered *r, size_t bytes)
+{
+    void *p = malloc(bytes ? bytes : 1);
+    if (p)
+        r->owned[r->owned_count++] = p;
+    return p;
+}
+
+static void reordered_free(reordered *r)
+{
+    for (int k = 0; k < r->owned_count; k++)
+        free(r->owned[k]);
+    free(r->owned);
+    free(r->meshes);
+    free(r->transforms);
+}
+
+/* meshoptimizer does not check its allocations: stop here rather than
+ * let it write through NULL */
+static void *meshopt_alloc(size_t bytes)
+{
+    void *p = malloc(bytes);
+    if (!p) {
+        fprintf(stderr, "mote-bake: out of memory (in meshoptimizer)\n");
+        exit(1);
+    }
+    return p;
+}
+
+/* Whether mesh i is drawn as triangles from indices, all within its
+ * vertices (else it keeps the file's order, with a warning when an index
+ * is past them). */
+static bool reorderable(const mote_scene *s, int i)
+{
+    const mote_mesh *m = &s->meshes[i];
+    if (!m->vertices || !m->indices || m->vertex_count == 0 || m->index_count < 3 || m->compact)
+        return false;
+    if (s->modes && (s->modes[i] == MOTE_MODE_POINTS || s->modes[i] == MOTE_MODE_WIREFRAME))
+        return false;
+    for (uint32_t k = 0; k < m->index_count; k++)
+        if (m->indices[k] >= m->vertex_count) {
+            fprintf(stderr, "mote-bake: warning: mesh %d: index %u is past its %u vertices: its "
+                            "triangles keep the file's order\n", i, (unsigned)m->indices[k],
+                    (unsigned)m->vertex_count);
+            return false;
+        }
+    return true;
+}
+
+/* Copies of the scene's meshes into r; unless keep_order, each (vertex
+ * array, index array) pair drawn as triangles reordered for the
+ * firmware's vertex cache: the triangles by meshoptimizer's cache
+ * optimiser, then, where no other index array or mesh uses the vertex
+ * array, the vertices (and their colours) numbered in order of first use,
+ * so that a direct-mapped cache behaves as a FIFO. Instances keep sharing
+ * the arrays. A pair that a 32-entry cache would not draw with fewer
+ * transforms (a small mesh, a grid already in rows) keeps the file's
+ * order. False when out of memory. */
+static bool reorder(const mote_scene *s, bool keep_order, reordered *r)
+{
+    const int n = s->mesh_count;
+    const size_t nn = (size_t)(n > 0 ? n : 1);
+    r->meshes = malloc(nn * sizeof *r->meshes);
+    r->owned = calloc(3 * nn, sizeof *r->owned);
+    r->transforms = calloc(nn, sizeof *r->transforms);
+    int *va = malloc(nn * sizeof *va), *ia = malloc(nn * sizeof *ia), *first = malloc(nn * sizeof *first);
+    bool *ok = calloc(nn, sizeof *ok), *done = calloc(nn, sizeof *done), *solo = calloc(nn, sizeof *solo);
+    uint32_t *order = NULL, *remap = NULL;
+    bool fine = false;
+    if (!r->meshes || !r->owned || !r->transforms || !va || !ia || !first || !ok || !done || !solo)
+        goto out;
+    if (n > 0)
+        memcpy(r->meshes, s->meshes, (size_t)n * sizeof *r->meshes);
+    if (keep_order) {
+        fine = true;
+        goto out;
+    }
+    meshopt_setAllocator(meshopt_alloc, free);
+    const int nv = share_arrays(s->meshes, n, va, ARRAY_VERTICES);
+    share_arrays(s->meshes, n, ia, ARRAY_INDICES);
+    for (int a = 0; a < nv; a++) {
+        first[a] = -1;
+        solo[a] = true;
+    }
+    /* a vertex array is renumbered only when one index array alone uses
+     * it, and only as triangles */
+    for (int i = 0; i < n; i++) {
+        ok[i] = va[i] >= 0 && ia[i] >= 0 && reorderable(s, i);
+        if (va[i] < 0)
+            continue;
+        if (first[va[i]] < 0)
+            first[va[i]] = i;
+        const int f = first[va[i]];
+        if (!ok[i] || !ok[f] || ia[i] != ia[f])
+            solo[va[i]] = false;
+    }
+    for (int f = 0; f < n; f++) {
+        if (!ok[f] || done[f])
+            continue;
+        const mote_mesh *m = &s->meshes[f];
+        const uint32_t vc = m->vertex_count, ic = m->index_count, k = ic / 3 * 3;
+        uint32_t *indices = own(r, ic * sizeof *indices);
+        mote_vertex *vertices = solo[va[f]] ? own(r, vc * sizeof *vertices) : NULL;
+        order = malloc(ic * sizeof *order);
+        if (!indices || !order || (solo[va[f]] && !vertices))
+            goto out;
+        /* the indices past the last whole triangle (drawn by none) stay last */
+        meshopt_optimizeVertexCache(order, m->indices, k, vc);
+        memcpy(order + k, m->indices + k, (ic - k) * sizeof *order);
+        if (vertices) {
+            remap = malloc(vc * sizeof *remap);
+            if (!remap)
+                goto out;
+            size_t used = meshopt_optimizeVertexFetchRemap(remap, order, k, vc);
+            /* vertices no triangle uses after the others, in the file's
+             * order: the header keeps every vertex */
+            for (uint32_t v = 0; v < vc; v++)
+                if (remap[v] == ~0u)
+                    remap[v] = (unsigned)used++;
+            meshopt_remapIndexBuffer(indices, order, ic, remap);
+            meshopt_remapVertexBuffer(vertices, m->vertices, vc, sizeof *vertices, remap);
+        } else {
+            memcpy(indices, order, ic * sizeof *indices);
+        }
+        const uint32_t t[4] = {cache_transforms(m->indices, k, 32), cache_transforms(indices, k, 32),
+                               cache_transforms(m->indices, k, 16), cache_transforms(indices, k, 16)};
+        for (int i = f; i < n; i++) {
+            if (!ok[i] || va[i] != va[f] || ia[i] != ia[f])
+                continue;
+            done[i] = true;
+            if (t[1] >= t[0])
+                continue;
+            memcpy(r->transforms[i], t, sizeof t);
+            r->meshes[i].indices = indices;
+            if (!vertices)
+                continue;
+            r->meshes[i].vertices = vertices;
+            const mote_rgba *colors = s->meshes[i].colors;
+            if (colors) {
+                r->meshes[i].colors = NULL;
+                for (int j = f; j < i && !r->meshes[i].colors; j++)
+                    if (done[j] && va[j] == va[f] && s->meshes[j].colors == colors)
+                        r->meshes[i].colors = r->meshes[j].colors;
+                if (!r->meshes[i].colors) {
+                    mote_rgba *c = own(r, vc * sizeof *c);
+                    if (!c)
+                        goto out;
+                    meshopt_remapVertexBuffer(c, colors, vc, sizeof *c, remap);
+                    r->meshes[i].colors = c;
+                }
+            }
+        }
+        free(order);
+        free(remap);
+        order = remap = NULL;
+    }
+    fine = true;
+out:
+    free(order);
+    free(remap);
+    free(va);
+    free(ia);
+    free(first);
+    free(ok);
+    free(done);
+    free(solo);
+    return fine;
 }
 
 /* s as text for a comment: printable ASCII but '*' (no end of the
@@ -756,32 +977,33 @@ static void bake(baker *b, int width, int height, const char *source)
         put(b, "};\n\n");
     }
 
-    int nv = share_arrays(s, b->vertex_array, ARRAY_VERTICES);
-    int ni = share_arrays(s, b->index_array, ARRAY_INDICES);
-    int nc = share_arrays(s, b->color_array, ARRAY_COLORS);
+    const mote_mesh *meshes = b->meshes;
+    int nv = share_arrays(meshes, s->mesh_count, b->vertex_array, ARRAY_VERTICES);
+    int ni = share_arrays(meshes, s->mesh_count, b->index_array, ARRAY_INDICES);
+    int nc = share_arrays(meshes, s->mesh_count, b->color_array, ARRAY_COLORS);
     for (int a = 0; a < nv; a++)
         for (int i = 0; i < s->mesh_count; i++)
             if (b->vertex_array[i] == a) {
-                if (compactable(b, &s->meshes[i]))
-                    write_compact_vertices(b, &s->meshes[i], a);
+                if (compactable(b, &meshes[i]))
+                    write_compact_vertices(b, &meshes[i], a);
                 else
-                    write_vertices(b, &s->meshes[i], a);
+                    write_vertices(b, &meshes[i], a);
                 break;
             }
     for (int a = 0; a < nc; a++)
         for (int i = 0; i < s->mesh_count; i++)
             if (b->color_array[i] == a) {
-                write_colors(b, &s->meshes[i], a);
+                write_colors(b, &meshes[i], a);
                 break;
             }
     for (int a = 0; a < ni; a++)
         for (int i = 0; i < s->mesh_count; i++)
             if (b->index_array[i] == a) {
-                write_indices(b, &s->meshes[i], a);
+                write_indices(b, &meshes[i], a);
                 break;
             }
     for (int i = 0; i < s->mesh_count; i++)
-        if (b->vertex_array[i] >= 0 && compactable(b, &s->meshes[i]))
+        if (b->vertex_array[i] >= 0 && compactable(b, &meshes[i]))
             write_compact(b, i);
     if (s->mesh_count > 0) {
         put(b, "static const mote_mesh %s_meshes[%d] = {\n", b->name, s->mesh_count);
@@ -881,7 +1103,7 @@ int main(int argc, char **argv)
     mote_format format = MOTE_FORMAT_RGB565;
     int width = 320, height = 240, texture_width = 0, texture_height = 0;
     size_t max_bytes = DEFAULT_MAX_BYTES;
-    bool compact = false;
+    bool compact = false, keep_order = false;
     int normal_bits = 8;
     int gltf_scene = 0;           /* --scene I: I + 1; 0: the file's default */
     for (int i = 1; i < argc; i++) {
@@ -915,6 +1137,8 @@ int main(int argc, char **argv)
             }
         } else if (!strcmp(a, "--compact")) {
             compact = true;
+        } else if (!strcmp(a, "--keep-order")) {
+            keep_order = true;
         } else if (!strcmp(a, "--normal-bits") && has_value) {
             const char *v = argv[++i];
             if (strcmp(v, "8") && strcmp(v, "16")) {
@@ -1026,10 +1250,13 @@ int main(int argc, char **argv)
     int status = 1;
     size_t n = (size_t)(scene.mesh_count > 0 ? scene.mesh_count : 1);
     size_t nt = (size_t)(scene.texture_count > 0 ? scene.texture_count : 1);
+    reordered meshes = {NULL, NULL, 0, NULL};
+    const bool reordered_ok = reorder(&scene, keep_order, &meshes);
     baker b = {NULL, 0, 0, max_bytes, false, false, name, format, texture_width, texture_height, &scene,
-               calloc(nt, sizeof(int)),
-               calloc(n, sizeof(int)), calloc(n, sizeof(int)), calloc(n, sizeof(int)), compact, normal_bits};
-    if (b.texture_slot && b.vertex_array && b.index_array && b.color_array)
+               meshes.meshes, calloc(nt, sizeof(int)),
+               calloc(n, sizeof(int)), calloc(n, sizeof(int)), calloc(n, sizeof(int)), compact, normal_bits,
+               meshes.transforms};
+    if (reordered_ok && b.texture_slot && b.vertex_array && b.index_array && b.color_array)
         bake(&b, width, height, in);
     else
         b.out_of_memory = true;
@@ -1048,6 +1275,7 @@ int main(int argc, char **argv)
     free(b.vertex_array);
     free(b.index_array);
     free(b.color_array);
+    reordered_free(&meshes);
     mote_scene_free(&scene);
     return status;
 }

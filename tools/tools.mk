@@ -27,9 +27,11 @@ $(MOTE_RENDER): $(TOOL_OBJ_DIR)/mote_render.o $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
+# mote-bake alone links meshoptimizer (libmeshoptimizer-dev), which orders
+# each mesh's triangles and vertices for the firmware's vertex cache.
 $(MOTE_BAKE): $(TOOL_OBJ_DIR)/mote_bake.o $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(CC) $(LDFLAGS) $^ -lmeshoptimizer $(LDLIBS) -o $@
 
 # gen_assets needs only stb_image_write (in libstb) and libm, not libmote.
 $(GEN_ASSETS): $(TOOL_OBJ_DIR)/gen_assets.o

@@ -11,7 +11,11 @@
  * format ("cube_rgb565"...); gen_gltf's lines.gltf, points and lines
  * in their modes ("lines"); and tests/data/transparency.babylon and
  * fog.babylon ("glass", "fogged"), whose draw options and order, drawn as
- * firmware would, give mote_scene_draw's picture.
+ * firmware would, give mote_scene_draw's picture. The others are baked in
+ * the vertex cache's order: assets/torus.babylon ("torus") and
+ * tests/bake/reorder.babylon ("reorder", and "reorder_compact"), whose
+ * vertices and triangles are the loaded ones, reordered, so that a
+ * direct-mapped cache transforms fewer of them, and render as loaded.
  */
 #include <mote/mote.h>
 #include <mote/mote_io.h>
@@ -27,6 +31,9 @@
 #include "lines.h"
 #include "glass.h"
 #include "fogged.h"
+#include "torus.h"
+#include "reorder.h"
+#include "reorder_compact.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -94,24 +101,35 @@ static void render_each(const mote_mesh *meshes, int n, const mote_frame_desc *f
     TEST_ASSERT_EQUAL(MOTE_OK, mote_end(&dev));
 }
 
-void a_baked_scene_should_render_the_same_bytes_as_the_loaded_one(void)
+/* Renders a loaded scene's meshes and the baked ones, each n, with their
+ * frames and clear colours and the draw options d; checks that the bytes
+ * are the same and returns the pixels drawn (not black). */
+static int render_as_loaded(const mote_scene *s, const mote_mesh *meshes, int n,
+                            const mote_frame_desc *frame_as_baked, mote_rgba clear, mote_draw_desc d)
 {
     static uint8_t loaded[W * H * 4], baked[W * H * 4];
     mote_frame_desc frame;
-    mote_scene_frame(&scene, (float)W / (float)H, &frame);
+    mote_scene_frame(s, (float)W / (float)H, &frame);
+    TEST_ASSERT_EQUAL(s->mesh_count, n);
+    render(s->meshes, n, &frame, s->clear_color, d, loaded);
+    render(meshes, n, frame_as_baked, clear, d, baked);
+    TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
+    int drawn = 0;
+    for (int i = 0; i < W * H; i++)
+        drawn += loaded[4 * i] || loaded[4 * i + 1] || loaded[4 * i + 2];
+    return drawn;
+}
+
+void a_baked_scene_should_render_the_same_bytes_as_the_loaded_one(void)
+{
     static const mote_mode modes[] = {MOTE_MODE_FLAT, MOTE_MODE_GOURAUD};
     for (int k = 0; k < 2; k++) {
         mote_draw_desc d;
         memset(&d, 0, sizeof d);
         d.mode = modes[k];
         d.cull = MOTE_CULL_NONE;
-        render(scene.meshes, scene.mesh_count, &frame, scene.clear_color, d, loaded);
-        render(baked_meshes, BAKED_MESH_COUNT, &baked_frame, baked_clear_color, d, baked);
-        TEST_ASSERT_EQUAL_MEMORY(loaded, baked, sizeof loaded);
-        int drawn = 0;
-        for (int i = 0; i < W * H; i++)
-            drawn += loaded[4 * i] || loaded[4 * i + 1] || loaded[4 * i + 2];
-        TEST_ASSERT_TRUE(drawn > 100);
+        TEST_ASSERT_TRUE(render_as_loaded(&scene, baked_meshes, BAKED_MESH_COUNT, &baked_frame,
+                                          baked_clear_color, d) > 100);
     }
 }
 
@@ -470,6 +488,208 @@ void a_baked_foggy_scene_should_keep_its_fog_and_light_lists(void)
     check_baked_draw_options(MOTE_BAKE_FOG, fogged_meshes, FOGGED_MESH_COUNT, &fogged_frame, o);
 }
 
+/* ---- the vertex cache's order ------------------------------------------ */
+
+/* A vertex as a triangle draws it: its record and its colour. */
+typedef struct vertex_record {
+    mote_vertex v;
+    mote_rgba c;
+} vertex_record;
+
+static vertex_record record(const mote_mesh *m, uint32_t i)
+{
+    vertex_record r;
+    memset(&r, 0, sizeof r);
+    r.v = m->vertices[i];
+    if (m->colors)
+        r.c = m->colors[i];
+    return r;
+}
+
+static int compare_records(const void *a, const void *b)
+{
+    return memcmp(a, b, sizeof(vertex_record));
+}
+
+static int compare_triangles(const void *a, const void *b)
+{
+    return memcmp(a, b, 3 * sizeof(vertex_record));
+}
+
+/* Mesh m's vertex records, sorted. */
+static vertex_record *sorted_vertices(const mote_mesh *m)
+{
+    vertex_record *out = malloc(m->vertex_count * sizeof *out + 1);
+    TEST_ASSERT_NOT_NULL(out);
+    for (uint32_t i = 0; i < m->vertex_count; i++)
+        out[i] = record(m, i);
+    qsort(out, m->vertex_count, sizeof *out, compare_records);
+    return out;
+}
+
+/* Mesh m's triangles as their vertex records, each turned to start at its
+ * least (so its winding is kept), sorted. */
+static vertex_record *sorted_triangles(const mote_mesh *m)
+{
+    const uint32_t n = m->index_count / 3;
+    vertex_record *out = malloc(3 * n * sizeof *out + 1);
+    TEST_ASSERT_NOT_NULL(out);
+    for (uint32_t t = 0; t < n; t++) {
+        vertex_record r[3];
+        int least = 0;
+        for (int k = 0; k < 3; k++) {
+            r[k] = record(m, m->indices[3 * t + (uint32_t)k]);
+            if (compare_records(&r[k], &r[least]) < 0)
+                least = k;
+        }
+        for (int k = 0; k < 3; k++)
+            out[3 * t + (uint32_t)k] = r[(least + k) % 3];
+    }
+    qsort(out, n, 3 * sizeof *out, compare_triangles);
+    return out;
+}
+
+/* The vertices a direct-mapped cache of 32 entries (the core's default
+ * MOTE_VERTEX_CACHE) transforms drawing mesh m. */
+static long cache_transforms(const mote_mesh *m)
+{
+    uint32_t tag[32];
+    long n = 0;
+    for (int k = 0; k < 32; k++)
+        tag[k] = UINT32_MAX;
+    for (uint32_t i = 0; i < m->index_count / 3 * 3; i++) {
+        uint32_t *t = &tag[m->indices[i] & 31];
+        if (*t != m->indices[i]) {
+            *t = m->indices[i];
+            n++;
+        }
+    }
+    return n;
+}
+
+/* Each mesh of a reordered bake against the loaded one: the same vertex
+ * records as a set and the same triangles of them as a multiset, and no
+ * more vertices transformed; *before and *after add up the transforms of
+ * all the meshes. */
+static void check_reordered(const char *path, const mote_mesh *baked, int n, long *before, long *after)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(path, NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(s.mesh_count, n);
+    *before = *after = 0;
+    for (int i = 0; i < n; i++) {
+        const mote_mesh *a = &s.meshes[i], *b = &baked[i];
+        TEST_ASSERT_EQUAL_UINT32(a->vertex_count, b->vertex_count);
+        TEST_ASSERT_EQUAL_UINT32(a->index_count, b->index_count);
+        TEST_ASSERT_EQUAL(a->colors == NULL, b->colors == NULL);
+        vertex_record *va = sorted_vertices(a), *vb = sorted_vertices(b);
+        TEST_ASSERT_EQUAL_MEMORY(va, vb, a->vertex_count * sizeof *va);
+        free(va);
+        free(vb);
+        vertex_record *ta = sorted_triangles(a), *tb = sorted_triangles(b);
+        TEST_ASSERT_EQUAL_MEMORY(ta, tb, a->index_count / 3 * 3 * sizeof *ta);
+        free(ta);
+        free(tb);
+        const long ca = cache_transforms(a), cb = cache_transforms(b);
+        snprintf(msg, sizeof msg, "mesh %d: %ld vertices transformed in the file's order, %ld baked", i,
+                 ca, cb);
+        TEST_ASSERT_TRUE_MESSAGE(cb <= ca, msg);
+        *before += ca;
+        *after += cb;
+    }
+    mote_scene_free(&s);
+}
+
+void a_reordered_bake_should_keep_every_vertex_and_triangle(void)
+{
+    long before, after;
+    check_reordered(MOTE_BAKE_TORUS, torus_meshes, TORUS_MESH_COUNT, &before, &after);
+    check_reordered(MOTE_BAKE_REORDER, reorder_meshes, REORDER_MESH_COUNT, &before, &after);
+}
+
+/* The shuffled grids and the torus: a quarter fewer vertices transformed
+ * at least (figures in the header's comments) */
+void a_reordered_bake_should_transform_fewer_vertices(void)
+{
+    long before, after;
+    check_reordered(MOTE_BAKE_TORUS, torus_meshes, TORUS_MESH_COUNT, &before, &after);
+    snprintf(msg, sizeof msg, "torus: %ld vertices transformed in the file's order, %ld baked", before, after);
+    TEST_ASSERT_TRUE_MESSAGE(4 * after < 3 * before, msg);
+    check_reordered(MOTE_BAKE_REORDER, reorder_meshes, REORDER_MESH_COUNT, &before, &after);
+    snprintf(msg, sizeof msg, "grids: %ld vertices transformed in the file's order, %ld baked", before, after);
+    TEST_ASSERT_TRUE_MESSAGE(4 * after < 3 * before, msg);
+}
+
+/* The grid and its instance share one reordered vertex, colour and index
+ * array; the sub-meshes of "split" (two index arrays on one vertex array)
+ * have their triangles reordered, each, but share the file's vertices and
+ * colours. */
+void reordered_instances_and_sub_meshes_should_keep_sharing_their_arrays(void)
+{
+    mote_scene s;
+    TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(MOTE_BAKE_REORDER, NULL, &s, msg, sizeof msg), msg);
+    TEST_ASSERT_EQUAL(4, s.mesh_count);
+    /* the loaded scene: grid, split's two sub-meshes, the instance */
+    TEST_ASSERT_EQUAL_PTR(s.meshes[0].vertices, s.meshes[3].vertices);
+    TEST_ASSERT_EQUAL_PTR(s.meshes[1].vertices, s.meshes[2].vertices);
+    TEST_ASSERT_TRUE(s.meshes[1].indices != s.meshes[2].indices);
+    const mote_mesh *m = reorder_meshes;
+    TEST_ASSERT_EQUAL_PTR(m[0].vertices, m[3].vertices);
+    TEST_ASSERT_EQUAL_PTR(m[0].indices, m[3].indices);
+    TEST_ASSERT_EQUAL_PTR(m[0].colors, m[3].colors);
+    TEST_ASSERT_TRUE(memcmp(s.meshes[0].vertices, m[0].vertices, m[0].vertex_count * sizeof *m[0].vertices));
+    TEST_ASSERT_EQUAL_PTR(m[1].vertices, m[2].vertices);
+    TEST_ASSERT_EQUAL_PTR(m[1].colors, m[2].colors);
+    TEST_ASSERT_EQUAL_MEMORY(s.meshes[1].vertices, m[1].vertices, m[1].vertex_count * sizeof *m[1].vertices);
+    TEST_ASSERT_EQUAL_MEMORY(s.meshes[1].colors, m[1].colors, m[1].vertex_count * sizeof *m[1].colors);
+    for (int i = 1; i < 3; i++)
+        TEST_ASSERT_TRUE(memcmp(s.meshes[i].indices, m[i].indices, m[i].index_count * sizeof *m[i].indices));
+    mote_scene_free(&s);
+}
+
+/* Reordered triangles cover the same pixels with the same colours: these
+ * scenes have no two triangles at one depth on a pixel. */
+void a_reordered_bake_should_render_as_loaded(void)
+{
+    const char *paths[2] = {MOTE_BAKE_TORUS, MOTE_BAKE_REORDER};
+    const mote_mesh *meshes[2] = {torus_meshes, reorder_meshes};
+    const int counts[2] = {TORUS_MESH_COUNT, REORDER_MESH_COUNT};
+    const mote_frame_desc *frames[2] = {&torus_frame, &reorder_frame};
+    const mote_rgba clears[2] = {torus_clear_color, reorder_clear_color};
+    for (int k = 0; k < 2; k++) {
+        mote_scene s;
+        TEST_ASSERT_EQUAL_MESSAGE(MOTE_OK, mote_scene_load(paths[k], NULL, &s, msg, sizeof msg), msg);
+        mote_draw_desc d;
+        memset(&d, 0, sizeof d);
+        d.cull = MOTE_CULL_NONE;
+        const int drawn = render_as_loaded(&s, meshes[k], counts[k], frames[k], clears[k], d);
+        mote_scene_free(&s);
+        TEST_ASSERT_TRUE(drawn > 300);
+    }
+}
+
+/* --compact follows the same order: its integers are the reordered float
+ * bake's vertices, within their quantisation step, and its 16-bit indices
+ * the same. */
+void a_reordered_compact_bake_should_follow_the_vertex_order(void)
+{
+    TEST_ASSERT_EQUAL(REORDER_MESH_COUNT, REORDER_COMPACT_MESH_COUNT);
+    for (int i = 0; i < REORDER_MESH_COUNT; i++) {
+        const mote_mesh *f = &reorder_meshes[i], *c = &reorder_compact_meshes[i];
+        const mote_compact *q = c->compact;
+        TEST_ASSERT_NOT_NULL(q);
+        TEST_ASSERT_EQUAL_UINT32(f->vertex_count, c->vertex_count);
+        TEST_ASSERT_EQUAL_UINT32(f->index_count, c->index_count);
+        for (uint32_t k = 0; k < f->index_count; k++)
+            TEST_ASSERT_EQUAL_UINT32(f->indices[k], q->indices[k]);
+        for (uint32_t v = 0; v < f->vertex_count; v++)
+            for (int a = 0; a < 3; a++) {
+                const float back = (float)q->positions[3 * v + (uint32_t)a] * q->scale[a] + q->offset[a];
+                TEST_ASSERT_FLOAT_WITHIN(q->scale[a] + 1e-6f, f->vertices[v].position[a], back);
+            }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -486,5 +706,10 @@ int main(void)
     RUN_TEST(a_compact_bake_should_be_small_and_render_as_loaded);
     RUN_TEST(a_baked_transparent_scene_should_keep_its_draw_order);
     RUN_TEST(a_baked_foggy_scene_should_keep_its_fog_and_light_lists);
+    RUN_TEST(a_reordered_bake_should_keep_every_vertex_and_triangle);
+    RUN_TEST(a_reordered_bake_should_transform_fewer_vertices);
+    RUN_TEST(reordered_instances_and_sub_meshes_should_keep_sharing_their_arrays);
+    RUN_TEST(a_reordered_bake_should_render_as_loaded);
+    RUN_TEST(a_reordered_compact_bake_should_follow_the_vertex_order);
     return UNITY_END();
 }
