@@ -106,11 +106,17 @@ MOTE__SHARED int64_t mote__floor_shift64(int64_t v, int k)
 int64_t mote__floor_shift64(int64_t v, int k);
 #endif
 
-/* the same for a 32-bit v, 0 <= k < 31 (short enough to inline anywhere) */
+/* the same for a 32-bit v, 0 <= k < 31: one instruction where the
+ * compiler defines >> of a negative number as the arithmetic shift (GCC
+ * and Clang do), so that size builds inline it too */
 static inline int32_t mote__floor_shift32(int32_t v, int k)
 {
+#if defined(__GNUC__)
+    return v >> k;
+#else
     uint32_t neg = 0u - (uint32_t)(v < 0);
     return (int32_t)((((uint32_t)v ^ neg) >> k) ^ neg);
+#endif
 }
 
 /* ---- vertex stage -------------------------------------------------------- */

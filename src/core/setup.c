@@ -55,10 +55,18 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
         hh = mote__umul64(xh, yh);
     }
     const uint64_t mid = (ll >> 32) + (uint32_t)lh + (uint32_t)hl;
-    const uint64_t lo = (uint32_t)ll | (mid << 32);
     const uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
-    const uint64_t r = (lo >> s) | (hi << (64 - s));
-    return (int64_t)(neg ? 0u - r - ((lo << (64 - s)) != 0) : r);
+    /* bits [s, s + 64) of the 128-bit product by 32-bit words: a shift of
+     * a 64-bit number by a variable count is a libgcc call on 32-bit cores */
+    const bool up = s >= 32;      /* the words from 1 (mid) on, else from 0 */
+    const uint32_t w0 = up ? (uint32_t)mid : (uint32_t)ll, w1 = up ? (uint32_t)hi : (uint32_t)mid,
+                   w2 = up ? (uint32_t)(hi >> 32) : (uint32_t)hi;
+    const int bit = s & 31;
+    const uint32_t rl = bit ? w0 >> bit | w1 << (32 - bit) : w0;
+    const uint32_t rh = bit ? w1 >> bit | w2 << (32 - bit) : w1;
+    const uint64_t r = (uint64_t)rh << 32 | rl;
+    const bool dropped = (up && (uint32_t)ll != 0) || (w0 & ((1u << bit) - 1u)) != 0;
+    return (int64_t)(neg ? 0u - r - dropped : r);
 #endif
 }
 
@@ -70,9 +78,8 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
 #define MOTE__SETUP_FAST 1
 #define MOTE__SETUP_INLINE static inline __attribute__((always_inline))
 
-/* floor(v / 2^k) in one instruction, where mote__floor_shift32 and 64
- * take four */
-static inline int32_t mote__sar32(int32_t v, int k) { return v >> k; }
+/* floor(v / 2^k) in one instruction, where mote__floor_shift64 takes
+ * four */
 static inline int64_t mote__sar64(int64_t v, int k) { return v >> k; }
 
 /* mote__floor_div64 for b > 0: the remainder's sign alone corrects */
@@ -104,7 +111,6 @@ static inline int64_t mote__mul_shift2(int64_t a1, int64_t b1, int64_t a2, int64
 #else
 #define MOTE__SETUP_FAST 0
 #define MOTE__SETUP_INLINE static inline
-#define mote__sar32 mote__floor_shift32
 #define mote__floor_div_pos mote__floor_div64
 #endif
 
@@ -246,8 +252,8 @@ MOTE__SETUP_INLINE mote__setup_result mote__box(const int32_t X[3], const int32_
     ext[1] = miny;
     ext[2] = maxx;
     ext[3] = maxy;
-    int x0 = mote__sar32(minx + up, F), x1 = mote__sar32(maxx - h32, F);
-    int y0 = mote__sar32(miny + up, F), y1 = mote__sar32(maxy - h32, F);
+    int x0 = mote__floor_shift32(minx + up, F), x1 = mote__floor_shift32(maxx - h32, F);
+    int y0 = mote__floor_shift32(miny + up, F), y1 = mote__floor_shift32(maxy - h32, F);
     if (x0 > x1 || y0 > y1)
         return MOTE__SETUP_EMPTY;
     box[0] = MOTE__MAX(x0, 0);
@@ -304,7 +310,7 @@ MOTE__SETUP_INLINE mote__setup_result mote__setup_f(mote__tri *t, const mote__ra
     t->ymin = (int16_t)y0;
     t->ymax = (int16_t)y1;
     /* origin: the pixel holding vertex 0 (in the guard band, so int16 fits) */
-    const int ox = mote__sar32(X[0], F), oy = mote__sar32(Y[0], F);
+    const int ox = mote__floor_shift32(X[0], F), oy = mote__floor_shift32(Y[0], F);
     t->ox = (int16_t)ox;
     t->oy = (int16_t)oy;
 
