@@ -90,8 +90,10 @@ static void test_reciprocal_division_should_match_a_division(void)
         const int64_t d = i < named ? divisors[i] : tu_rand_int(&rng, 1, ((int64_t)1 << 32) - 1);
         mote__divisor dv;
         mote__divisor_init(&dv, (uint32_t)d);
+        /* and |a| = q d + 1 within int64 */
+        const int64_t qmost = MOTE__MIN(most, (INT64_MAX - 1) / d);
         for (int j = 0; j < 64; j++) {
-            int64_t q = j < 8 ? (int64_t)j : j < 16 ? most - (j - 8) : tu_rand_int(&rng, 0, most);
+            int64_t q = j < 8 ? (int64_t)j : j < 16 ? qmost - (j - 8) : tu_rand_int(&rng, 0, qmost);
             for (int e = -1; e <= 1; e++)
                 for (int sign = -1; sign <= 1; sign += 2) {
                     int64_t a = sign * (q * d + e), got;
