@@ -73,7 +73,7 @@ static int64_t floor_div(int64_t a, int64_t d)
     return q - (a % d != 0 && (a < 0) != (d < 0));
 }
 
-/* the depth plane's division by a reciprocal (mote__div_by) against a
+/* the depth plane's division by a reciprocal (mote__divide_floor) against a
  * division: floors of either sign exact at multiples of the divisor and
  * one either side, at every divisor size, for quotients up to 2^32 - 2^8
  * (it must accept them: recip.c's mote__divide is tested there), and
@@ -97,7 +97,7 @@ static void test_reciprocal_division_should_match_a_division(void)
             for (int e = -1; e <= 1; e++)
                 for (int sign = -1; sign <= 1; sign += 2) {
                     int64_t a = sign * (q * d + e), got;
-                    if (!mote__div_by(a, &dv, &got))
+                    if (!mote__divide_floor(a, &dv, &got))
                         refused++;
                     else
                         misses += got != floor_div(a, d);
@@ -105,8 +105,8 @@ static void test_reciprocal_division_should_match_a_division(void)
         }
         int64_t got;
         if (d < ((int64_t)1 << 30))
-            accepted_past += mote__div_by(((int64_t)1 << 32) * d, &dv, &got)
-                           + mote__div_by(-((int64_t)1 << 32) * d - 1, &dv, &got);
+            accepted_past += mote__divide_floor(((int64_t)1 << 32) * d, &dv, &got)
+                           + mote__divide_floor(-((int64_t)1 << 32) * d - 1, &dv, &got);
     }
     TEST_ASSERT_EQUAL_INT(0, refused);
     TEST_ASSERT_EQUAL_INT(0, accepted_past);

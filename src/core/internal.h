@@ -387,6 +387,9 @@ uint32_t mote__divisor_init(mote__divisor *v, uint32_t d);
 /* floor(n / d), exact; false (divide another way) when it is 2^32 or
  * more, and perhaps within 2^8 below that */
 bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q);
+/* floor(a / d) for either sign of a (a negative a's is minus the ceiling
+ * of |a| / d); false as mote__divide, for that magnitude */
+bool mote__divide_floor(int64_t a, const mote__divisor *v, int64_t *q);
 
 /* Number of significant bits of v (0 for 0). */
 #if MOTE__SHARED_BODIES

@@ -131,3 +131,13 @@ bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q)
     *q = e;
     return true;
 }
+
+bool mote__divide_floor(int64_t a, const mote__divisor *v, int64_t *q)
+{
+    const uint64_t u = a < 0 ? 0u - (uint64_t)a : (uint64_t)a;
+    uint32_t m;
+    if (!mote__divide(a < 0 ? u + v->d - 1 : u, v, &m))
+        return false;
+    *q = a < 0 ? -(int64_t)m : (int64_t)m;
+    return true;
+}

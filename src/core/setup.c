@@ -129,32 +129,18 @@ MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
 
 /* Cores without a divide instruction (ARMv6-M, where MOTE__NO_UMULL is
  * set) divide the depth plane's three numerators by one reciprocal of
- * twice the area (recip.c). Cores that divide in hardware gain nothing
+ * twice the area (recip.c's mote__divide_floor), where a 64-bit division
+ * is a libgcc routine (some 400 instructions on Cortex-M0+). Cores that divide in hardware gain nothing
  * from it (Cortex-M4F, `make bench-embedded`). */
 #define MOTE__DIVIDE_BY_RECIP (MOTE__CORE32 && MOTE__NO_UMULL)
 
-#if MOTE__DIVIDE_BY_RECIP
-/* floor(a / d) by the divisor's reciprocal, where a 64-bit division is a
- * libgcc routine (some 400 instructions on Cortex-M0+): a negative a's
- * floor is minus the ceiling of |a| / d. false: the quotient is too
- * large for it, the caller divides. */
-static bool mote__div_by(int64_t a, const mote__divisor *v, int64_t *out)
-{
-    const uint64_t u = a < 0 ? 0u - (uint64_t)a : (uint64_t)a;
-    uint32_t q;
-    if (!mote__divide(a < 0 ? u + v->d - 1 : u, v, &q))
-        return false;
-    *out = a < 0 ? -(int64_t)q : (int64_t)q;
-    return true;
-}
-#endif
 
 /* floor(a / d) for d > 0; dv, when not NULL, is d's mote__divisor */
 static inline int64_t mote__depth_div(int64_t a, int64_t d, const mote__divisor *dv)
 {
 #if MOTE__DIVIDE_BY_RECIP
     int64_t q;
-    if (dv && mote__div_by(a, dv, &q))
+    if (dv && mote__divide_floor(a, dv, &q))
         return q;
 #else
     (void)dv;

@@ -72,22 +72,21 @@ static bool mote__fx_udiv(uint64_t n, const mote__divisor *v, uint32_t *out)
     return true;
 }
 
+/* floor(a / d) (recip.c); false when its magnitude is 2^31 or more */
+static bool mote__fx_sdiv(int64_t a, const mote__divisor *v, int32_t *out)
+{
+    int64_t q;
+    if (!mote__divide_floor(a, v, &q) || q >= ((int64_t)1 << 31) || q <= -((int64_t)1 << 31))
+        return false;
+    *out = (int32_t)q;
+    return true;
+}
+
 /* floor(a / d + 1/2) for a divisor d2 = 2 d: round half up, as the float
  * stage's snap rounds */
 static bool mote__fx_round_div(int64_t a, uint32_t d, const mote__divisor *d2, int32_t *out)
 {
-    int64_t num = 2 * a + (int64_t)d;
-    uint32_t q;
-    if (num >= 0) {
-        if (!mote__fx_udiv((uint64_t)num, d2, &q))
-            return false;
-        *out = (int32_t)q;
-    } else {
-        if (!mote__fx_udiv((uint64_t)(-num) + d2->d - 1, d2, &q))
-            return false;
-        *out = -(int32_t)q;
-    }
-    return true;
+    return mote__fx_sdiv(2 * a + (int64_t)d, d2, out);
 }
 
 /* 2^seed: 2^18 / sqrt(i + 1/2) for i in [16, 64), the seed of 2^31 /
@@ -641,13 +640,9 @@ static int64_t mote__fx_facing(const mote__fx *f, const int32_t X[3], const int3
 static int32_t mote__fx_third(int64_t s)
 {
     static const mote__divisor three = {3, 0xaaaaaaabu, 30};   /* 2^63 / 3 2^30, rounded up */
-    uint32_t q = 0;
-    if (s >= 0) {
-        mote__fx_udiv((uint64_t)s, &three, &q);
-        return (int32_t)q;
-    }
-    mote__fx_udiv((uint64_t)(-s) + 2, &three, &q);
-    return -(int32_t)q;
+    int32_t q = 0;
+    mote__fx_sdiv(s, &three, &q);
+    return q;
 }
 
 /* A flat triangle's shade: the lighting at its centroid, from its
