@@ -491,7 +491,8 @@ static mote_result mote__fixed_run(mote__ctx *cx, const mote__piece *piece, mote
     uint32_t first, tris = mote__tri_range(cx, piece, &first);
     mote__bins_open(cx, rec, recording, first, tris);
     const mote__fixed_draw fd = {cx->mvp, cx->world, cx->nrm, cx->uscale, cx->vscale, cx->uoff, cx->voff,
-                                 cx->lit, cx->flat, cx->cull_cw, cx->cull_ccw, cx->rs, cx, cx->d.lights_off};
+                                 cx->lit, cx->flat, cx->cull_cw, cx->cull_ccw, cx->rs, cx, cx->d.lights_off,
+                                 recording ? NULL : cx->band_bins, (unsigned)cx->dev->bands.index};
     mote__fixed_triangles(cx->dev, cx->mesh, &fd, first, tris);
     mote__bins_close(cx, rec, recording, tris);
     return MOTE_OK;

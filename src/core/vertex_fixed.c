@@ -1016,8 +1016,9 @@ void mote__fixed_triangles(mote_device *dev, const mote_mesh *mesh, const mote__
                 f.lights += mote__fx_light_init(&f, &fr->lights[i], &f.light[f.lights]);
     }
 
+    const unsigned char *bins = fd->bins;
     for (uint32_t i = first; i < end && !(MOTE_ENABLE_BINNING && dev->bin.overflowed); i++) {
-        if (mote__fixed_skip(fd->cx, i))
+        if (bins ? fd->band < bins[2 * i] || fd->band > bins[2 * i + 1] : mote__fixed_skip(fd->cx, i))
             continue;
         uint32_t idx[3];
         mote__mesh_triangle(mesh, i, idx);

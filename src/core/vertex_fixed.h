@@ -57,6 +57,11 @@ typedef struct mote__fixed_draw {
     const mote__raster_state *rs;
     void *cx;                     /* mote__fixed_emit's */
     uint32_t lights_off;          /* mote_draw_desc.lights_off */
+    /* band bins after the first band (NULL otherwise): each triangle's
+     * first and last band, read here so that a band skips the triangles
+     * that miss it in a few instructions, not two calls */
+    const unsigned char *bins;
+    unsigned band;
 } mote__fixed_draw;
 
 /* Whether this stage draws the draw: triangles (points and wireframe stay
