@@ -619,6 +619,51 @@ static void write_draw_options(baker *b, const mote_camera *camera)
     free(order);
 }
 
+/* The header's one call for drawing: the meshes as mote_scene_draw draws
+ * them, from the options above, so that firmware and the tests share it
+ * ('@' in the text stands for the header's name). */
+static void write_draw_function(baker *b)
+{
+    static const char *const text =
+        "/* Draws the meshes as mote_scene_draw draws them, in @_draw_order (a\n"
+        " * mesh with a depth pre-pass twice), between mote_begin and mote_end. */\n"
+        "static inline mote_result @_draw(mote_device *dev)\n"
+        "{\n"
+        "    for (int k = 0; k < (int)(sizeof @_draw_order / sizeof @_draw_order[0]); k++) {\n"
+        "        const int i = @_draw_order[k];\n"
+        "        const mote_mesh *m = &@_meshes[i];\n"
+        "        mote_draw_desc d = {0};\n"
+        "        d.mode = @_modes[i];\n"
+        "        if (@_two_sided[i] || d.mode == MOTE_MODE_WIREFRAME)\n"
+        "            d.cull = MOTE_CULL_NONE;\n"
+        "        d.unlit = @_unlit[i];\n"
+        "        d.no_depth_write = @_no_depth_write[i];\n"
+        "        d.no_fog = @_no_fog[i];\n"
+        "        d.lights_off = @_lights_off[i];\n"
+        "        mote_result r;\n"
+        "        /* a pre-pass for blended meshes, where blending is built in */\n"
+        "        if (MOTE_ENABLE_BLEND && @_depth_pre_pass[i]\n"
+        "            && (m->material.alpha_mode == MOTE_ALPHA_BLEND\n"
+        "                || m->material.alpha_mode == MOTE_ALPHA_TEST_AND_BLEND)) {\n"
+        "            mote_draw_desc depth_only = d;\n"
+        "            depth_only.no_color_write = true;\n"
+        "            if ((r = mote_draw(dev, m, &depth_only)) != MOTE_OK)\n"
+        "                return r;\n"
+        "            d.depth_less_equal = true;\n"
+        "        }\n"
+        "        if ((r = mote_draw(dev, m, &d)) != MOTE_OK)\n"
+        "            return r;\n"
+        "    }\n"
+        "    return MOTE_OK;\n"
+        "}\n\n";
+    for (const char *p = text; *p;) {
+        const char *at = strchr(p, '@');
+        const int n = at ? (int)(at - p) : (int)strlen(p);
+        put(b, "%.*s%s", n, p, at ? b->name : "");
+        p += n + (at != NULL);
+    }
+}
+
 static void write_frame(baker *b, const mote_frame_desc *fr)
 {
     char buf[40];
@@ -1013,6 +1058,7 @@ static void bake(baker *b, int width, int height, const char *source)
         /* culling, lighting, modes, fog and the order are draw options, not
          * mesh fields: the firmware reads these to draw as mote_scene_draw */
         write_draw_options(b, &frame.camera);
+        write_draw_function(b);
     }
     write_frame(b, &frame);
     put(b, "static const mote_rgba %s_clear_color = {%u, %u, %u, %u};\n\n", b->name, s->clear_color.r,

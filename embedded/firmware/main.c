@@ -117,13 +117,9 @@ static void render(void)
     mote_result r;
     if ((r = mote_begin(&fw_device, &scene_frame)) != MOTE_OK)
         fail("mote_begin", r);
-    for (int i = 0; i < SCENE_MESH_COUNT; i++) {
-        mote_draw_desc draw = {0};
-        draw.cull = scene_two_sided[i] ? MOTE_CULL_NONE : MOTE_CULL_DEFAULT;
-        draw.unlit = scene_unlit[i];
-        if ((r = mote_draw(&fw_device, &scene_meshes[i], &draw)) != MOTE_OK)
-            fail("mote_draw", r);
-    }
+    /* the baked header's draw options and order, as mote_scene_draw */
+    if ((r = scene_draw(&fw_device)) != MOTE_OK)
+        fail("mote_draw", r);
     if ((r = mote_end(&fw_device)) != MOTE_OK)
         fail("mote_end", r);
 }

@@ -56,6 +56,12 @@ $(BAKE_TEST_DIR)/fogged.h: $(BAKE_FOG) $(BIN)/mote-bake
 	@mkdir -p $(dir $@)
 	$(BIN)/mote-bake $(BAKE_FOG) -o $@ --name fogged --format rgba8888 --size 64x48
 
+# two blended layers in one mesh, drawn with a depth pre-pass
+BAKE_PREPASS  := tests/bake/prepass.babylon
+$(BAKE_TEST_DIR)/prepass.h: $(BAKE_PREPASS) $(BIN)/mote-bake
+	@mkdir -p $(dir $@)
+	$(BIN)/mote-bake $(BAKE_PREPASS) -o $@ --name prepass --format rgba8888 --size 64x48
+
 # the headers baked in the vertex cache's order: NAME.h from BAKE_FILE.NAME,
 # with BAKE_OPTS.NAME
 BAKE_TORUS    := assets/torus.babylon
@@ -74,14 +80,15 @@ $(patsubst %,$(BAKE_TEST_DIR)/%.h,$(BAKE_ORDERED)): $(BIN)/mote-bake
 $(BAKE_TEST_DIR)/test_bake: tests/bake/test_bake.c $(BAKE_TEST_DIR)/baked.h $(BAKE_TEST_DIR)/ortho.h \
         $(BAKE_TEST_DIR)/baked_hidden.h $(BAKE_CUBES) $(BAKE_TEST_DIR)/cube_compact.h \
         $(BAKE_TEST_DIR)/lines.h $(BAKE_TEST_DIR)/glass.h $(BAKE_TEST_DIR)/fogged.h \
-        $(patsubst %,$(BAKE_TEST_DIR)/%.h,$(BAKE_ORDERED)) \
+        $(BAKE_TEST_DIR)/prepass.h $(patsubst %,$(BAKE_TEST_DIR)/%.h,$(BAKE_ORDERED)) \
         $(BUILD)/tests/obj/unity.o $(LIB) | $(DEPS_OK)
 	$(CC) $(TEST_CFLAGS) -I$(BAKE_TEST_DIR) -DMOTE_BAKE_SCENE=\"$(CURDIR)/$(BAKE_SCENE)\" \
 	    -DMOTE_BAKE_CUBE=\"$(CURDIR)/$(BAKE_CUBE)\" \
 	    -DMOTE_BAKE_ORTHO=\"$(CURDIR)/$(BAKE_ORTHO)\" -DMOTE_BAKE_HIDDEN=\"$(CURDIR)/$(BAKE_HIDDEN)\" \
 	    -DMOTE_BAKE_LINES=\"$(CURDIR)/$(BAKE_LINES)\" -DMOTE_BAKE_GLASS=\"$(CURDIR)/$(BAKE_GLASS)\" \
 	    -DMOTE_BAKE_FOG=\"$(CURDIR)/$(BAKE_FOG)\" -DMOTE_BAKE_TORUS=\"$(CURDIR)/$(BAKE_TORUS)\" \
-	    -DMOTE_BAKE_REORDER=\"$(CURDIR)/$(BAKE_REORDER)\" $< \
+	    -DMOTE_BAKE_REORDER=\"$(CURDIR)/$(BAKE_REORDER)\" \
+	    -DMOTE_BAKE_PREPASS=\"$(CURDIR)/$(BAKE_PREPASS)\" $< \
 	    $(BUILD)/tests/obj/unity.o $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
 test-build: $(BAKE_TEST_DIR)/test_bake
