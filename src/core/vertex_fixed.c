@@ -35,7 +35,12 @@ static inline uint32_t mote__fx_abs(int32_t a)
 MOTE__SPEED_INLINE int64_t mote__fx_smul(int32_t a, int32_t b)
 {
 #if MOTE__NO_UMULL
-    int64_t p = (int64_t)mote__umul64(mote__fx_abs(a), mote__fx_abs(b));
+    /* a factor below 2^16 (the screen's sizes, most of lighting's
+     * factors) takes two 16x16-bit products, not four */
+    const uint32_t ua = mote__fx_abs(a), ub = mote__fx_abs(b);
+    int64_t p = (int64_t)(ub >> 16 == 0   ? mote__umul64_short(ua, ub)
+                          : ua >> 16 == 0 ? mote__umul64_short(ub, ua)
+                                          : mote__umul64(ua, ub));
     return (a < 0) != (b < 0) ? -p : p;
 #else
     return (int64_t)a * b;
@@ -120,7 +125,7 @@ static void mote__fx_normalize(const int32_t v[3], int32_t out[3])
     for (int i = 0; i < 2; i++) {
         /* y (3 - sn y^2 / 2^62) / 2 */
         uint32_t t = (uint32_t)(mote__umul64(sn, y * y) >> 32);   /* about 2^30 */
-        y = (uint32_t)(mote__umul64(y, 3u * (1u << 30) - t) >> 31);
+        y = (uint32_t)(mote__umul64_short(3u * (1u << 30) - t, y) >> 31);   /* y <= 0xffff */
         y = y > 0xffffu ? 0xffffu : y;            /* y^2 stays in 32 bits */
     }
     /* 2^29 / sqrt(s) = y 2^(j - 2), j <= 1 as s >= 2^28 */
@@ -416,7 +421,8 @@ static bool mote__fx_project(const mote__fx *f, const int32_t c[4], int32_t *X, 
     if (c[2] >= c[3])
         z = MOTE__DEPTH_MAX;
     else if (c[2] > 0)
-        mote__fx_udiv(2 * mote__umul64((uint32_t)c[2], MOTE__DEPTH_MAX) + w, &w2, &z);   /* < 2^24 */
+        /* z (2^24 - 1) by a shift: a product is a call on ARMv6-M */
+        mote__fx_udiv(2 * (((uint64_t)(uint32_t)c[2] << 24) - (uint32_t)c[2]) + w, &w2, &z);   /* < 2^24 */
     sv->z = (int32_t)z;
     /* only the triangle hook (a testing aid) reads it: a float division
      * there, none per vertex otherwise */
