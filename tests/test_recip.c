@@ -150,6 +150,27 @@ static void divide_should_be_the_floor_and_refuse_past_32_bits(void)
     TEST_ASSERT_EQUAL_INT(0, misses);
 }
 
+/* mote__udiv64 against C's division: divisors of every bit length up to
+ * 2^63 - 1 (the reciprocal's below 2^32, the bit loop's above), dividends
+ * of every length, each quotient's neighbours included. */
+static void udiv64_should_be_the_floor_for_every_size(void)
+{
+    tu_rng rng = tu_rng_seed(64);
+    int misses = 0;
+    for (int i = 0; i < 20000; i++) {
+        const uint64_t d = (tu_rand_u64(&rng) >> tu_rand_int(&rng, 1, 63)) | 1u;
+        const uint64_t n = tu_rand_u64(&rng) >> tu_rand_int(&rng, 0, 63);
+        const uint64_t q = n / d, at[] = {n, q * d, q * d + d - 1, q ? q * d - 1 : 0};
+        for (int k = 0; k < 4; k++)
+            misses += mote__udiv64(at[k], d) != at[k] / d;
+    }
+    const uint64_t edge[][2] = {{UINT64_MAX, 1}, {UINT64_MAX, 3}, {0, 7}, {((uint64_t)1 << 63) - 1, ((uint64_t)1 << 63) - 1},
+                                {UINT64_MAX, 0xffffffffu}, {((uint64_t)1 << 32) * 0xffffffffu, 0xffffffffu}};
+    for (int k = 0; k < (int)(sizeof edge / sizeof edge[0]); k++)
+        misses += mote__udiv64(edge[k][0], edge[k][1]) != edge[k][0] / edge[k][1];
+    TEST_ASSERT_EQUAL_INT(0, misses);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -159,5 +180,6 @@ int main(void)
     RUN_TEST(recip_by_table_should_equal_recip_by_divide);
     RUN_TEST(inverse_w_should_give_one_over_w);
     RUN_TEST(divide_should_be_the_floor_and_refuse_past_32_bits);
+    RUN_TEST(udiv64_should_be_the_floor_for_every_size);
     return UNITY_END();
 }

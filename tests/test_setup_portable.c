@@ -113,6 +113,27 @@ static void test_reciprocal_division_should_match_a_division(void)
     TEST_ASSERT_EQUAL_INT(0, misses);
 }
 
+/* setup's floor division (its 32-bit cores' form, without libgcc's
+ * 64-bit division) against C's, for both signs and every size */
+static void test_floor_division_should_match_a_division(void)
+{
+    rng = tu_rng_seed(164);
+    int misses = 0;
+    for (int i = 0; i < 100000; i++) {
+        int64_t b = (int64_t)(tu_rand_u64(&rng) >> tu_rand_int(&rng, 1, 63)) | 1;
+        int64_t a = (int64_t)(tu_rand_u64(&rng) >> tu_rand_int(&rng, 1, 63));
+        if (i & 1)
+            a = -a;
+        if (i & 2)
+            b = -b;
+        misses += mote__floor_div64(a, b) != floor_div(a, b);
+    }
+    misses += mote__floor_div64(INT64_MIN, 1) != INT64_MIN;
+    misses += mote__floor_div64(INT64_MIN, 3) != floor_div(INT64_MIN, 3);
+    misses += mote__floor_div64(INT64_MAX, -7) != floor_div(INT64_MAX, -7);
+    TEST_ASSERT_EQUAL_INT(0, misses);
+}
+
 static void test_portable_setup_should_match_the_library_bit_for_bit(void)
 {
     mote__raster_state rs;
@@ -173,6 +194,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_portable_product_should_match_int128_on_edge_values);
     RUN_TEST(test_reciprocal_division_should_match_a_division);
+    RUN_TEST(test_floor_division_should_match_a_division);
     RUN_TEST(test_portable_setup_should_match_the_library_bit_for_bit);
     return UNITY_END();
 }

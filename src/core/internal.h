@@ -390,6 +390,10 @@ bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q);
 /* floor(a / d) for either sign of a (a negative a's is minus the ceiling
  * of |a| / d); false as mote__divide, for that magnitude */
 bool mote__divide_floor(int64_t a, const mote__divisor *v, int64_t *q);
+/* floor(n / d) for 0 < d < 2^63 without a 64-bit division (a libgcc
+ * routine on 32-bit cores): by a reciprocal where d and the quotient fit
+ * 32 bits, bit by bit otherwise */
+uint64_t mote__udiv64(uint64_t n, uint64_t d);
 
 /* Number of significant bits of v (0 for 0). */
 #if MOTE__SHARED_BODIES

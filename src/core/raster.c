@@ -59,7 +59,11 @@ MOTE__WALK_INLINE void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, in
     }
     int64_t A = (int64_t)xa - half + u * qs, Aq = mote__floor_shift64(A, F);
     int64_t n2 = (int64_t)(int32_t)(A & (one - 1)) * dy + u * rs;   /* A - Aq 2^F */
-    int64_t c = u < one ? (n2 > 0) + (n2 > den) : (n2 + den - 1) / den;
+    /* a region starting below the edge's first row (a band's) divides;
+     * 32-bit cores without a libgcc 64-bit division (recip.c) */
+    int64_t c = u < one          ? (n2 > 0) + (n2 > den)
+              : MOTE__CORE32 ? (int64_t)mote__udiv64((uint64_t)(n2 + den - 1), (uint64_t)den)
+                             : (n2 + den - 1) / den;
     e->x = Aq + c;
     e->err = c * den - n2;
 }

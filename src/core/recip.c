@@ -132,6 +132,30 @@ bool mote__divide(uint64_t n, const mote__divisor *v, uint32_t *q)
     return true;
 }
 
+uint64_t mote__udiv64(uint64_t n, uint64_t d)
+{
+    if (d >> 32 == 0) {
+        mote__divisor v;
+        uint32_t q;
+        mote__divisor_init(&v, (uint32_t)d);
+        if (mote__divide(n, &v, &q))
+            return q;
+    }
+    /* the rare rest (quotients or divisors past 32 bits) a bit at a time,
+     * by shifts of one: a variable 64-bit shift is a libgcc call too */
+    uint64_t q = 0, r = 0;
+    for (int i = 0; i < 64; i++) {
+        r = r << 1 | n >> 63;     /* r < d < 2^63: no bit lost */
+        n <<= 1;
+        q <<= 1;
+        if (r >= d) {
+            r -= d;
+            q |= 1;
+        }
+    }
+    return q;
+}
+
 bool mote__divide_floor(int64_t a, const mote__divisor *v, int64_t *q)
 {
     const uint64_t u = a < 0 ? 0u - (uint64_t)a : (uint64_t)a;

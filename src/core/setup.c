@@ -123,8 +123,17 @@ static inline int64_t mote__floor_shift_k(int64_t v, int k) { return k != 0 ? mo
 
 MOTE__SPEED_INLINE int64_t mote__floor_div64(int64_t a, int64_t b)
 {
+#if MOTE__CORE32
+    /* by the magnitudes, without libgcc's 64-bit division (recip.c); a
+     * negative quotient's floor is minus the magnitudes' ceiling */
+    const uint64_t ua = a < 0 ? 0u - (uint64_t)a : (uint64_t)a, ub = b < 0 ? 0u - (uint64_t)b : (uint64_t)b;
+    const bool neg = (a < 0) != (b < 0);
+    const uint64_t q = mote__udiv64(neg ? ua + ub - 1 : ua, ub);
+    return (int64_t)(neg ? 0u - q : q);
+#else
     int64_t q = a / b, r = a - q * b;   /* r has a's sign */
     return q - ((r != 0) & ((r < 0) != (b < 0)));
+#endif
 }
 
 /* Cores without a divide instruction (ARMv6-M, where MOTE__NO_UMULL is
