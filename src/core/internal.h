@@ -92,6 +92,18 @@
 #define MOTE__SHARED static inline
 #endif
 
+/* Cores with 32-bit registers, where each 64-bit operation is several
+ * instructions or a library call: setup and the edge walk take 32-bit
+ * paths there where the ranges allow (tests/test_edge32.c and
+ * tests/test_setup_portable.c set it to run those on the host). */
+#ifndef MOTE__CORE32
+#if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ >= 8
+#define MOTE__CORE32 0
+#else
+#define MOTE__CORE32 1
+#endif
+#endif
+
 /* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
  * negative numbers (implementation-defined in C99): a negative v is
  * complemented, shifted and complemented back, through a mask rather than
@@ -99,8 +111,20 @@
 #if MOTE__SHARED_BODIES
 MOTE__SHARED int64_t mote__floor_shift64(int64_t v, int k)
 {
+#if MOTE__CORE32 && defined(__GNUC__)
+    /* by 32-bit halves (>> of a negative number is arithmetic in GCC and
+     * Clang): a 64-bit shift by a variable is a libgcc call there */
+    const int32_t hi = (int32_t)(uint32_t)((uint64_t)v >> 32);
+    if (k >= 32)
+        return (int64_t)(hi >> (k - 32));
+    if (k == 0)
+        return v;
+    const uint32_t lo = (uint32_t)(uint64_t)v >> k | (uint32_t)hi << (32 - k);
+    return (int64_t)((uint64_t)(uint32_t)(hi >> k) << 32 | lo);
+#else
     uint64_t neg = 0u - (uint64_t)(v < 0);
     return (int64_t)((((uint64_t)v ^ neg) >> k) ^ neg);
+#endif
 }
 #else
 int64_t mote__floor_shift64(int64_t v, int k);
@@ -293,18 +317,6 @@ typedef struct mote__svert {
 #define MOTE__NO_UMULL 1
 #else
 #define MOTE__NO_UMULL 0
-#endif
-#endif
-
-/* Cores with 32-bit registers, where each 64-bit operation is several
- * instructions or a library call: setup and the edge walk take 32-bit
- * paths there where the ranges allow (tests/test_edge32.c and
- * tests/test_setup_portable.c set it to run those on the host). */
-#ifndef MOTE__CORE32
-#if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ >= 8
-#define MOTE__CORE32 0
-#else
-#define MOTE__CORE32 1
 #endif
 #endif
 

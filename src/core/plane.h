@@ -76,7 +76,14 @@ MOTE__PLANE_FN int32_t mote__to32(int64_t v, int s)
  * over a block is then at most half a unit a pixel. */
 MOTE__PLANE_FN int32_t mote__step32(int64_t v, int s)
 {
+#if MOTE__WIDE_REGISTERS
     return mote__to32((int64_t)((uint64_t)v + (((uint64_t)1 << s) >> 1)), s);
+#else
+    /* half a unit from a 32-bit shift: a 64-bit one by a variable is a
+     * libgcc call */
+    const uint64_t half = s == 0 ? 0u : s <= 32 ? (uint64_t)((uint32_t)1 << (s - 1)) : (uint64_t)((uint32_t)1 << (s - 33)) << 32;
+    return mote__to32((int64_t)((uint64_t)v + half), s);
+#endif
 }
 
 #endif

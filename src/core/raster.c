@@ -32,15 +32,20 @@ MOTE__WALK_INLINE void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, in
 {
     const int64_t one = (int64_t)1 << F, half = one >> 1;
     const int32_t dy = yb - ya, dx = xb - xa;   /* dy > 0; both below 2^(MOTE_GUARD_BITS + 10) */
+    /* an edge shorter than 2^(30-F) rows, on a 32-bit core, shifts in 32
+     * bits (a 64-bit shift by F is a libgcc call there) */
+    const int32_t lim = (int32_t)1 << (30 - F);
+    const bool short32 = MOTE__CORE32 && dy < lim;
+    const int64_t den = short32 ? (int32_t)((uint32_t)dy << F) : (int64_t)dy << F;
     /* u in 32 bits: y is a row of the screen, ya within the guard band */
-    const int64_t den = (int64_t)dy << F, u = (int32_t)(((int32_t)y << F) + (int32_t)half - ya);
+    const int64_t u = (int32_t)(((int32_t)y << F) + (int32_t)half - ya);
     /* the step dx 2^F / den: floor(dx / dy) = qs, remainder rs, in 32 bits */
     int32_t qs = dx / dy, rs = dx - qs * dy, neg = rs < 0;
     qs -= neg;
     rs += dy & -neg;
     e->den = den;
     e->qstep = qs;
-    e->rstep = (int64_t)rs << F;  /* rs >= 0 */
+    e->rstep = short32 ? (int32_t)((uint32_t)rs << F) : (int64_t)rs << F;   /* 0 <= rs < dy */
     /* x = ceil(num / den), num = (xa - 2^(F-1)) dy + u dx, err = x den - num.
      * With A = xa - 2^(F-1) + u qs = Aq 2^F + Ar (0 <= Ar < 2^F),
      * num = Aq den + n2, n2 = Ar dy + u rs >= 0. At the edge's first row
@@ -49,8 +54,7 @@ MOTE__WALK_INLINE void mote__edge_init(mote__edge *e, int32_t xa, int32_t ya, in
      * 2^(22-F) pixels it needs no 64-bit number either: |u qs| < 2^F
      * 2^(30-F), |xa| < 2^22, and Ar dy, u rs, den < 2^30 (MOTE__CORE32:
      * a 64-bit host ran its extra tests for nothing). */
-    const int32_t lim = (int32_t)1 << (30 - F);
-    if (MOTE__CORE32 && u < one && dy < lim && dx < lim && dx > -lim) {
+    if (short32 && u < one && dx < lim && dx > -lim) {
         const int32_t a32 = xa - (int32_t)half + (int32_t)u * qs;
         const int32_t n32 = (a32 & ((int32_t)one - 1)) * dy + (int32_t)u * rs, c32 = (n32 > 0) + (n32 > (int32_t)den);
         e->x = mote__floor_shift32(a32, F) + c32;

@@ -449,14 +449,21 @@ static bool mote__fx_texel(const mote__fx *f, int a, uint32_t m, int e, bool neg
     uint64_t p = mote__umul64(m, f->tm[a]);      /* < 2^48 */
     int s = e + f->te[a];
     uint64_t v;
+    /* the shifts by 32-bit halves: by a variable count, a 64-bit one is a
+     * libgcc call on 32-bit cores */
+    const uint32_t lo = (uint32_t)p, hi = (uint32_t)(p >> 32);
     if (p == 0) {
         v = 0;
     } else if (s >= 0) {
-        if (s > 16 || (p >> (46 - s)) != 0)
+        if (s > 16 || (s <= 14 ? hi >> (14 - s) : hi | lo >> (46 - s)) != 0)   /* p 2^s < 2^46 */
             return false;
-        v = p << s;
+        v = s ? (uint64_t)(hi << s | lo >> (32 - s)) << 32 | (uint32_t)(lo << s) : p;
+    } else if (-s < 50) {         /* p < 2^48: from 49 bits on the rounded value is 0 */
+        const int h = -s - 1;     /* half a unit: 2^h */
+        const uint64_t half = h < 32 ? (uint64_t)((uint32_t)1 << h) : (uint64_t)((uint32_t)1 << (h - 32)) << 32;
+        v = (uint64_t)mote__floor_shift64((int64_t)(p + half), -s);
     } else {
-        v = -s < 64 ? (p + ((uint64_t)1 << (-s - 1))) >> -s : 0;
+        v = 0;
     }
     int64_t t = neg != f->tneg[a] ? -(int64_t)v : (int64_t)v;
     t += f->tb[a];
