@@ -49,13 +49,13 @@ static int64_t mote__mul_shift(int64_t a, int64_t b, int s)
     const uint64_t x = a < 0 ? 0u - (uint64_t)a : (uint64_t)a, y = b < 0 ? 0u - (uint64_t)b : (uint64_t)b;
     const uint32_t xl = (uint32_t)x, xh = (uint32_t)(x >> 32), yl = (uint32_t)y, yh = (uint32_t)(y >> 32);
     const uint64_t ll = mote__umul64(xl, yl), lh = mote__umul64(xl, yh);
-    uint64_t hl = 0, hh = 0;
-    if (xh != 0) {
-        hl = mote__umul64(xh, yl);
-        hh = mote__umul64(xh, yh);
+    uint64_t mid = (ll >> 32) + (uint32_t)lh, hi = lh >> 32;
+    if (xh != 0) {                /* the other two, and their sums, only then */
+        const uint64_t hl = mote__umul64(xh, yl);
+        mid += (uint32_t)hl;
+        hi += mote__umul64(xh, yh) + (hl >> 32);
     }
-    const uint64_t mid = (ll >> 32) + (uint32_t)lh + (uint32_t)hl;
-    const uint64_t hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
+    hi += mid >> 32;
     /* bits [s, s + 64) of the 128-bit product by 32-bit words: a shift of
      * a 64-bit number by a variable count is a libgcc call on 32-bit cores */
     const bool up = s >= 32;      /* the words from 1 (mid) on, else from 0 */
