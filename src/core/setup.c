@@ -535,8 +535,10 @@ MOTE__SETUP_INLINE mote__setup_result mote__setup_f(mote__tri *t, const mote__ra
                 else
 #endif
                 if (wrap != MOTE_WRAP_CLAMP && !whole) {
-                    int64_t period = ((int64_t)(a == MOTE__A_U ? tw : th) << 16)
-                                   * (wrap == MOTE_WRAP_MIRROR ? 2 : 1);
+                    /* a mirror's period is two sizes: a shift, not a
+                     * product (a libgcc call on 32-bit cores) */
+                    const int64_t period = (int64_t)(uint64_t)(a == MOTE__A_U ? tw : th)
+                                           << (16 + (wrap == MOTE_WRAP_MIRROR));
                     base = mote__floor_multiple(MOTE__MIN(Ta[0], MOTE__MIN(Ta[1], Ta[2])), period);
                 }
                 for (int i = 0; i < 3; i++) {
