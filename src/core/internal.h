@@ -107,13 +107,17 @@
 /* floor(v / 2^k) for 0 <= k < 63, without relying on how >> treats
  * negative numbers (implementation-defined in C99): a negative v is
  * complemented, shifted and complemented back, through a mask rather than
- * a branch (setup and the walk take it of numbers of either sign). */
+ * a branch (setup and the walk take it of numbers of either sign). Where
+ * the compiler defines >> as the arithmetic shift (GCC and Clang), one
+ * instruction where registers are 64 bits wide (the pixel loops take four
+ * a row), two 32-bit shifts where they are not. */
 #if MOTE__SHARED_BODIES
 MOTE__SHARED int64_t mote__floor_shift64(int64_t v, int k)
 {
-#if MOTE__CORE32 && defined(__GNUC__)
-    /* by 32-bit halves (>> of a negative number is arithmetic in GCC and
-     * Clang): a 64-bit shift by a variable is a libgcc call there */
+#if defined(__GNUC__) && !MOTE__CORE32
+    return v >> k;
+#elif defined(__GNUC__)
+    /* by 32-bit halves: a 64-bit shift by a variable is a libgcc call */
     const int32_t hi = (int32_t)(uint32_t)((uint64_t)v >> 32);
     if (k >= 32)
         return (int64_t)(hi >> (k - 32));
