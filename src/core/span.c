@@ -331,16 +331,23 @@ MOTE__SMALL uint32_t mote__shade_at(int32_t a0, int32_t n, int32_t r, int shift)
 #define MOTE__BLOCK_LOG2 6
 #define MOTE__BLOCK (1 << MOTE__BLOCK_LOG2)
 
-/* A block's 32-bit planes: q and the numerators at its first pixel to be
- * drawn, and their x steps, rounded; K of its reciprocals and the shift
- * of its attributes (see mote__block_begin). */
+/* A block's scale for its 32-bit planes: the x steps of q and the
+ * numerators, rounded, K of its reciprocals and the shift of its
+ * attributes (see mote__block_begin); the triangle's for every block
+ * where it has one (q_drop >= 0). */
 typedef struct mote__block {
-    int32_t q, qdx, n[MOTE__ATTRS], ndx[MOTE__ATTRS];
+    int32_t qdx, ndx[MOTE__ATTRS];
     int k, ash;
 #if MOTE_ENABLE_MIPMAPS
     int32_t qdy, nudy, nvdy;      /* per-pixel mip levels: the y steps, rounded */
 #endif
 } mote__block;
+
+/* A block's 32-bit planes at its first pixel to be drawn: q and the
+ * numerators, in its scale. */
+typedef struct mote__block_at {
+    int32_t q, n[MOTE__ATTRS];
+} mote__block_at;
 
 /* What the pixel loop needs of a triangle, read once per triangle into
  * locals (see the top of the file). */
@@ -358,7 +365,7 @@ typedef struct mote__fill_ctx {
     int seg_log2;                 /* sub-span: segments of 2^seg_log2 columns */
     int32_t affine_r;             /* affine: all qi alike, Q constant: one r */
     int q_drop;                   /* the triangle's (mote__tri) ... */
-    mote__block steps;            /* ... and when >= 0, every block's steps, K and shift */
+    mote__block steps;            /* ... and when >= 0, every block's scale (zero when nothing varies) */
     uint32_t alpha8, cutoff;      /* the draw's (mote__raster_state) */
 #if MOTE_ENABLE_MIPMAPS
     /* per-pixel mip levels: the chain's views, and the 64-bit y steps */
@@ -527,12 +534,13 @@ static void mote__layers_at(const mote__fill_ctx *c, int32_t u, int32_t v, int t
 }
 #endif
 
-/* Pixels [x0, x1) of a row, all in one block, given the 32-bit planes'
- * values at x0 (the exact depth plane z, q and the numerators n[]); bx is the
+/* Pixels [x0, x1) of a row, all in one block of scale b, given the planes'
+ * values at x0 (the exact depth plane z, q and the numerators in *at); bx is the
  * block's first pixel and last the row's last one (sub-span segments).
  * Adds the pixels the depth test rejects to *rejected (rare: counted
  * rather than the written ones). */
-MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, const mote__block *b, uint8_t *crow, uint16_t *d16,
+MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, const mote__block *b, const mote__block_at *at,
+                               uint8_t *crow, uint16_t *d16,
                                uint32_t *d32, ptrdiff_t x0, ptrdiff_t x1, ptrdiff_t bx, ptrdiff_t last, int64_t z,
                                uint32_t *rejected, const int tex, const mote_format tfmt,
                                const bool pow2, const int shade, const int persp, const int dsel, const int dmode,
@@ -541,14 +549,14 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, const mote__block *b, ui
     const bool varying = shade != MOTE__SHADE_FLAT || tex;
     const int64_t zdx = c->zdx;
     const int32_t qdx = b->qdx;
-    int32_t q = b->q, nr = b->n[MOTE__A_R], ng = b->n[MOTE__A_G], nb = b->n[MOTE__A_B], nu = b->n[MOTE__A_U],
-            nv = b->n[MOTE__A_V];
+    int32_t q = at->q, nr = at->n[MOTE__A_R], ng = at->n[MOTE__A_G], nb = at->n[MOTE__A_B], nu = at->n[MOTE__A_U],
+            nv = at->n[MOTE__A_V];
     const int32_t nrdx = b->ndx[MOTE__A_R], ngdx = b->ndx[MOTE__A_G], nbdx = b->ndx[MOTE__A_B];
     const int32_t nudx = b->ndx[MOTE__A_U], nvdx = b->ndx[MOTE__A_V];
     const int k = b->k, ash = b->ash, tb = c->tb;
 #if MOTE__ADD_ENABLED
     /* the additive colour's numerators (MOTE__SHADE_ADD: the generic loop) */
-    int32_t na[3] = {b->n[MOTE__A_AR], b->n[MOTE__A_AG], b->n[MOTE__A_AB]};
+    int32_t na[3] = {at->n[MOTE__A_AR], at->n[MOTE__A_AG], at->n[MOTE__A_AB]};
     const int32_t nadx[3] = {b->ndx[MOTE__A_AR], b->ndx[MOTE__A_AG], b->ndx[MOTE__A_AB]};
 #endif
     uint32_t sr = c->sr, sg = c->sg, sb = c->sb;
@@ -656,7 +664,10 @@ MOTE__INLINE void mote__pixels(const mote__fill_ctx *c, const mote__block *b, ui
 #if MOTE_ENABLE_MIPMAPS
                 /* trilinear: the next level's weight, and its texel */
                 uint32_t mip_f = 0, mip_t[3] = {0, 0, 0}, mip_a = 255;
-                if (c->levels) {  /* the generic loop's per-pixel level */
+                /* the generic loop's per-pixel level (tfmt unknown): the
+                 * variants never have one (mote__fill_select), and a test
+                 * a pixel is worth dropping there */
+                if (tfmt == MOTE_FORMAT_DEFAULT && c->levels) {
                     const int lv = mote__pixel_level(c, b, q, nu, nv, u, v, &mip_f);
                     tx = &c->level[lv];
                     if (mip_f)
@@ -813,50 +824,42 @@ MOTE__INLINE bool mote__reads_plane(int a, int shade, int tex)
     return mote__has_plane(a, (mote__shade_kind)shade, tex != MOTE__TEX_NONE);
 }
 
-/* A block's 32-bit planes (mote__block) from the 64-bit ones at its first
- * pixel, q64 and n64[], given where its last pixel (or the row's, if
- * nearer) lies, at + len, and where drawing starts, at + off. q is taken
- * down only as far as keeps it below 2^30 at both ends (Q is linear, so
- * inside), and the numerators as far again past n_extra, so that a far
- * block (small q) keeps as many bits as a near one; K makes r = 2^K / q
- * at most 2^30 at the smaller end. */
-MOTE__INLINE void mote__block_begin(const mote__fill_ctx *c, mote__block *b, int64_t q64, const uint64_t n64[MOTE__ATTRS],
-                                    int32_t len, int32_t off, const int shade, const int tex)
+/* A block's 32-bit planes (*at) from the 64-bit ones at its first pixel,
+ * q64 and n64[], given where its last pixel (or the row's, if nearer)
+ * lies, len pixels on, and where drawing starts, off pixels on; and its
+ * scale: the triangle's (q_drop >= 0), else its own, made in *own. q is
+ * taken down only as far as keeps it below 2^30 at both ends (Q is
+ * linear, so inside), and the numerators as far again past n_extra, so
+ * that a far block (small q) keeps as many bits as a near one; K makes
+ * r = 2^K / q at most 2^30 at the smaller end. */
+MOTE__INLINE const mote__block *mote__block_begin(const mote__fill_ctx *c, mote__block *own, mote__block_at *at,
+                                                  int64_t q64, const uint64_t n64[MOTE__ATTRS], int32_t len,
+                                                  int32_t off, const int shade, const int tex)
 {
-    if (c->q_drop >= 0) {         /* the usual case: the triangle's scale */
-        const int d = c->q_drop, nsh = d + c->n_extra;
-        *b = c->steps;
-        b->q = mote__add32(mote__to32(q64, d), b->qdx, off);
+    const mote__block *b = &c->steps;
+    int d = c->q_drop;
+    if (d < 0) {
+        const int64_t q64e = mote__plane_at(q64, c->qdx, len);
+        const mote__block_scale sc = mote__block_scale_of(q64, q64e, c->n_extra);
+        d = sc.d;
+        own->qdx = mote__step32(c->qdx, d);
+        own->k = sc.k;
+        own->ash = sc.ash;
 #if MOTE_ENABLE_MIPMAPS
         if (c->levels)
-            mote__block_dy(c, b, d, nsh);
+            mote__block_dy(c, own, d, d + c->n_extra);
 #endif
         MOTE__UNROLL
         for (int a = 0; a < MOTE__ATTRS; a++)
-            if (mote__reads_plane(a, shade, tex))
-                b->n[a] = mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off);
-        return;
+            own->ndx[a] = mote__reads_plane(a, shade, tex) ? mote__step32(c->ndx[a], d + c->n_extra) : 0;
+        b = own;
     }
-    const int64_t q64e = mote__plane_at(q64, c->qdx, len);
-    const mote__block_scale sc = mote__block_scale_of(q64, q64e, c->n_extra);
-    const int d = sc.d;
-    b->qdx = mote__step32(c->qdx, d);
-    b->q = mote__add32(sc.qa, b->qdx, off);
-    b->k = sc.k;
-    b->ash = sc.ash;
     const int nsh = d + c->n_extra;
-#if MOTE_ENABLE_MIPMAPS
-    if (c->levels)
-        mote__block_dy(c, b, d, nsh);
-#endif
+    at->q = mote__add32(mote__to32(q64, d), b->qdx, off);
     MOTE__UNROLL
-    for (int a = 0; a < MOTE__ATTRS; a++) {
-        b->n[a] = b->ndx[a] = 0;
-        if (mote__reads_plane(a, shade, tex)) {
-            b->ndx[a] = mote__step32(c->ndx[a], nsh);
-            b->n[a] = mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off);
-        }
-    }
+    for (int a = 0; a < MOTE__ATTRS; a++)
+        at->n[a] = mote__reads_plane(a, shade, tex) ? mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off) : 0;
+    return b;
 }
 
 /* Row by row: the edge walk, then the pixel loop over the row's span,
@@ -889,55 +892,68 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
      * cost 0.8% of the grid's instructions */
     uint64_t tested = 0;
     uint32_t rejected = 0;
-    for (; w->y < w->yend; zr += (uint64_t)zdy, qr += (uint64_t)qdy, crow += stride) {
-        int x0, x1;
-        int64_t span[2];
-        mote__walk_row(w, &x0, &x1, span);
-        if (x0 < x1) {
-            /* counted before the pixel loop: after it, x0 and x1 would
-             * have to outlive a loop that needs every register */
-            tested += (uint64_t)(x1 - x0);
-            /* the block holding x0, and the 64-bit planes at its first pixel */
-            ptrdiff_t bx = (ptrdiff_t)(span[0] + ((x0 - span[0]) & -(int64_t)MOTE__BLOCK));
-            const int64_t d = bx - ox;
-            uint64_t zb = (uint64_t)mote__plane_at((int64_t)zr, c->zdx, d), qb = 0, nb[MOTE__ATTRS] = {0};
-            if (varying) {
-                qb = (uint64_t)mote__plane_at((int64_t)qr, c->qdx, d);
+    mote__block own;              /* a block's scale, where the triangle has none */
+    /* One loop, a turn a block: a row's later blocks (rare on small
+     * triangles) are turns of the same loop, not of a loop inside the
+     * row's, whose values the compiler copied to the stack afresh for
+     * every row. */
+    ptrdiff_t from = 0, x1 = 0, bx = 0, last = 0;   /* the row's pixels [from, x1) to draw */
+    for (bool first = true;; first = false) {
+        if (from >= x1) {
+            /* the row is drawn (or empty): the next one */
+            if (!first) {
+                zr += (uint64_t)zdy;
+                qr += (uint64_t)qdy;
                 MOTE__UNROLL
                 for (int a = 0; a < MOTE__ATTRS; a++)
                     if (mote__reads_plane(a, shade, tex))
-                        nb[a] = (uint64_t)mote__plane_at((int64_t)nrow[a], c->ndx[a], d);
+                        nrow[a] += (uint64_t)c->ndy[a];
+                crow += stride;
+                /* a constant test in the variants; the shortest code in
+                 * the generic-only build (flash) */
+                if (MOTE_SPECIALISE_SPANS ? dsel != MOTE__D_NONE : zrow != NULL)
+                    zrow += zstride;
             }
-            for (ptrdiff_t from = x0; from < x1;) {
-                const ptrdiff_t to = MOTE__MIN(bx + MOTE__BLOCK, (ptrdiff_t)x1);
-                mote__block blk;
-                if (varying)
-                    mote__block_begin(c, &blk, (int64_t)qb, nb, (int32_t)(MOTE__MIN(bx + MOTE__BLOCK, span[1] - 1) - bx),
-                                      (int32_t)(from - bx), shade, tex);
-                else              /* read by no pixel: a flat loop's stepping is dropped */
-                    memset(&blk, 0, sizeof blk);
-                const int32_t off = (int32_t)(from - bx);
-                mote__pixels(c, &blk, crow, dsel == MOTE__D_16 ? (uint16_t *)(void *)zrow : NULL,
-                             dsel == MOTE__D_32 ? (uint32_t *)(void *)zrow : NULL, from, to, bx,
-                             (ptrdiff_t)span[1] - 1, dsel != MOTE__D_NONE ? mote__plane_at((int64_t)zb, c->zdx, off) : 0,
-                             &rejected, tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, amode);
-                from = to;
-                bx += MOTE__BLOCK;
-                zb += (uint64_t)c->zdx << MOTE__BLOCK_LOG2;
-                qb += (uint64_t)c->qdx << MOTE__BLOCK_LOG2;
-                MOTE__UNROLL
-                for (int a = 0; a < MOTE__ATTRS; a++)
-                    nb[a] += (uint64_t)c->ndx[a] << MOTE__BLOCK_LOG2;
+            if (w->y >= w->yend)
+                break;
+            int x0, xe;
+            int64_t span[2];
+            mote__walk_row(w, &x0, &xe, span);
+            if (x0 >= xe) {
+                from = x1 = 0;
+                continue;
             }
+            /* counted before the pixel loop: after it, x0 and x1 would
+             * have to outlive a loop that needs every register */
+            tested += (uint64_t)(xe - x0);
+            from = x0;
+            x1 = xe;
+            last = (ptrdiff_t)span[1] - 1;
+            /* the block holding x0 */
+            bx = (ptrdiff_t)(span[0] + ((x0 - span[0]) & -(int64_t)MOTE__BLOCK));
         }
-        MOTE__UNROLL
-        for (int a = 0; a < MOTE__ATTRS; a++)
-            if (mote__reads_plane(a, shade, tex))
-                nrow[a] += (uint64_t)c->ndy[a];
-        /* a constant test in the variants; the shortest code in the
-         * generic-only build (flash) */
-        if (MOTE_SPECIALISE_SPANS ? dsel != MOTE__D_NONE : zrow != NULL)
-            zrow += zstride;
+        const ptrdiff_t to = MOTE__MIN(bx + MOTE__BLOCK, x1);
+        const int32_t off = (int32_t)(from - bx);
+        /* the 64-bit planes at the block's first pixel, from the row's
+         * (modulo 2^64, as stepping block by block would give them) */
+        const mote__block *b = &c->steps;   /* zero: read by no pixel of a flat loop */
+        mote__block_at at = {0};
+        if (varying) {
+            const int64_t d = bx - ox;
+            uint64_t nb[MOTE__ATTRS] = {0};
+            MOTE__UNROLL
+            for (int a = 0; a < MOTE__ATTRS; a++)
+                if (mote__reads_plane(a, shade, tex))
+                    nb[a] = (uint64_t)mote__plane_at((int64_t)nrow[a], c->ndx[a], d);
+            b = mote__block_begin(c, &own, &at, mote__plane_at((int64_t)qr, c->qdx, d), nb,
+                                  (int32_t)(MOTE__MIN(bx + MOTE__BLOCK, last) - bx), off, shade, tex);
+        }
+        mote__pixels(c, b, &at, crow, dsel == MOTE__D_16 ? (uint16_t *)(void *)zrow : NULL,
+                     dsel == MOTE__D_32 ? (uint32_t *)(void *)zrow : NULL, from, to, bx, last,
+                     dsel != MOTE__D_NONE ? mote__plane_at((int64_t)zr, c->zdx, (int32_t)(from - ox)) : 0,
+                     &rejected, tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, amode);
+        from = to;
+        bx += MOTE__BLOCK;
     }
     tg->counts->tested += tested;
     tg->counts->written += tested - rejected;
@@ -1057,18 +1073,22 @@ MOTE__INLINE void mote__fill_body(const mote__tri *t, const mote__target *tg, mo
     c.affine_r = 0;
     if (varying && c.q_drop >= 0) {
         const int d = c.q_drop;
-        c.steps.q = 0;
         c.steps.qdx = mote__step32(t->qdx, d);
         c.steps.k = t->rbits;
         /* below 0 only for absurd texel ranges: keeps the shift defined */
         c.steps.ash = MOTE__MAX(t->rbits - 20 - t->n_extra, 0);
-        for (int a = 0; a < MOTE__ATTRS; a++) {
-            c.steps.n[a] = 0;
-            c.steps.ndx[a] = mote__step32(c.ndx[a], d + t->n_extra);
-        }
+        MOTE__UNROLL
+        for (int a = 0; a < MOTE__ATTRS; a++)
+            c.steps.ndx[a] = mote__reads_plane(a, shade, tex) ? mote__step32(c.ndx[a], d + t->n_extra) : 0;
+#if MOTE_ENABLE_MIPMAPS
+        if (c.levels)
+            mote__block_dy(&c, &c.steps, d, d + t->n_extra);
+#endif
         /* affine: all qi alike (so q_drop >= 0), Q without steps */
         if (persp == MOTE__PERSP_AFFINE)
             c.affine_r = mote__recip_k(mote__to32(t->q, d), t->rbits);
+    } else {
+        memset(&c.steps, 0, sizeof c.steps);
     }
 #if MOTE_SPECIALISE_SPANS
     /* a power-of-two repeating texture: its own loop, texel addresses by masks */
