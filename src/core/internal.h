@@ -717,6 +717,37 @@ static inline void mote__walk_row(mote__walk *w, int *x0, int *x1, int64_t span[
     w->y++;
 }
 
+/* Where a fill draws next: pixels [from, x1) of a row, cut into blocks
+ * of 2^k pixels counted from the row's own first pixel (the pixel loops'
+ * 32-bit planes start afresh at each: see mote__tri); bx is the block
+ * holding from, last the row's last pixel before the cut to the region. */
+typedef struct mote__span_blocks {
+    ptrdiff_t from, x1, bx, last;
+    /* the pixels of the rows so far, counted as a row starts: after the
+     * pixel loop, x0 and x1 would have to outlive a loop that needs every
+     * register */
+    uint64_t tested;
+} mote__span_blocks;
+
+/* Row w->y's pixels into *b, then the walk moves to the next row: false
+ * when the row has none. */
+static inline bool mote__span_begin(mote__walk *w, mote__span_blocks *b, int k)
+{
+    int x0, x1;
+    int64_t span[2];
+    mote__walk_row(w, &x0, &x1, span);
+    if (x0 >= x1) {
+        b->from = b->x1 = 0;
+        return false;
+    }
+    b->tested += (uint64_t)(x1 - x0);
+    b->from = x0;
+    b->x1 = x1;
+    b->last = (ptrdiff_t)span[1] - 1;
+    b->bx = (ptrdiff_t)(span[0] + ((x0 - span[0]) & -((int64_t)1 << k)));
+    return true;
+}
+
 /* Twice the signed area of a triangle of snapped vertices (positive:
  * clockwise on screen, y growing downward); 0 for a degenerate one. */
 static inline int64_t mote__area2(const int32_t X[3], const int32_t Y[3])

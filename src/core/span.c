@@ -890,16 +890,15 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
     const int ox = t->ox;
     /* written = tested - rejected, once per call: counted row by row, it
      * cost 0.8% of the grid's instructions */
-    uint64_t tested = 0;
     uint32_t rejected = 0;
     mote__block own;              /* a block's scale, where the triangle has none */
     /* One loop, a turn a block: a row's later blocks (rare on small
      * triangles) are turns of the same loop, not of a loop inside the
      * row's, whose values the compiler copied to the stack afresh for
      * every row. */
-    ptrdiff_t from = 0, x1 = 0, bx = 0, last = 0;   /* the row's pixels [from, x1) to draw */
+    mote__span_blocks sb = {0};
     for (bool first = true;; first = false) {
-        if (from >= x1) {
+        if (sb.from >= sb.x1) {
             /* the row is drawn (or empty): the next one */
             if (!first) {
                 zr += (uint64_t)zdy;
@@ -916,23 +915,11 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
             }
             if (w->y >= w->yend)
                 break;
-            int x0, xe;
-            int64_t span[2];
-            mote__walk_row(w, &x0, &xe, span);
-            if (x0 >= xe) {
-                from = x1 = 0;
+            if (!mote__span_begin(w, &sb, MOTE__BLOCK_LOG2))
                 continue;
-            }
-            /* counted before the pixel loop: after it, x0 and x1 would
-             * have to outlive a loop that needs every register */
-            tested += (uint64_t)(xe - x0);
-            from = x0;
-            x1 = xe;
-            last = (ptrdiff_t)span[1] - 1;
-            /* the block holding x0 */
-            bx = (ptrdiff_t)(span[0] + ((x0 - span[0]) & -(int64_t)MOTE__BLOCK));
         }
-        const ptrdiff_t to = MOTE__MIN(bx + MOTE__BLOCK, x1);
+        const ptrdiff_t from = sb.from, bx = sb.bx, last = sb.last;
+        const ptrdiff_t to = MOTE__MIN(bx + MOTE__BLOCK, sb.x1);
         const int32_t off = (int32_t)(from - bx);
         /* the 64-bit planes at the block's first pixel, from the row's
          * (modulo 2^64, as stepping block by block would give them) */
@@ -952,9 +939,10 @@ MOTE__INLINE void mote__rows(const mote__fill_ctx *c, mote__walk *w, const mote_
                      dsel == MOTE__D_32 ? (uint32_t *)(void *)zrow : NULL, from, to, bx, last,
                      dsel != MOTE__D_NONE ? mote__plane_at((int64_t)zr, c->zdx, (int32_t)(from - ox)) : 0,
                      &rejected, tex, tfmt, pow2, shade, persp, dsel, dmode, fmt, amode);
-        from = to;
-        bx += MOTE__BLOCK;
+        sb.from = to;
+        sb.bx = bx + MOTE__BLOCK;
     }
+    const uint64_t tested = sb.tested;
     tg->counts->tested += tested;
     tg->counts->written += tested - rejected;
 }

@@ -123,6 +123,13 @@ MOTE__VINLINE mote__vu mote__v_pack(mote_format fmt, mote__vu r, mote__vu g, mot
     return r5 << 11 | g6 << 5 | b5;
 }
 
+/* A block's scale (span.c's mote__block): the x steps of q and the
+ * numerators, K and the attributes' shift. */
+typedef struct mote__vblock {
+    int32_t qdx, ndx[MOTE__ATTRS];
+    int k, ash;
+} mote__vblock;
+
 /* What the pixels need of a triangle and its draw, once per fill. */
 typedef struct mote__vctx {
     int64_t zdx, qdx;
@@ -132,50 +139,43 @@ typedef struct mote__vctx {
     uint32_t flat_px;
     int n_extra, q_drop, tb;
     int32_t affine_r;
-    int32_t qdx32, ndx32[MOTE__ATTRS];   /* q_drop >= 0: the blocks' steps */
-    int k, ash;                   /* and their reciprocal's K and shift */
+    mote__vblock steps;           /* q_drop >= 0: every block's scale (zero when nothing varies) */
     const uint8_t *texels;
     int32_t umask, vmask;         /* texture width - 1, height - 1 */
     int stride_log2;
 } mote__vctx;
 
 /* A block's 32-bit planes at its first pixel to draw (span.c's
- * mote__block_begin): q and the numerators, their steps, K and the
- * attributes' shift. */
-typedef struct mote__vblock {
-    int32_t q, qdx, n[MOTE__ATTRS], ndx[MOTE__ATTRS];
-    int k, ash;
-} mote__vblock;
+ * mote__block_at). */
+typedef struct mote__vblock_at {
+    int32_t q, n[MOTE__ATTRS];
+} mote__vblock_at;
 
-MOTE__VINLINE void mote__v_block(const mote__vctx *c, mote__vblock *b, int64_t q64, const uint64_t n64[MOTE__ATTRS],
-                                 int32_t len, int32_t off, const int shade, const int tex)
+/* span.c's mote__block_begin: the planes at the block's first pixel to
+ * draw, and the scale, the triangle's (c->steps) or the block's own. */
+MOTE__VINLINE const mote__vblock *mote__v_block(const mote__vctx *c, mote__vblock *own, mote__vblock_at *at,
+                                                int64_t q64, const uint64_t n64[MOTE__ATTRS], int32_t len,
+                                                int32_t off, const int shade, const int tex)
 {
-    if (c->q_drop >= 0) {
-        const int d = c->q_drop, nsh = d + c->n_extra;
-        b->qdx = c->qdx32;
-        b->k = c->k;
-        b->ash = c->ash;
-        b->q = mote__add32(mote__to32(q64, d), b->qdx, off);
+    const mote__vblock *b = &c->steps;
+    int d = c->q_drop;
+    if (d < 0) {
+        const int64_t q64e = mote__plane_at(q64, c->qdx, len);
+        const mote__block_scale sc = mote__block_scale_of(q64, q64e, c->n_extra);
+        d = sc.d;
+        own->qdx = mote__step32(c->qdx, d);
+        own->k = sc.k;
+        own->ash = sc.ash;
         for (int a = 0; a < MOTE__ATTRS; a++)
-            if (mote__has_plane(a, (mote__shade_kind)shade, tex)) {
-                b->ndx[a] = c->ndx32[a];
-                b->n[a] = mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off);
-            }
-        return;
+            own->ndx[a] = mote__has_plane(a, (mote__shade_kind)shade, tex) ? mote__step32(c->ndx[a], d + c->n_extra) : 0;
+        b = own;
     }
-    const int64_t q64e = mote__plane_at(q64, c->qdx, len);
-    const mote__block_scale sc = mote__block_scale_of(q64, q64e, c->n_extra);
-    const int d = sc.d;
-    b->qdx = mote__step32(c->qdx, d);
-    b->q = mote__add32(sc.qa, b->qdx, off);
-    b->k = sc.k;
-    b->ash = sc.ash;
     const int nsh = d + c->n_extra;
+    at->q = mote__add32(mote__to32(q64, d), b->qdx, off);
     for (int a = 0; a < MOTE__ATTRS; a++)
-        if (mote__has_plane(a, (mote__shade_kind)shade, tex)) {
-            b->ndx[a] = mote__step32(c->ndx[a], nsh);
-            b->n[a] = mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off);
-        }
+        at->n[a] = mote__has_plane(a, (mote__shade_kind)shade, tex)
+                 ? mote__add32(mote__to32((int64_t)n64[a], nsh), b->ndx[a], off) : 0;
+    return b;
 }
 
 #ifndef MOTE__V_GATHER
@@ -229,7 +229,8 @@ MOTE__VINLINE bool mote__v_depth_ramp(int64_t z, int64_t zdx, ptrdiff_t n, mote_
 
 /* Pixels [x0, x1) of a row, in one block, from its planes at x0: the
  * scalar pixel loop's arithmetic, MOTE__VN pixels a step. */
-MOTE__VINLINE void mote__v_pixels(const mote__vctx *c, const mote__vblock *b, uint8_t *crow, uint8_t *zrow,
+MOTE__VINLINE void mote__v_pixels(const mote__vctx *c, const mote__vblock *b, const mote__vblock_at *at,
+                                  uint8_t *crow, uint8_t *zrow,
                                   ptrdiff_t x0, ptrdiff_t x1, int64_t z, uint32_t *rejected,
                                   const int tex, const int shade, const int persp, const int dsel, const mote_format fmt)
 {
@@ -238,16 +239,16 @@ MOTE__VINLINE void mote__v_pixels(const mote__vctx *c, const mote__vblock *b, ui
     const int vn = MOTE__VN;
     mote__vi q = {0}, nr = {0}, ng = {0}, nb = {0}, nu = {0}, nv = {0};
     if (varying) {
-        q = mote__v_ramp(b->q, b->qdx);
+        q = mote__v_ramp(at->q, b->qdx);
         if (shade != MOTE__SHADE_FLAT)
-            nr = mote__v_ramp(b->n[MOTE__A_R], b->ndx[MOTE__A_R]);
+            nr = mote__v_ramp(at->n[MOTE__A_R], b->ndx[MOTE__A_R]);
         if (shade == MOTE__SHADE_RGB) {
-            ng = mote__v_ramp(b->n[MOTE__A_G], b->ndx[MOTE__A_G]);
-            nb = mote__v_ramp(b->n[MOTE__A_B], b->ndx[MOTE__A_B]);
+            ng = mote__v_ramp(at->n[MOTE__A_G], b->ndx[MOTE__A_G]);
+            nb = mote__v_ramp(at->n[MOTE__A_B], b->ndx[MOTE__A_B]);
         }
         if (tex) {
-            nu = mote__v_ramp(b->n[MOTE__A_U], b->ndx[MOTE__A_U]);
-            nv = mote__v_ramp(b->n[MOTE__A_V], b->ndx[MOTE__A_V]);
+            nu = mote__v_ramp(at->n[MOTE__A_U], b->ndx[MOTE__A_U]);
+            nv = mote__v_ramp(at->n[MOTE__A_V], b->ndx[MOTE__A_V]);
         }
     }
     mote__vi zhi = {0}, zlo = {0};
@@ -388,45 +389,46 @@ MOTE__VINLINE void mote__v_rows(const mote__vctx *c, mote__walk *w, const mote__
                 nrow[a] = (uint64_t)mote__plane_at(c->n0[a], c->ndy[a], dy0);
     }
     const int ox = t->ox;
-    uint64_t tested = 0;
     uint32_t rejected = 0;
-    for (; w->y < w->yend; zr += (uint64_t)t->zdy, qr += (uint64_t)t->qdy, crow += stride) {
-        int x0, x1;
-        int64_t span[2];
-        mote__walk_row(w, &x0, &x1, span);
-        if (x0 < x1) {
-            tested += (uint64_t)(x1 - x0);
-            ptrdiff_t bx = (ptrdiff_t)(span[0] + ((x0 - span[0]) & -((int64_t)1 << MOTE__VBLOCK_LOG2)));
-            const int64_t d = bx - ox;
-            uint64_t zb = (uint64_t)mote__plane_at((int64_t)zr, c->zdx, d), qb = 0, nb[MOTE__ATTRS] = {0};
-            if (varying) {
-                qb = (uint64_t)mote__plane_at((int64_t)qr, c->qdx, d);
+    mote__vblock own;             /* a block's scale, where the triangle has none */
+    /* a turn a block, as span.c's mote__rows */
+    mote__span_blocks sb = {0};
+    for (bool first = true;; first = false) {
+        if (sb.from >= sb.x1) {
+            if (!first) {
+                zr += (uint64_t)t->zdy;
+                qr += (uint64_t)t->qdy;
                 for (int a = 0; a < MOTE__ATTRS; a++)
-                    if (mote__has_plane(a, (mote__shade_kind)shade, tex))
-                        nb[a] = (uint64_t)mote__plane_at((int64_t)nrow[a], c->ndx[a], d);
+                    nrow[a] += (uint64_t)c->ndy[a];
+                crow += stride;
+                if (dsel != MOTE__VD_NONE)
+                    zrow += zstride;
             }
-            for (ptrdiff_t from = x0; from < x1;) {
-                const ptrdiff_t end = bx + ((ptrdiff_t)1 << MOTE__VBLOCK_LOG2), to = MOTE__MIN(end, (ptrdiff_t)x1);
-                const int32_t off = (int32_t)(from - bx);
-                mote__vblock blk;
-                memset(&blk, 0, sizeof blk);
-                if (varying)
-                    mote__v_block(c, &blk, (int64_t)qb, nb, (int32_t)(MOTE__MIN(end, span[1] - 1) - bx), off, shade, tex);
-                mote__v_pixels(c, &blk, crow, zrow, from, to, mote__plane_at((int64_t)zb, c->zdx, off), &rejected,
-                               tex, shade, persp, dsel, fmt);
-                from = to;
-                bx = end;
-                zb += (uint64_t)c->zdx << MOTE__VBLOCK_LOG2;
-                qb += (uint64_t)c->qdx << MOTE__VBLOCK_LOG2;
-                for (int a = 0; a < MOTE__ATTRS; a++)
-                    nb[a] += (uint64_t)c->ndx[a] << MOTE__VBLOCK_LOG2;
-            }
+            if (w->y >= w->yend)
+                break;
+            if (!mote__span_begin(w, &sb, MOTE__VBLOCK_LOG2))
+                continue;
         }
-        for (int a = 0; a < MOTE__ATTRS; a++)
-            nrow[a] += (uint64_t)c->ndy[a];
-        if (dsel != MOTE__VD_NONE)
-            zrow += zstride;
+        const ptrdiff_t from = sb.from, bx = sb.bx, last = sb.last;
+        const ptrdiff_t end = bx + ((ptrdiff_t)1 << MOTE__VBLOCK_LOG2), to = MOTE__MIN(end, sb.x1);
+        const int32_t off = (int32_t)(from - bx);
+        const mote__vblock *b = &c->steps;
+        mote__vblock_at at = {0};
+        if (varying) {
+            const int64_t d = bx - ox;
+            uint64_t nb[MOTE__ATTRS] = {0};
+            for (int a = 0; a < MOTE__ATTRS; a++)
+                if (mote__has_plane(a, (mote__shade_kind)shade, tex))
+                    nb[a] = (uint64_t)mote__plane_at((int64_t)nrow[a], c->ndx[a], d);
+            b = mote__v_block(c, &own, &at, mote__plane_at((int64_t)qr, c->qdx, d), nb,
+                              (int32_t)(MOTE__MIN(end, last) - bx), off, shade, tex);
+        }
+        mote__v_pixels(c, b, &at, crow, zrow, from, to, mote__plane_at((int64_t)zr, c->zdx, (int32_t)(from - ox)),
+                       &rejected, tex, shade, persp, dsel, fmt);
+        sb.from = to;
+        sb.bx = end;
     }
+    const uint64_t tested = sb.tested;
     tg->counts->tested += tested;
     tg->counts->written += tested - rejected;
 }
@@ -469,14 +471,14 @@ MOTE__VINLINE void mote__v_fill(const mote__tri *t, const mote__target *tg, mote
     }
     c.q_drop = t->q_drop;
     c.affine_r = 0;
-    c.qdx32 = c.k = c.ash = 0;
+    memset(&c.steps, 0, sizeof c.steps);
     if (varying && c.q_drop >= 0) {
         const int d = c.q_drop;
-        c.qdx32 = mote__step32(t->qdx, d);
-        c.k = t->rbits;
-        c.ash = MOTE__MAX(t->rbits - 20 - t->n_extra, 0);
+        c.steps.qdx = mote__step32(t->qdx, d);
+        c.steps.k = t->rbits;
+        c.steps.ash = MOTE__MAX(t->rbits - 20 - t->n_extra, 0);
         for (int a = 0; a < MOTE__ATTRS; a++)
-            c.ndx32[a] = mote__step32(c.ndx[a], d + t->n_extra);
+            c.steps.ndx[a] = mote__has_plane(a, (mote__shade_kind)shade, tex) ? mote__step32(c.ndx[a], d + t->n_extra) : 0;
         if (persp == MOTE__PERSP_AFFINE)
             c.affine_r = mote__recip_k(mote__to32(t->q, d), t->rbits);
     }
