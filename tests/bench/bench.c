@@ -1406,8 +1406,9 @@ static bench_table *section_savings(void)
      * so no triangle is black, and a lit channel moves only where its
      * product lies within a hair of a rounding boundary (the two frames
      * compared as the error columns compare) */
-    {
-        bench_scene *s = scene_named(have_assets ? "monkey-1920" : "torus-1920");
+    bench_scene *black_scene = scene_named(have_assets ? "monkey-1920" : "torus-1920");
+    if (black_scene) {            /* absent when --scene picked another */
+        bench_scene *s = black_scene;
         const float dim = 1.0f / 4194304.0f;
         bench_row *with = run_mote("savings", s, tex, RUN_SERIAL, 1, 0, false, &sw);
         snprintf(with->mode, sizeof with->mode, "black-unlit");
